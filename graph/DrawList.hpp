@@ -1,0 +1,30 @@
+#pragma once
+// What the select pass decided to draw this frame, in the order it found it.
+// The frame-time controller edits level and shading in place before the
+// renderer reads the list.
+
+#include "graph/Scene.hpp"
+#include "graph/Shading.hpp"
+
+#include <vector>
+
+namespace arcomp {
+
+struct DrawItem {
+    NodeId node;           // world matrix: scene.world(node)
+    MeshPart part;
+    float viewDistance;    // eye to bounding-sphere centre
+    float screenArea;      // projected pixels of the bounding sphere
+    std::uint8_t level;    // LOD level the part came from, 0 = finest
+    Shading shading;
+};
+
+struct DrawList {
+    std::vector<DrawItem> items;
+    std::size_t nodesVisited = 0;
+    std::size_t nodesCulled = 0;
+
+    void clear() { items.clear(); nodesVisited = nodesCulled = 0; }
+};
+
+} // namespace arcomp

@@ -1,0 +1,50 @@
+#include "graph/SelectPass.hpp"
+
+#include "graph/Frustum.hpp"
+
+namespace arcomp {
+
+namespace {
+
+struct SelectPass {
+    const Scene& scene;
+    const View& view;
+    const SelectSettings& settings;
+    DrawList& out;
+    Frustum frustum;
+    std::span<const NodeId> order;
+    std::span<const std::uint32_t> end;
+
+    // Visits the subtree at `pos`. Once a node lies wholly inside the
+    // frustum, nothing below it is tested again.
+    void visit(std::uint32_t pos, bool inside) {
+        const NodeId node = order[pos];
+        ++out.nodesVisited;
+        const Sphere& bound = scene.worldBound(node);
+        if (!inside) {
+            const Containment c = frustum.classify(bound);
+            if (c == Containment::Outside) {
+                ++out.nodesCulled;
+                return;
+            }
+            inside = c == Containment::Inside;
+        }
+        if (scene.kind(node) == NodeKind::Mesh) {
+            out.items.push_back({node, scene.meshPart(node), glm::length(bound.center - view.eye),
+                                 view.projectedArea(bound), 0, settings.shading});
+        }
+        for (std::uint32_t child = pos + 1; child < end[pos]; child = end[child]) visit(child, inside);
+    }
+};
+
+} // namespace
+
+void select(const Scene& scene, const View& view, const SelectSettings& settings, DrawList& out) {
+    out.clear();
+    if (scene.order().empty()) return;
+    SelectPass pass{scene, view, settings, out, Frustum::fromViewProjection(view.viewProjection()),
+                    scene.order(), scene.subtreeEnd()};
+    pass.visit(0, false);
+}
+
+} // namespace arcomp

@@ -1,0 +1,25 @@
+#include "tools/arcomp/Command.hpp"
+
+namespace arcomp {
+
+std::vector<Command>& registeredCommands() {
+    static std::vector<Command> commands;
+    return commands;
+}
+
+std::vector<Command>& registeredBenches() {
+    static std::vector<Command> benches;
+    return benches;
+}
+
+bool registerCommand(Command command) {
+    registeredCommands().push_back(std::move(command));
+    return true;
+}
+
+bool registerBench(Command command) {
+    registeredBenches().push_back(std::move(command));
+    return true;
+}
+
+} // namespace arcomp

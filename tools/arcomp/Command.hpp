@@ -1,0 +1,49 @@
+#pragma once
+// How subcommands join the arcomp executable. Each command lives in its own
+// file and registers itself at static-initialisation time:
+//
+//   static const bool registered = registerCommand({"inspect", "Print a scene's node tree",
+//       [](CLI::App& app) {
+//           auto path = std::make_shared<std::string>();
+//           app.add_option("scene", *path)->required();
+//           return [path] { return inspect(*path); };   // the exit code
+//       }});
+//
+// `arcomp bench <name>` works the same way through registerBench; a
+// benchmark prints exactly one JSON object as the last line of stdout.
+//
+// Exit codes: 0 ok, 1 runtime failure, 2 bad input or usage. Throwing
+// InputError (or ModelError, ConfigError) from an action gives 2 with its
+// message on stderr; any other exception gives 1.
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace arcomp {
+
+using CommandAction = std::function<int()>;
+using CommandSetup = std::function<CommandAction(CLI::App&)>;
+
+struct Command {
+    std::string name;
+    std::string help;
+    CommandSetup setup;
+};
+
+bool registerCommand(Command command);
+bool registerBench(Command command);
+std::vector<Command>& registeredCommands();
+std::vector<Command>& registeredBenches();
+
+// Bad input from the user: a missing file, a value out of range.
+struct InputError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+enum ExitCode : int { kExitOk = 0, kExitFailure = 1, kExitBadInput = 2 };
+
+} // namespace arcomp

@@ -1,0 +1,63 @@
+// arcomp: the station and its tools. Each subcommand registers itself (see
+// Command.hpp); this file only parses the command line and maps failures to
+// exit codes.
+
+#include "graph/ModelError.hpp"
+#include "tools/arcomp/Command.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <iostream>
+
+using namespace arcomp;
+
+namespace {
+
+void addAll(CLI::App& parent, std::vector<Command>& commands, std::vector<std::pair<CLI::App*, CommandAction>>& actions) {
+    std::sort(commands.begin(), commands.end(), [](const Command& a, const Command& b) { return a.name < b.name; });
+    for (Command& c : commands) {
+        CLI::App* sub = parent.add_subcommand(c.name, c.help);
+        actions.emplace_back(sub, c.setup(*sub));
+    }
+}
+
+bool isBadInput(const std::exception& e) {
+    return dynamic_cast<const InputError*>(&e) || dynamic_cast<const ModelError*>(&e) ||
+           std::string_view(typeid(e).name()).find("ConfigError") != std::string_view::npos;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"arcomp: scene-graph runtime for AR compositing stations"};
+    app.require_subcommand(1);
+    std::string logLevel = "warn";
+    app.add_option("--log-level", logLevel, "trace, debug, info, warn, error or off")->capture_default_str();
+
+    std::vector<std::pair<CLI::App*, CommandAction>> actions;
+    addAll(app, registeredCommands(), actions);
+    CLI::App* bench = app.add_subcommand("bench", "Benchmarks; each prints one JSON object as its last line");
+    bench->require_subcommand(1);
+    addAll(*bench, registeredBenches(), actions);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return code == 0 ? kExitOk : kExitBadInput;
+    }
+    spdlog::set_level(spdlog::level::from_str(logLevel));
+    spdlog::set_pattern("[%H:%M:%S.%e] [%l] %v");
+
+    for (auto& [sub, action] : actions) {
+        if (!sub->parsed()) continue;
+        try {
+            return action();
+        } catch (const std::exception& e) {
+            std::cerr << "arcomp " << sub->get_name() << ": " << e.what() << "\n";
+            return isBadInput(e) ? kExitBadInput : kExitFailure;
+        }
+    }
+    return kExitBadInput;
+}
