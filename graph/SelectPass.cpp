@@ -29,9 +29,13 @@ struct SelectPass {
             }
             inside = c == Containment::Inside;
         }
-        if (scene.kind(node) == NodeKind::Mesh) {
+        switch (scene.kind(node)) {
+        case NodeKind::Mesh:
             out.items.push_back({node, scene.meshPart(node), glm::length(bound.center - view.eye),
                                  view.projectedArea(bound), 0, settings.shading});
+            break;
+        default:
+            break;
         }
         for (std::uint32_t child = pos + 1; child < end[pos]; child = end[child]) visit(child, inside);
     }

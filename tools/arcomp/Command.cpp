@@ -12,6 +12,16 @@ std::vector<Command>& registeredBenches() {
     return benches;
 }
 
+std::vector<Command>& registeredBakes() {
+    static std::vector<Command> bakes;
+    return bakes;
+}
+
+bool registerBake(Command command) {
+    registeredBakes().push_back(std::move(command));
+    return true;
+}
+
 bool registerCommand(Command command) {
     registeredCommands().push_back(std::move(command));
     return true;

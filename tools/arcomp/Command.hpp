@@ -9,8 +9,9 @@
 //           return [path] { return inspect(*path); };   // the exit code
 //       }});
 //
-// `arcomp bench <name>` works the same way through registerBench; a
-// benchmark prints exactly one JSON object as the last line of stdout.
+// `arcomp bench <name>` works the same way through registerBench (a
+// benchmark prints exactly one JSON object as the last line of stdout), and
+// `arcomp bake <name>` through registerBake.
 //
 // Exit codes: 0 ok, 1 runtime failure, 2 bad input or usage. Throwing
 // InputError (or ModelError, ConfigError) from an action gives 2 with its
@@ -36,8 +37,10 @@ struct Command {
 
 bool registerCommand(Command command);
 bool registerBench(Command command);
+bool registerBake(Command command);
 std::vector<Command>& registeredCommands();
 std::vector<Command>& registeredBenches();
+std::vector<Command>& registeredBakes();
 
 // Bad input from the user: a missing file, a value out of range.
 struct InputError : std::runtime_error {

@@ -40,6 +40,9 @@ int main(int argc, char** argv) {
     CLI::App* bench = app.add_subcommand("bench", "Benchmarks; each prints one JSON object as its last line");
     bench->require_subcommand(1);
     addAll(*bench, registeredBenches(), actions);
+    CLI::App* bake = app.add_subcommand("bake", "Precompute assets: LOD levels, silhouette meshes, voxels");
+    bake->require_subcommand(1);
+    addAll(*bake, registeredBakes(), actions);
 
     try {
         app.parse(argc, argv);
