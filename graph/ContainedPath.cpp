@@ -7,6 +7,10 @@ namespace fs = std::filesystem;
 std::optional<fs::path> containedPath(const fs::path& folder, const std::string& uri, std::string& reason) {
     const auto colon = uri.find(':');
     const auto slash = uri.find('/');
+    if (uri.starts_with("data:")) {
+        reason = "data URI '" + uri.substr(0, 40) + "' is not base64-encoded; only base64 data URIs are supported";
+        return std::nullopt;
+    }
     if (colon != std::string::npos && (slash == std::string::npos || colon < slash)) {
         reason = "URI '" + uri + "' has a scheme; only relative paths inside the model's folder are allowed";
         return std::nullopt;

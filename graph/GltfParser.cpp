@@ -13,7 +13,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <map>
 #include <fstream>
 #include <set>
 
@@ -145,7 +144,7 @@ public:
     // checking every byte it touches. Integer components are converted as
     // the spec says: normalized ones to [0,1] or [-1,1], others as values.
     std::vector<float> readFloats(std::size_t index, const std::string& usePointer, int wantType,
-                                  std::initializer_list<int> allowedComponents) const {
+                                  const std::vector<int>& allowedComponents) const {
         const tinygltf::Accessor& a = accessor(index, usePointer);
         const std::string where = ptr("accessors", index);
         if (a.type != wantType)
@@ -192,6 +191,12 @@ public:
                                 " is out of range for " + std::to_string(vertexCount) + " vertices");
         }
         return out;
+    }
+
+    // Every buffer view must lie inside its buffer, used or not.
+    void checkView(std::size_t index) const {
+        std::size_t stride = 0;
+        view(static_cast<int>(index), ptr("bufferViews", index), stride);
     }
 
     std::size_t count(std::size_t index, const std::string& usePointer) const {
@@ -442,6 +447,7 @@ ParsedModel parseGltf(const fs::path& file) {
     }
 
     GltfReader reader(file, model);
+    for (std::size_t i = 0; i < model.bufferViews.size(); ++i) reader.checkView(i);
 
     for (std::size_t i = 0; i < model.images.size(); ++i) out.images.push_back(toRgba8(model.images[i]));
 
@@ -520,13 +526,10 @@ ParsedModel parseGltf(const fs::path& file) {
     }
 
     // Each (mesh, primitive) becomes one geometry, shared by every node that
-    // uses the mesh.
-    std::map<std::pair<int, std::size_t>, std::uint32_t> geometryOf;
-    auto primitiveParts = [&](int meshIndex, std::size_t nodeIndex) {
+    // uses the mesh. Every mesh is checked, used or not: a file that holds
+    // unsafe data anywhere is not one to trust.
+    auto primitiveParts = [&](int meshIndex) {
         std::vector<MeshPart> parts;
-        if (meshIndex < 0) return parts;
-        if (static_cast<std::size_t>(meshIndex) >= model.meshes.size())
-            reader.fail(ptr("nodes", nodeIndex, "mesh"), "mesh " + std::to_string(meshIndex) + " does not exist");
         const tinygltf::Mesh& mesh = model.meshes[static_cast<std::size_t>(meshIndex)];
         for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
             const tinygltf::Primitive& prim = mesh.primitives[p];
@@ -536,10 +539,6 @@ ParsedModel parseGltf(const fs::path& file) {
                 if (static_cast<std::size_t>(prim.material) >= model.materials.size())
                     reader.fail(where + "/material", "material " + std::to_string(prim.material) + " does not exist");
                 material = static_cast<std::uint32_t>(prim.material);
-            }
-            if (auto it = geometryOf.find({meshIndex, p}); it != geometryOf.end()) {
-                parts.push_back({it->second, material});
-                continue;
             }
             const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
             if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
@@ -552,7 +551,7 @@ ParsedModel parseGltf(const fs::path& file) {
                 continue;
             }
             const auto attributePointer = [&](const std::string& attribute) { return where + "/attributes/" + attribute; };
-            using CT = std::initializer_list<int>;
+            using CT = std::vector<int>;
             const CT floatOrQuantized{TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE,
                                       TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT,
                                       TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
@@ -604,11 +603,13 @@ ParsedModel parseGltf(const fs::path& file) {
             g.finalize();
             const auto id = static_cast<std::uint32_t>(out.geometries.size());
             out.geometries.push_back(std::move(g));
-            geometryOf[{meshIndex, p}] = id;
             parts.push_back({id, material});
         }
         return parts;
     };
+
+    std::vector<std::vector<MeshPart>> partsOfMesh;
+    for (std::size_t m = 0; m < model.meshes.size(); ++m) partsOfMesh.push_back(primitiveParts(static_cast<int>(m)));
 
     // Parents before children, as ParsedModel promises.
     std::vector<std::pair<int, int>> stack;  // glTF node, parsed parent
@@ -622,7 +623,11 @@ ParsedModel parseGltf(const fs::path& file) {
         node.parent = parent;
         node.local = nodeMatrix(src, i, reader);
         node.name = src.name;
-        node.parts = primitiveParts(src.mesh, i);
+        if (src.mesh >= 0) {
+            if (static_cast<std::size_t>(src.mesh) >= partsOfMesh.size())
+                reader.fail(ptr("nodes", i, "mesh"), "mesh " + std::to_string(src.mesh) + " does not exist");
+            node.parts = partsOfMesh[static_cast<std::size_t>(src.mesh)];
+        }
         const int self = static_cast<int>(out.nodes.size());
         out.nodes.push_back(std::move(node));
         for (auto c = src.children.rbegin(); c != src.children.rend(); ++c) stack.push_back({*c, self});

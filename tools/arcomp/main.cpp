@@ -3,6 +3,7 @@
 // exit codes.
 
 #include "graph/ModelError.hpp"
+#include "runtime/ConfigError.hpp"
 #include "tools/arcomp/Command.hpp"
 
 #include <spdlog/spdlog.h>
@@ -24,7 +25,7 @@ void addAll(CLI::App& parent, std::vector<Command>& commands, std::vector<std::p
 
 bool isBadInput(const std::exception& e) {
     return dynamic_cast<const InputError*>(&e) || dynamic_cast<const ModelError*>(&e) ||
-           std::string_view(typeid(e).name()).find("ConfigError") != std::string_view::npos;
+           dynamic_cast<const ConfigError*>(&e);
 }
 
 } // namespace

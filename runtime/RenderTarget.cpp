@@ -1,0 +1,65 @@
+#include "runtime/RenderTarget.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace arcomp {
+
+using namespace gl;
+
+RenderTarget::RenderTarget(glm::ivec2 size) : size_(size) {
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxSize);
+    if (size.x <= 0 || size.y <= 0 || size.x > maxSize || size.y > maxSize)
+        throw std::invalid_argument("render target size " + std::to_string(size.x) + "x" + std::to_string(size.y) +
+                                    " is outside 1.." + std::to_string(maxSize));
+    glGenTextures(1, &color_);
+    glBindTexture(GL_TEXTURE_2D, color_);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, size.x, size.y, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glGenRenderbuffers(1, &depthStencil_);
+    glBindRenderbuffer(GL_RENDERBUFFER, depthStencil_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, size.x, size.y);
+    glGenFramebuffers(1, &framebuffer_);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_, 0);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depthStencil_);
+    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error("framebuffer incomplete: status 0x" + std::to_string(status));
+}
+
+RenderTarget::~RenderTarget() {
+    glDeleteFramebuffers(1, &framebuffer_);
+    glDeleteRenderbuffers(1, &depthStencil_);
+    glDeleteTextures(1, &color_);
+}
+
+void RenderTarget::bind() const {
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glViewport(0, 0, size_.x, size_.y);
+}
+
+Image RenderTarget::read() const {
+    Image img;
+    img.width = size_.x;
+    img.height = size_.y;
+    img.rgba.resize(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y) * 4);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    // RGBA + UNSIGNED_BYTE is the one read format every GL and GLES accepts.
+    glReadPixels(0, 0, size_.x, size_.y, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+    // GL's rows run bottom to top; images run top to bottom.
+    const std::size_t row = static_cast<std::size_t>(size_.x) * 4;
+    for (int y = 0; y < size_.y / 2; ++y)
+        std::swap_ranges(img.rgba.begin() + static_cast<std::ptrdiff_t>(y * row),
+                         img.rgba.begin() + static_cast<std::ptrdiff_t>((y + 1) * row),
+                         img.rgba.begin() + static_cast<std::ptrdiff_t>((size_.y - 1 - y) * row));
+    return img;
+}
+
+} // namespace arcomp

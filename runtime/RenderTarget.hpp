@@ -1,0 +1,35 @@
+#pragma once
+// An offscreen framebuffer: RGBA8 colour in a texture (so later passes can
+// sample it) and a depth-stencil buffer. Headless rendering and every image
+// test draw into one of these and read it back.
+//
+//   RenderTarget target({640, 480});
+//   target.bind();  ... draw ...
+//   Image img = target.read();   // rows top to bottom, premultiplied RGBA
+
+#include "graph/Material.hpp"
+#include "runtime/GlApi.hpp"
+
+#include <glm/glm.hpp>
+
+namespace arcomp {
+
+class RenderTarget {
+public:
+    explicit RenderTarget(glm::ivec2 size);
+    ~RenderTarget();
+    RenderTarget(const RenderTarget&) = delete;
+    RenderTarget& operator=(const RenderTarget&) = delete;
+
+    void bind() const;  // also sets the viewport to the whole target
+    Image read() const;
+    glm::ivec2 size() const { return size_; }
+    GLuint colorTexture() const { return color_; }
+    GLuint framebuffer() const { return framebuffer_; }
+
+private:
+    glm::ivec2 size_;
+    GLuint framebuffer_ = 0, color_ = 0, depthStencil_ = 0;
+};
+
+} // namespace arcomp

@@ -1,0 +1,30 @@
+#pragma once
+// What `render`, `inspect` and the station draw: a single model file, or the
+// scene a station config describes (with its camera and background).
+//
+//   SceneFile f = loadSceneFile("bunny.obj");          // throws ModelError
+//   SceneFile g = loadSceneFile("station.yaml");       // throws ConfigError
+
+#include "graph/Scene.hpp"
+#include "graph/View.hpp"
+#include "runtime/StationConfig.hpp"
+
+#include <optional>
+
+namespace arcomp {
+
+struct SceneFile {
+    Scene scene;
+    std::optional<View> camera;
+    glm::vec4 background{0.0f};
+    // Models a config names that could not be loaded are skipped, each with
+    // a line here: the station goes on with the rest.
+    std::vector<std::string> warnings;
+};
+
+SceneFile loadSceneFile(const std::filesystem::path& file);
+// Adds the config's objects to a scene; failures become warnings.
+void buildScene(const StationConfig& cfg, Scene& scene, std::vector<std::string>& warnings);
+View cameraView(const CameraConfig& camera);
+
+} // namespace arcomp

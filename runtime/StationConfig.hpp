@@ -1,0 +1,59 @@
+#pragma once
+// One installation, as its YAML file describes it. Field-by-field
+// documentation: configs/README.md. Loading validates everything at once and
+// throws ConfigError listing every problem with its line and column.
+//
+//   StationConfig cfg = loadStationConfig("configs/demo-replay.yaml");
+
+#include "graph/Shading.hpp"
+
+#include <glm/glm.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace arcomp {
+
+// A thing in the scene: a model file or a built-in shape, placed by
+// position, rotation (degrees about X, then Y, then Z) and scale.
+struct ObjectConfig {
+    std::string name;
+    std::filesystem::path model;  // empty for shapes
+    std::string shape;            // "box" or "sphere" when no model
+    glm::vec3 size{1.0f};         // box edge lengths
+    float radius = 0.5f;          // sphere
+    glm::vec4 color{0.8f, 0.8f, 0.8f, 1.0f};
+    glm::vec3 position{0.0f};
+    glm::vec3 rotationDegrees{0.0f};
+    glm::vec3 scale{1.0f};
+    int line = 0;  // where it was declared, for messages about it later
+};
+
+struct CameraConfig {
+    bool given = false;
+    glm::vec3 eye{0.0f, 1.6f, 5.0f};
+    glm::vec3 target{0.0f, 1.0f, 0.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    float fovyDegrees = 45.0f;
+    glm::ivec2 size{1280, 720};
+    float near = 0.1f;
+    float far = 500.0f;
+};
+
+struct RenderConfig {
+    Shading shading = Shading::Phong;
+    std::string gl = "auto";
+    glm::vec4 background{0.08f, 0.08f, 0.1f, 1.0f};
+};
+
+struct StationConfig {
+    std::filesystem::path file;
+    std::vector<ObjectConfig> objects;
+    CameraConfig camera;
+    RenderConfig render;
+};
+
+StationConfig loadStationConfig(const std::filesystem::path& file);
+
+} // namespace arcomp

@@ -1,0 +1,174 @@
+#include "graph/ModelLoader.hpp"
+
+#include "../support/TempDir.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+using namespace arcomp;
+using arcomp::test::TempDir;
+
+namespace {
+
+std::string base64(const std::vector<unsigned char>& bytes) {
+    static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (std::size_t i = 0; i < bytes.size(); i += 3) {
+        const unsigned v = (bytes[i] << 16) | ((i + 1 < bytes.size() ? bytes[i + 1] : 0) << 8) |
+                           (i + 2 < bytes.size() ? bytes[i + 2] : 0);
+        out += table[(v >> 18) & 63];
+        out += table[(v >> 12) & 63];
+        out += i + 1 < bytes.size() ? table[(v >> 6) & 63] : '=';
+        out += i + 2 < bytes.size() ? table[v & 63] : '=';
+    }
+    return out;
+}
+
+// One triangle: 3 float positions (36 bytes) then 3 u16 indices (6 bytes).
+std::vector<unsigned char> triangleBytes(std::uint16_t lastIndex = 2) {
+    const float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    const std::uint16_t indices[3] = {0, 1, lastIndex};
+    std::vector<unsigned char> b(42 + 2);
+    std::memcpy(b.data(), positions, 36);
+    std::memcpy(b.data() + 36, indices, 6);
+    return b;
+}
+
+std::string triangleGltf(const std::string& bufferUri, const std::string& extra = "", int positionCount = 3,
+                         const std::string& nodes = R"([{"mesh": 0}])") {
+    return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": )" + nodes + R"(,
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+      "accessors": [
+        {"bufferView": 0, "componentType": 5126, "count": )" + std::to_string(positionCount) + R"(, "type": "VEC3"},
+        {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
+      "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+      "buffers": [{"byteLength": 44, "uri": ")" + bufferUri + "\"}]" + extra + "}";
+}
+
+std::string dataUri(const std::vector<unsigned char>& bytes) {
+    return "data:application/octet-stream;base64," + base64(bytes);
+}
+
+void expectRejected(const std::filesystem::path& file, const std::string& where, const std::string& reasonPart) {
+    Scene scene;
+    const std::size_t before = scene.nodeCount();
+    try {
+        loadModel(file, scene, scene.root());
+        FAIL() << file << " loaded but should have been rejected";
+    } catch (const ModelError& e) {
+        EXPECT_EQ(e.where, where) << e.what();
+        EXPECT_NE(e.reason.find(reasonPart), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find(file.filename().string()), std::string::npos);
+    }
+    EXPECT_EQ(scene.nodeCount(), before) << "a rejected model must leave the scene untouched";
+}
+
+} // namespace
+
+TEST(GltfLoader, loadsATriangleFromAnEmbeddedBuffer) {
+    TempDir dir;
+    const auto file = dir.write("tri.gltf", triangleGltf(dataUri(triangleBytes())));
+    Scene scene;
+    const LoadedModel m = loadModel(file, scene, scene.root());
+    ASSERT_EQ(scene.geometries().size(), 1u);
+    const Geometry& g = scene.geometry(0);
+    EXPECT_EQ(g.triangleCount(), 1u);
+    ASSERT_EQ(g.normals.size(), 3u);  // computed: the file has none
+    EXPECT_NEAR(g.normals[0].z, 1.0f, 1e-6f);
+    EXPECT_EQ(scene.name(m.root), "tri");
+}
+
+TEST(GltfLoader, loadsAnExternalBufferInsideTheFolder) {
+    TempDir dir;
+    const auto bytes = triangleBytes();
+    dir.write("data/tri.bin", std::string(bytes.begin(), bytes.end()));
+    const auto file = dir.write("tri.gltf", triangleGltf("data/tri.bin"));
+    Scene scene;
+    loadModel(file, scene, scene.root());
+    EXPECT_EQ(scene.geometry(0).triangleCount(), 1u);
+}
+
+TEST(GltfLoader, refusesUrisThatLeaveTheModelFolder) {
+    TempDir dir;
+    const auto bytes = triangleBytes();
+    dir.write("outside.bin", std::string(bytes.begin(), bytes.end()));
+    const auto up = dir.write("models/up.gltf", triangleGltf("../outside.bin"));
+    expectRejected(up, "", "outside the model's folder");
+    const auto absolute = dir.write("models/abs.gltf", triangleGltf((dir.path() / "outside.bin").string()));
+    expectRejected(absolute, "", "");
+    const auto scheme = dir.write("models/scheme.gltf", triangleGltf("file:///etc/passwd"));
+    expectRejected(scheme, "", "scheme");
+}
+
+TEST(GltfLoader, rejectsAnIndexOutOfRangeNamingTheAccessor) {
+    TempDir dir;
+    const auto file = dir.write("oob.gltf", triangleGltf(dataUri(triangleBytes(7))));
+    expectRejected(file, "/accessors/1", "index 7 at element 2 is out of range for 3 vertices");
+}
+
+TEST(GltfLoader, rejectsAnAccessorLongerThanItsBufferView) {
+    TempDir dir;
+    const auto file = dir.write("long.gltf", triangleGltf(dataUri(triangleBytes()), "", 4));
+    expectRejected(file, "/accessors/0", "do not fit in buffer view 0");
+}
+
+TEST(GltfLoader, rejectsACycleInTheNodeGraph) {
+    TempDir dir;
+    const auto file = dir.write(
+        "cycle.gltf", triangleGltf(dataUri(triangleBytes()), "", 3,
+                                   R"([{"mesh": 0, "children": [1]}, {"children": [2]}, {"children": [1]}])"));
+    expectRejected(file, "/nodes/2/children/0", "already has parent");
+}
+
+TEST(GltfLoader, rejectsUnsupportedRequiredExtensionsByName) {
+    TempDir dir;
+    const auto file = dir.write(
+        "draco.gltf", triangleGltf(dataUri(triangleBytes()),
+                                   R"(, "extensionsUsed": ["KHR_draco_mesh_compression"], "extensionsRequired": ["KHR_draco_mesh_compression"])"));
+    expectRejected(file, "/extensionsRequired/0", "KHR_draco_mesh_compression");
+}
+
+TEST(GltfLoader, rejectsGarbageAndEmptyFiles) {
+    TempDir dir;
+    Scene scene;
+    EXPECT_THROW(loadModel(dir.write("empty.gltf", ""), scene, scene.root()), ModelError);
+    EXPECT_THROW(loadModel(dir.write("junk.glb", "glTF\x02\0\0\0\xff\xff\xff\xff"), scene, scene.root()), ModelError);
+    EXPECT_THROW(loadModel(dir.write("text.gltf", "{\"asset\": "), scene, scene.root()), ModelError);
+    EXPECT_THROW(loadModel(dir.path() / "missing.gltf", scene, scene.root()), ModelError);
+    EXPECT_EQ(scene.nodeCount(), 1u);
+}
+
+TEST(ObjLoader, loadsTheStanfordBunny) {
+    const auto bunny = arcomp::test::sharedData() / "meshes/bunny.obj";
+    if (!std::filesystem::exists(bunny)) GTEST_SKIP() << "shared test data is absent";
+    Scene scene;
+    loadModel(bunny, scene, scene.root());
+    ASSERT_EQ(scene.geometries().size(), 1u);
+    EXPECT_EQ(scene.geometry(0).triangleCount(), 27864u);
+    EXPECT_EQ(scene.geometry(0).positions.size(), 13934u);
+    EXPECT_GT(scene.geometry(0).bound.radius, 0.05f);
+}
+
+TEST(ObjLoader, computesMissingNormalsAndRejectsBadFaces) {
+    TempDir dir;
+    Scene scene;
+    loadModel(dir.write("quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n"), scene, scene.root());
+    ASSERT_EQ(scene.geometry(0).triangleCount(), 2u);
+    EXPECT_NEAR(scene.geometry(0).normals[0].z, 1.0f, 1e-6f);
+    EXPECT_THROW(loadModel(dir.write("bad.obj", "v 0 0 0\nf 1 2 3\n"), scene, scene.root()), ModelError);
+    EXPECT_THROW(loadModel(dir.write("none.obj", "# nothing\n"), scene, scene.root()), ModelError);
+    EXPECT_THROW(loadModel(dir.write("bin.obj", std::string("v 0\0\0 0", 8)), scene, scene.root()), ModelError);
+}
+
+TEST(ObjLoader, ignoresAMaterialLibraryOutsideTheFolderWithAWarning) {
+    TempDir dir;
+    dir.write("secret.mtl", "newmtl red\nKd 1 0 0\n");
+    Scene scene;
+    const LoadedModel m = loadModel(
+        dir.write("sub/tri.obj", "mtllib ../secret.mtl\nusemtl red\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), scene,
+        scene.root());
+    ASSERT_FALSE(m.warnings.empty());
+    EXPECT_NE(m.warnings[0].find("outside the model's folder"), std::string::npos);
+    EXPECT_EQ(scene.geometry(0).triangleCount(), 1u);
+}

@@ -1,0 +1,110 @@
+// Config errors: every class reported with its line and column, all at once.
+
+#include "runtime/ConfigError.hpp"
+#include "runtime/StationConfig.hpp"
+
+#include "../support/TempDir.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace arcomp;
+using arcomp::test::TempDir;
+
+namespace {
+
+std::vector<ConfigIssue> issuesOf(const std::filesystem::path& file) {
+    try {
+        loadStationConfig(file);
+    } catch (const ConfigError& e) {
+        return e.issues;
+    }
+    return {};
+}
+
+bool hasIssue(const std::vector<ConfigIssue>& issues, int line, int column, const std::string& part) {
+    for (const ConfigIssue& i : issues)
+        if (i.line == line && i.column == column && i.message.find(part) != std::string::npos) return true;
+    return false;
+}
+
+std::string describe(const std::vector<ConfigIssue>& issues) {
+    std::string s;
+    for (const ConfigIssue& i : issues) s += i.format() + "\n";
+    return s;
+}
+
+} // namespace
+
+TEST(StationConfig, readsAValidConfigWithRelativePaths) {
+    TempDir dir;
+    dir.write("models/tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const auto file = dir.write("station.yaml", R"(scene:
+  objects:
+    - model: models/tri.obj
+      position: [1, 2, 3]
+      scale: 2
+    - shape: box
+      size: [1, 2, 1]
+      color: [1, 0, 0, 1]
+camera:
+  eye: [0, 1, 5]
+  target: [0, 1, 0]
+  size: [640, 480]
+render:
+  shading: flat
+  gl: es3
+)");
+    const StationConfig cfg = loadStationConfig(file);
+    ASSERT_EQ(cfg.objects.size(), 2u);
+    EXPECT_EQ(cfg.objects[0].model, (dir.path() / "models/tri.obj").lexically_normal());
+    EXPECT_EQ(cfg.objects[0].scale, glm::vec3(2.0f));
+    EXPECT_EQ(cfg.objects[1].shape, "box");
+    EXPECT_EQ(cfg.camera.size, glm::ivec2(640, 480));
+    EXPECT_EQ(cfg.render.shading, Shading::Flat);
+    EXPECT_EQ(cfg.render.gl, "es3");
+}
+
+TEST(StationConfig, reportsEveryErrorClassWithLineAndColumn) {
+    TempDir dir;
+    const auto file = dir.write("bad.yaml", R"(scene:
+  objects:
+    - model: missing.glb
+      colour: [1, 0, 0, 1]
+    - shape: box
+      size: [1, two, 1]
+camera:
+  eye: [0, 1, 5]
+  target: [0, 1, 0]
+  fovy_deg: 500
+render:
+  shading: shiny
+)");
+    const auto issues = issuesOf(file);
+    EXPECT_TRUE(hasIssue(issues, 3, 14, "does not exist")) << describe(issues);          // missing file
+    EXPECT_TRUE(hasIssue(issues, 4, 7, "unknown key")) << describe(issues);              // unknown key
+    EXPECT_TRUE(hasIssue(issues, 6, 13, "expected a list of 3 numbers")) << describe(issues);  // wrong type
+    EXPECT_TRUE(hasIssue(issues, 10, 13, "out of range")) << describe(issues);           // bad number
+    EXPECT_TRUE(hasIssue(issues, 12, 12, "is not one of unlit, flat, gouraud, phong")) << describe(issues);
+    EXPECT_EQ(issues.size(), 5u) << describe(issues);
+}
+
+TEST(StationConfig, reportsAMissingRequiredKeyAtItsParent) {
+    TempDir dir;
+    const auto issues = issuesOf(dir.write("nokeys.yaml", "render:\n  shading: flat\n"));
+    ASSERT_EQ(issues.size(), 1u) << describe(issues);
+    EXPECT_NE(issues[0].message.find("scene: required key is missing"), std::string::npos);
+    EXPECT_EQ(issues[0].line, 1);
+}
+
+TEST(StationConfig, reportsSyntaxErrorsAndUnreadableFiles) {
+    TempDir dir;
+    const auto syntax = issuesOf(dir.write("syntax.yaml", "scene:\n  objects: [\n"));
+    ASSERT_EQ(syntax.size(), 1u);
+    EXPECT_NE(syntax[0].message.find("YAML syntax"), std::string::npos);
+    EXPECT_GT(syntax[0].line, 0);
+    const auto missing = issuesOf(dir.path() / "nope.yaml");
+    ASSERT_EQ(missing.size(), 1u);
+    EXPECT_NE(missing[0].format().find("nope.yaml: cannot be read"), std::string::npos);
+    const auto notMap = issuesOf(dir.write("list.yaml", "- 1\n- 2\n"));
+    ASSERT_EQ(notMap.size(), 1u);
+}

@@ -1,0 +1,112 @@
+// The arcomp command line as scripts use it: exit codes, outputs, messages.
+
+#include "runtime/ImageFile.hpp"
+
+#include "../support/TempDir.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <sys/wait.h>
+
+using arcomp::test::TempDir;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct CommandResult {
+    int code;
+    std::string out;
+};
+
+// Runs arcomp with the arguments; stderr is folded into the output.
+CommandResult arcompRun(const std::string& args) {
+    const std::string command = std::string(ARCOMP_BINARY) + " " + args + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    std::string out;
+    std::array<char, 4096> buffer;
+    while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) out.append(buffer.data(), n);
+    const int status = pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+std::string lastLine(const std::string& text) {
+    std::string t = text;
+    while (!t.empty() && t.back() == '\n') t.pop_back();
+    return t.substr(t.rfind('\n') == std::string::npos ? 0 : t.rfind('\n') + 1);
+}
+
+fs::path bunny() { return arcomp::test::sharedData() / "meshes/bunny.obj"; }
+
+double coverage(const arcomp::Image& img) {
+    std::size_t covered = 0;
+    for (std::size_t i = 3; i < img.rgba.size(); i += 4) covered += img.rgba[i] > 0;
+    return static_cast<double>(covered) / static_cast<double>(img.width * img.height);
+}
+
+} // namespace
+
+TEST(Cli, renderWritesTheBunnyAndShadingChangesTheImage) {
+    if (!fs::exists(bunny())) GTEST_SKIP() << "shared test data is absent";
+    TempDir dir;
+    const CommandResult phong = arcompRun("render " + bunny().string() + " --out " + (dir.path() / "p.png").string() + " --size 640x480");
+    ASSERT_EQ(phong.code, 0) << phong.out;
+    const CommandResult flat = arcompRun("render " + bunny().string() + " --out " + (dir.path() / "f.png").string() +
+                               " --size 640x480 --shading flat");
+    ASSERT_EQ(flat.code, 0) << flat.out;
+    const arcomp::Image p = arcomp::readPng(dir.path() / "p.png");
+    const arcomp::Image f = arcomp::readPng(dir.path() / "f.png");
+    EXPECT_EQ(p.width, 640);
+    EXPECT_EQ(p.height, 480);
+    EXPECT_GT(coverage(p), 0.08);  // framed at about 80% of the height
+    EXPECT_LT(coverage(p), 0.45);
+    EXPECT_NE(p.rgba, f.rgba);
+}
+
+TEST(Cli, renderWithEsAndDesktopGlGivesMatchingImages) {
+    if (!fs::exists(bunny())) GTEST_SKIP() << "shared test data is absent";
+    TempDir dir;
+    ASSERT_EQ(arcompRun("render " + bunny().string() + " --gl gl33 --out " + (dir.path() / "gl.png").string()).code, 0);
+    ASSERT_EQ(arcompRun("render " + bunny().string() + " --gl es3 --out " + (dir.path() / "es.png").string()).code, 0);
+    const arcomp::Image gl = arcomp::readPng(dir.path() / "gl.png");
+    const arcomp::Image es = arcomp::readPng(dir.path() / "es.png");
+    double diff = 0;
+    for (std::size_t i = 0; i < gl.rgba.size(); ++i) diff += std::abs(int(gl.rgba[i]) - int(es.rgba[i]));
+    EXPECT_LT(diff / static_cast<double>(gl.rgba.size()), 0.5);
+}
+
+TEST(Cli, badInputExitsTwoWithTheReason) {
+    TempDir dir;
+    const CommandResult missing = arcompRun("render " + (dir.path() / "none.obj").string() + " --out x.png");
+    EXPECT_EQ(missing.code, 2);
+    EXPECT_NE(missing.out.find("none.obj: no such file"), std::string::npos) << missing.out;
+    const CommandResult garbage = arcompRun("inspect " + dir.write("junk.gltf", "not json").string());
+    EXPECT_EQ(garbage.code, 2);
+    EXPECT_NE(garbage.out.find("junk.gltf"), std::string::npos) << garbage.out;
+    const CommandResult size = arcompRun("render " + dir.write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").string() +
+                               " --out x.png --size 0x10");
+    EXPECT_EQ(size.code, 2);
+    EXPECT_NE(size.out.find("--size '0x10'"), std::string::npos) << size.out;
+    EXPECT_EQ(arcompRun("render").code, 2);  // usage
+    EXPECT_EQ(arcompRun("no-such-command").code, 2);
+}
+
+TEST(Cli, inspectPrintsTheTreeWithCounts) {
+    if (!fs::exists(bunny())) GTEST_SKIP() << "shared test data is absent";
+    const CommandResult r = arcompRun("inspect " + bunny().string());
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_NE(r.out.find("mesh: 27864 triangles"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("meshes 1, triangles 27864"), std::string::npos) << r.out;
+}
+
+TEST(Cli, benchLoadPrintsOneJsonLineLast) {
+    if (!fs::exists(bunny())) GTEST_SKIP() << "shared test data is absent";
+    const CommandResult r = arcompRun("bench load --repeats 1 --model " + bunny().string());
+    ASSERT_EQ(r.code, 0) << r.out;
+    const std::string json = lastLine(r.out);
+    EXPECT_EQ(json.front(), '{');
+    EXPECT_EQ(json.back(), '}');
+    EXPECT_NE(json.find("\"triangles\":27864"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"load_ms\":"), std::string::npos) << json;
+}

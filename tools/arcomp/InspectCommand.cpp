@@ -1,0 +1,63 @@
+// arcomp inspect <scene>: the node tree with counts. Exit 2 with the reason
+// when the scene is rejected.
+
+#include "runtime/SceneFile.hpp"
+#include "tools/arcomp/Command.hpp"
+
+#include <iostream>
+#include <memory>
+
+namespace arcomp {
+namespace {
+
+const char* kindName(NodeKind k) {
+    switch (k) {
+    case NodeKind::Group: return "group";
+    case NodeKind::Transform: return "transform";
+    case NodeKind::Mesh: return "mesh";
+    case NodeKind::Lod: return "lod";
+    case NodeKind::Grouping: return "grouping";
+    case NodeKind::SilhouetteRegion: return "silhouette-region";
+    case NodeKind::PointCloud: return "point-cloud";
+    }
+    return "?";
+}
+
+int inspect(const std::string& path) {
+    SceneFile file = loadSceneFile(path);
+    Scene& scene = file.scene;
+    scene.update();
+    std::size_t meshes = 0, triangles = 0;
+    const auto order = scene.order();
+    std::vector<int> depth(scene.nodeCount(), 0);
+    for (NodeId n : order) {
+        if (scene.parent(n) != kNoNode) depth[n] = depth[scene.parent(n)] + 1;
+        std::cout << std::string(static_cast<std::size_t>(depth[n]) * 2, ' ') << kindName(scene.kind(n));
+        if (!scene.name(n).empty()) std::cout << " '" << scene.name(n) << "'";
+        if (scene.kind(n) == NodeKind::Mesh) {
+            const MeshPart& part = scene.meshPart(n);
+            const std::size_t t = scene.geometry(part.geometry).triangleCount();
+            std::cout << ": " << t << " triangles, material '" << scene.material(part.material).name << "'";
+            ++meshes;
+            triangles += t;
+        }
+        std::cout << "\n";
+    }
+    const Sphere b = scene.bound();
+    std::cout << "nodes " << scene.nodeCount() << ", meshes " << meshes << ", triangles " << triangles
+              << ", geometries " << scene.geometries().size() << ", materials " << scene.materials().size()
+              << ", images " << scene.images().size() << "\n";
+    if (b.empty()) std::cout << "bounds: empty\n";
+    else std::cout << "bounds: centre (" << b.center.x << ", " << b.center.y << ", " << b.center.z << "), radius " << b.radius << "\n";
+    for (const std::string& w : file.warnings) std::cout << "warning: " << w << "\n";
+    return kExitOk;
+}
+
+const bool registered = registerCommand({"inspect", "Print a scene's node tree with counts and bounds", [](CLI::App& app) {
+                                             auto path = std::make_shared<std::string>();
+                                             app.add_option("scene", *path, "Model or station config")->required();
+                                             return [path] { return inspect(*path); };
+                                         }});
+
+} // namespace
+} // namespace arcomp

@@ -1,0 +1,81 @@
+// arcomp render <scene> --out F.png: one headless frame of a model or a
+// station config's scene.
+
+#include "graph/SelectPass.hpp"
+#include "runtime/GlContext.hpp"
+#include "runtime/ImageFile.hpp"
+#include "runtime/RenderTarget.hpp"
+#include "runtime/Renderer.hpp"
+#include "runtime/SceneFile.hpp"
+#include "tools/arcomp/CliParse.hpp"
+#include "tools/arcomp/Command.hpp"
+
+#include <iostream>
+#include <memory>
+
+namespace arcomp {
+namespace {
+
+struct RenderOptions {
+    std::string scene, out, size = "640x480", eye, target, shading = "phong", gl = "auto";
+};
+
+int render(const RenderOptions& o) {
+    const glm::ivec2 size = parseSize(o.size, "--size");
+    const auto shading = parseShading(o.shading);
+    if (!shading) throw InputError("--shading '" + o.shading + "': expected unlit, flat, gouraud or phong");
+    GlRequest request;
+    try {
+        request = parseGlRequest(o.gl);
+    } catch (const std::invalid_argument& e) {
+        throw InputError(std::string("--gl: ") + e.what());
+    }
+    SceneFile file = loadSceneFile(o.scene);
+    for (const std::string& w : file.warnings) std::cerr << "warning: " << w << "\n";
+    Scene& scene = file.scene;
+    scene.update();
+
+    View view = file.camera ? *file.camera : View::framing(scene.bound(), 45.0f, size);
+    if (!o.eye.empty() || !o.target.empty() || view.viewport != size) {
+        const Sphere b = scene.bound().empty() ? Sphere{glm::vec3(0.0f), 1.0f} : scene.bound();
+        const glm::vec3 eye = o.eye.empty() ? view.eye : parseVec3(o.eye, "--eye");
+        const glm::vec3 target = o.target.empty() ? (file.camera ? view.eye + view.forward : b.center)
+                                                  : parseVec3(o.target, "--target");
+        const float distance = glm::length(eye - b.center);
+        view = View::lookAt(eye, target, {0.0f, 1.0f, 0.0f}, glm::degrees(view.fovyRadians), size,
+                            std::max(1e-3f * distance, distance - 2.0f * b.radius), distance + 2.0f * b.radius);
+    }
+
+    auto context = HeadlessContext::create(request);
+    RenderTarget target(size);
+    target.bind();
+    Renderer renderer;
+    DrawList list;
+    select(scene, view, {.shading = *shading}, list);
+    renderer.draw(scene, list, view, {.clearColor = file.background});
+    const Image image = target.read();
+    writePng(o.out, image);
+    std::size_t covered = 0;
+    for (std::size_t i = 3; i < image.rgba.size(); i += 4) covered += image.rgba[i] > 0;
+    std::cout << "wrote " << o.out << ": " << size.x << "x" << size.y << ", " << list.items.size() << " meshes, "
+              << renderer.trianglesDrawn() << " triangles, " << toString(context->api()) << ", "
+              << 100.0 * static_cast<double>(covered) / static_cast<double>(size.x * size.y) << "% covered\n";
+    return kExitOk;
+}
+
+const bool registered = registerCommand(
+    {"render", "Render one frame of a model (.gltf, .glb, .obj) or a station config (.yaml) to a PNG",
+     [](CLI::App& app) {
+         auto o = std::make_shared<RenderOptions>();
+         app.add_option("scene", o->scene, "Model or station config")->required();
+         app.add_option("--out", o->out, "PNG file to write")->required();
+         app.add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
+         app.add_option("--eye", o->eye, "Camera position X,Y,Z (default: frames the scene)");
+         app.add_option("--target", o->target, "Point looked at X,Y,Z (default: the scene's centre)");
+         app.add_option("--shading", o->shading, "unlit, flat, gouraud or phong")->capture_default_str();
+         app.add_option("--gl", o->gl, "OpenGL API: auto, gl33 or es3")->capture_default_str();
+         return [o] { return render(*o); };
+     }});
+
+} // namespace
+} // namespace arcomp
