@@ -27,6 +27,13 @@ float angleDegrees(const glm::vec3& a, const glm::vec3& b) {
     return glm::degrees(angle);
 }
 
+float meanRadius(std::span<const glm::vec3> positions, const glm::vec3& center) {
+    if (positions.empty()) return 0.0f;
+    double sum = 0.0;
+    for (const glm::vec3& p : positions) sum += glm::length(p - center);
+    return static_cast<float>(sum / static_cast<double>(positions.size()));
+}
+
 glm::vec3 representativePoint(const glm::vec3& eye, const glm::vec3& center, float meanRadius) {
     const glm::vec3 toEye = eye - center;
     const float distance = glm::length(toEye);

@@ -17,6 +17,8 @@
 
 #include <glm/glm.hpp>
 
+#include <span>
+
 namespace arcomp {
 
 struct GazeAcuityParams {
@@ -41,6 +43,9 @@ inline float gazeAcuity(float thetaDegrees, float angularSpeedDegreesPerSecond, 
 
 // Angle between two directions in degrees; 0 when either is zero.
 float angleDegrees(const glm::vec3& a, const glm::vec3& b);
+
+// The paper's stand-in sphere: mean distance of the vertices from `center`.
+float meanRadius(std::span<const glm::vec3> positions, const glm::vec3& center);
 
 // The point of the sphere (centre, mean radius) nearest the eye; the centre
 // itself when the eye is inside the sphere.
