@@ -91,3 +91,24 @@ TEST(GazeSource, pixelAtViewCentreLooksForward) {
     EXPECT_LT(corner.x, 0.0f);
     EXPECT_GT(corner.y, 0.0f);
 }
+
+TEST(GazeSource, mutatedTracksParseOrThrowGazeTrackError) {
+    const std::string good = "time,eye_x,eye_y,eye_z,gaze_x,gaze_y,gaze_z\n0,0,1.6,0,0,0,-1\n0.5,0.1,1.6,0,0.2,0,-1\n";
+    const char alphabet[] = "0123456789.,-+eE\n\r# naix";
+    std::uint32_t state = 777;
+    const auto next = [&state] { return state = state * 1664525u + 1013904223u; };
+    for (int round = 0; round < 3000; ++round) {
+        std::string text = good;
+        for (int k = 0; k < 1 + round % 5; ++k) text[next() % text.size()] = alphabet[next() % (sizeof alphabet - 1)];
+        try {
+            const std::vector<GazeSample> samples = parseGazeTrackCsv(text, "t.csv");
+            for (std::size_t i = 0; i < samples.size(); ++i) {
+                ASSERT_NEAR(glm::length(samples[i].direction), 1.0f, 1e-5f);
+                if (i) {
+                    ASSERT_GT(samples[i].time, samples[i - 1].time);
+                }
+            }
+        } catch (const GazeTrackError&) {
+        }
+    }
+}

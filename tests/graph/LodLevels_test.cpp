@@ -124,3 +124,20 @@ TEST(LodFile, readerRejectsDamagedFilesWithPlace) {
 TEST(LodFile, missingFileIsModelError) {
     EXPECT_THROW(readLodFile("/nonexistent/x.lod"), ModelError);
 }
+
+TEST(LodFile, mutatedBytesParseOrThrowModelError) {
+    const std::vector<unsigned char> good = fileBytes(simplifyLevels(makeUvSphere(1.0f, 8, 6), kRatios));
+    std::uint32_t state = 12345;
+    const auto next = [&state] { return state = state * 1664525u + 1013904223u; };
+    for (int round = 0; round < 2000; ++round) {
+        std::vector<unsigned char> bytes = good;
+        for (int k = 0; k < 1 + round % 4; ++k) bytes[next() % bytes.size()] = static_cast<unsigned char>(next() >> 24);
+        if (round % 7 == 0) bytes.resize(next() % bytes.size());
+        try {
+            const std::vector<LodLevel> levels = parseLodFile(bytes, "x.lod");
+            for (const LodLevel& l : levels)
+                for (std::uint32_t i : l.geometry.indices) ASSERT_LT(i, l.geometry.positions.size());
+        } catch (const ModelError&) {
+        }
+    }
+}
