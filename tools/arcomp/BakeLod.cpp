@@ -44,6 +44,16 @@ Geometry mergedModel(const ParsedModel& m) {
     return out;
 }
 
+std::string jsonString(const std::string& text) {
+    std::string out = "\"";
+    for (const char c : text) {
+        if (c == '"' || c == '\\') out += '\\';
+        if (static_cast<unsigned char>(c) < 0x20) continue;  // control characters have no place in a path here
+        out += c;
+    }
+    return out + "\"";
+}
+
 std::vector<float> parseRatios(const std::string& text) {
     std::vector<float> ratios;
     std::stringstream in(text);
@@ -73,7 +83,7 @@ int bakeLod(const std::string& model, const std::string& ratioText, const std::s
     const std::vector<LodLevel> levels = simplifyLevels(merged, ratios);
     const double original = static_cast<double>(merged.triangleCount());
     std::ostringstream json;
-    json << "{\"bake\":\"lod\",\"model\":\"" << model << "\",\"triangles\":" << merged.triangleCount()
+    json << "{\"bake\":\"lod\",\"model\":" << jsonString(model) << ",\"triangles\":" << merged.triangleCount()
          << ",\"extent\":" << 2.0f * merged.bound.radius << ",\"levels\":[";
     bool allWithin = true;
     std::printf("level  ratio  requested  achieved  deviation   error\n");
@@ -91,7 +101,7 @@ int bakeLod(const std::string& model, const std::string& ratioText, const std::s
     json << "],\"all_within_10_percent\":" << (allWithin ? "true" : "false");
     if (!outFile.empty()) {
         writeLodFile(outFile, levels);
-        json << ",\"out\":\"" << outFile << "\"";
+        json << ",\"out\":" << jsonString(outFile);
     }
     json << "}";
     std::cout << json.str() << std::endl;
