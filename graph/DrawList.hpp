@@ -17,6 +17,9 @@ struct DrawItem {
     float screenArea;      // projected pixels of the bounding sphere
     std::uint8_t level;    // LOD level the part came from, 0 = finest
     Shading shading;
+    // Opacity during an LOD cross-fade (both levels are listed, weights
+    // summing to 1); 1 otherwise.
+    float fade = 1.0f;
 };
 
 struct DrawList {

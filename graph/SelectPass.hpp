@@ -10,10 +10,21 @@
 #include "graph/DrawList.hpp"
 #include "graph/View.hpp"
 
+#include <glm/glm.hpp>
+
 namespace arcomp {
+
+class LodTable;
 
 struct SelectSettings {
     Shading shading = Shading::Phong;
+    // LOD nodes' settings and per-node state (graph/Lod.hpp); the pass
+    // updates the state. Without it every LOD node shows its finest level.
+    LodTable* lod = nullptr;
+    // World-space gaze direction for the gaze policies; zero: the view's forward.
+    glm::vec3 gaze{0.0f};
+    // Frame time, for angular speeds and cross-fades.
+    double timeSeconds = 0.0;
 };
 
 void select(const Scene& scene, const View& view, const SelectSettings& settings, DrawList& out);

@@ -1,0 +1,143 @@
+#include "graph/LodFile.hpp"
+#include "graph/ModelLoader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+using namespace arcomp;
+
+namespace {
+
+const float kRatios[3] = {1.0f, 0.25f, 0.05f};
+
+std::vector<unsigned char> fileBytes(const std::vector<LodLevel>& levels) {
+    const auto path = std::filesystem::temp_directory_path() / ("lod_test_" + std::to_string(::getpid()) + ".lod");
+    writeLodFile(path, levels);
+    std::ifstream in(path, std::ios::binary);
+    std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::filesystem::remove(path);
+    return bytes;
+}
+
+std::string errorOf(std::span<const unsigned char> bytes) {
+    try {
+        parseLodFile(bytes, "x.lod");
+    } catch (const ModelError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+} // namespace
+
+TEST(LodLevels, sphereLevelsReachRequestedCountsAndKeepAttributes) {
+    const Geometry sphere = makeUvSphere(1.0f, 64, 32);
+    const std::vector<LodLevel> levels = simplifyLevels(sphere, kRatios);
+    ASSERT_EQ(levels.size(), 3u);
+    EXPECT_EQ(levels[0].geometry.triangleCount(), sphere.triangleCount());
+    for (int i = 1; i < 3; ++i) {
+        const double want = sphere.triangleCount() * kRatios[i];
+        EXPECT_NEAR(levels[i].geometry.triangleCount(), want, 0.1 * want) << "level " << i;
+        EXPECT_GT(levels[i].error, 0.0f);
+        const Geometry& g = levels[i].geometry;
+        ASSERT_EQ(g.texcoords.size(), g.positions.size());
+        for (std::size_t v = 0; v < g.positions.size(); ++v) {
+            // Kept vertices are original ones: on the sphere, normal = position.
+            EXPECT_NEAR(glm::length(g.positions[v]), 1.0f, 1e-5f);
+            EXPECT_NEAR(glm::dot(g.normals[v], g.positions[v]), 1.0f, 1e-4f);
+        }
+    }
+    EXPECT_LT(levels[1].error, levels[2].error);
+}
+
+TEST(LodLevels, bunnyLevelsWithinTenPercent) {
+    const std::filesystem::path bunny = std::filesystem::path(ARCOMP_SHARED_DATA) / "meshes/bunny.obj";
+    if (!std::filesystem::exists(bunny)) GTEST_SKIP() << "no shared data";
+    const ParsedModel m = parseObj(bunny);
+    ASSERT_EQ(m.geometries.size(), 1u);
+    const std::vector<LodLevel> levels = simplifyLevels(m.geometries[0], kRatios);
+    for (int i = 0; i < 3; ++i) {
+        const double want = std::round(m.geometries[0].triangleCount() * kRatios[i]);
+        EXPECT_NEAR(levels[i].geometry.triangleCount(), want, 0.1 * want) << "level " << i;
+    }
+}
+
+TEST(LodLevels, generatedLodNodeHasOneMeshPerLevel) {
+    Scene scene;
+    LodTable lods;
+    const MeshPart part{scene.addGeometry(makeUvSphere(2.0f, 32, 16)), scene.addMaterial({})};
+    LodNode settings;
+    settings.setThresholds({10.0f, 40.0f});
+    const NodeId lod = addGeneratedLod(scene, lods, scene.root(), part, kRatios, settings);
+    scene.update();
+    const std::vector<NodeId> children = scene.children(lod);
+    ASSERT_EQ(children.size(), 3u);
+    EXPECT_EQ(scene.meshPart(children[0]).geometry, part.geometry);
+    EXPECT_GT(scene.geometry(scene.meshPart(children[1]).geometry).triangleCount(),
+              scene.geometry(scene.meshPart(children[2]).geometry).triangleCount());
+    EXPECT_NEAR(lods.node(scene.payload(lod)).meanRadius, 2.0f, 1e-4f);
+}
+
+TEST(LodFile, roundTripKeepsLevels) {
+    const std::vector<LodLevel> levels = simplifyLevels(makeUvSphere(1.0f, 16, 8), kRatios);
+    const std::vector<LodLevel> back = parseLodFile(fileBytes(levels), "x.lod");
+    ASSERT_EQ(back.size(), levels.size());
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+        EXPECT_EQ(back[i].geometry.indices, levels[i].geometry.indices);
+        EXPECT_EQ(back[i].geometry.positions, levels[i].geometry.positions);
+        EXPECT_EQ(back[i].geometry.texcoords, levels[i].geometry.texcoords);
+        EXPECT_FLOAT_EQ(back[i].ratio, levels[i].ratio);
+        EXPECT_FLOAT_EQ(back[i].error, levels[i].error);
+    }
+}
+
+TEST(LodFile, readerRejectsDamagedFilesWithPlace) {
+    const std::vector<unsigned char> good = fileBytes(simplifyLevels(makeUvSphere(1.0f, 16, 8), kRatios));
+    EXPECT_EQ(errorOf(std::span(good).first(5)), "x.lod: byte 0: file ends inside the header");
+    std::vector<unsigned char> bad = good;
+    bad[0] = 'X';
+    EXPECT_EQ(errorOf(bad), "x.lod: byte 0: not an arcomp LOD file (expected \"ARCOMPLD\")");
+    bad = good;
+    bad[8] = 2;
+    EXPECT_EQ(errorOf(bad), "x.lod: byte 12: version 2, expected 1");
+    bad = good;
+    bad[12] = 0;
+    EXPECT_EQ(errorOf(bad), "x.lod: byte 16: level count 0, expected 1 to 8");
+    EXPECT_NE(errorOf(std::span(good).first(good.size() - 1)).find("file ends inside indices"), std::string::npos)
+        << errorOf(std::span(good).first(good.size() - 1));
+    bad = good;
+    bad.push_back(0);
+    EXPECT_NE(errorOf(bad).find("1 bytes after the last level"), std::string::npos);
+    // The last index of the last level, pointed past the vertices.
+    bad = good;
+    bad[bad.size() - 1] = 0x7f;
+    EXPECT_NE(errorOf(bad).find("level 2: index"), std::string::npos) << errorOf(bad);
+    // A vertex count far beyond the file is caught before anything is allocated.
+    bad = good;
+    bad[16 + 8 + 3] = 0xff;  // level 0's vertex count, high byte
+    EXPECT_NE(errorOf(bad).find("file ends inside positions"), std::string::npos);
+}
+
+TEST(LodFile, missingFileIsModelError) {
+    EXPECT_THROW(readLodFile("/nonexistent/x.lod"), ModelError);
+}
+
+TEST(LodFile, mutatedBytesParseOrThrowModelError) {
+    const std::vector<unsigned char> good = fileBytes(simplifyLevels(makeUvSphere(1.0f, 8, 6), kRatios));
+    std::uint32_t state = 12345;
+    const auto next = [&state] { return state = state * 1664525u + 1013904223u; };
+    for (int round = 0; round < 2000; ++round) {
+        std::vector<unsigned char> bytes = good;
+        for (int k = 0; k < 1 + round % 4; ++k) bytes[next() % bytes.size()] = static_cast<unsigned char>(next() >> 24);
+        if (round % 7 == 0) bytes.resize(next() % bytes.size());
+        try {
+            const std::vector<LodLevel> levels = parseLodFile(bytes, "x.lod");
+            for (const LodLevel& l : levels)
+                for (std::uint32_t i : l.geometry.indices) ASSERT_LT(i, l.geometry.positions.size());
+        } catch (const ModelError&) {
+        }
+    }
+}

@@ -1,0 +1,137 @@
+// The select pass with LOD nodes: the level is chosen while culling, and
+// only the chosen level's subtree is visited.
+#include "graph/Lod.hpp"
+#include "graph/SelectPass.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+using namespace arcomp;
+
+namespace {
+
+struct LodRow {
+    Scene scene;
+    LodTable lods;
+    std::vector<NodeId> lodNodes;
+    std::vector<glm::vec3> positions;
+};
+
+// Objects at z = -20 from x = -15 to 15, each an LOD node over three
+// sphere meshes; `node` gives each its policy and thresholds.
+void buildRow(LodRow& row, const LodNode& node) {
+    const std::uint32_t material = row.scene.addMaterial({});
+    const std::uint32_t geometries[3] = {row.scene.addGeometry(makeUvSphere(1.0f, 24, 12)),
+                                         row.scene.addGeometry(makeUvSphere(1.0f, 12, 6)),
+                                         row.scene.addGeometry(makeUvSphere(1.0f, 6, 4))};
+    for (int k = 0; k <= 10; ++k) {
+        const glm::vec3 at{-15.0f + 3.0f * static_cast<float>(k), 0.0f, -20.0f};
+        const NodeId t = row.scene.addTransform(row.scene.root(), glm::translate(glm::mat4(1.0f), at));
+        const NodeId lod = row.scene.addNode(t, NodeKind::Lod, row.lods.add(node));
+        for (std::uint32_t g : geometries) row.scene.addMesh(lod, {g, material});
+        row.lodNodes.push_back(lod);
+        row.positions.push_back(at);
+    }
+    row.scene.update();
+}
+
+const View camera = View::lookAt({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60.0f, {1280, 720});
+
+std::uint8_t levelFromK1(float k1) { return k1 >= 0.5f ? 0 : (k1 >= 0.1f ? 1 : 2); }
+
+} // namespace
+
+TEST(LodSelect, levelsFallOffAwayFromGazeAsK1Says) {
+    LodNode node;
+    node.policy = LodPolicy::GazeAcuity;
+    node.setThresholds({0.5f, 0.1f});
+    LodRow row;
+    buildRow(row, node);
+    const glm::vec3 gaze = glm::normalize(row.positions.front());  // at the leftmost object
+
+    DrawList list;
+    select(row.scene, camera, {.lod = &row.lods, .gaze = gaze, .timeSeconds = 0.0}, list);
+
+    ASSERT_EQ(list.items.size(), row.positions.size());  // one level per object, all in view
+    std::vector<std::uint8_t> levels;
+    for (std::size_t k = 0; k < row.positions.size(); ++k) {
+        const DrawItem& item = list.items[k];
+        const float k1 = eccentricityAcuity(angleDegrees(gaze, row.positions[k]), GazeAcuityParams{});
+        EXPECT_EQ(item.level, levelFromK1(k1)) << "object " << k;
+        EXPECT_EQ(row.scene.parent(item.node), row.lodNodes[k]);
+        levels.push_back(item.level);
+    }
+    EXPECT_TRUE(std::is_sorted(levels.begin(), levels.end()));  // coarser to the right
+    EXPECT_EQ(levels.front(), 0);
+    EXPECT_EQ(levels.back(), 2);
+}
+
+TEST(LodSelect, onlyChosenLevelIsVisited) {
+    LodNode node;
+    node.setThresholds({50.0f, 200.0f});
+    LodRow row;
+    buildRow(row, node);
+    DrawList list;
+    select(row.scene, camera, {.lod = &row.lods}, list);
+    // root + per object: transform, LOD node, one of three meshes.
+    EXPECT_EQ(list.nodesVisited, 1 + 3 * row.positions.size());
+    for (const DrawItem& item : list.items) EXPECT_EQ(item.level, 0);
+}
+
+TEST(LodSelect, fastMovingObjectDropsToCoarseLevel) {
+    LodNode node;
+    node.policy = LodPolicy::GazeAcuity;
+    node.setThresholds({0.5f, 0.1f});
+    node.hysteresis = 0.0f;
+    LodRow row;
+    buildRow(row, node);
+    const glm::vec3 gaze = glm::normalize(row.positions[5]);  // the middle object, at x = 0
+    DrawList list;
+    select(row.scene, camera, {.lod = &row.lods, .gaze = gaze, .timeSeconds = 0.0}, list);
+    EXPECT_EQ(list.items[5].level, 0);
+    // Move the gazed-at object 2 units sideways within 1/60 s: far beyond c2.
+    const NodeId transform = row.scene.parent(row.lodNodes[5]);
+    row.scene.setLocal(transform, glm::translate(glm::mat4(1.0f), row.positions[5] + glm::vec3(2, 0, 0)));
+    row.scene.update();
+    select(row.scene, camera, {.lod = &row.lods, .gaze = gaze, .timeSeconds = 1.0 / 60.0}, list);
+    const auto moved = std::find_if(list.items.begin(), list.items.end(), [&](const DrawItem& i) {
+        return row.scene.parent(i.node) == row.lodNodes[5];
+    });
+    ASSERT_NE(moved, list.items.end());
+    EXPECT_EQ(moved->level, 2);
+}
+
+TEST(LodSelect, crossFadeListsBothLevelsWithWeightsSummingToOne) {
+    LodNode node;
+    node.setThresholds({30.0f, 200.0f});
+    node.hysteresis = 0.0f;
+    node.fadeSeconds = 0.5f;
+    LodRow row;
+    buildRow(row, node);
+    DrawList list;
+    select(row.scene, camera, {.lod = &row.lods, .timeSeconds = 0.0}, list);
+    const View back = View::lookAt({0, 0, 10}, {0, 0, -1}, {0, 1, 0}, 60.0f, {1280, 720});
+    select(row.scene, back, {.lod = &row.lods, .timeSeconds = 0.1}, list);
+    select(row.scene, back, {.lod = &row.lods, .timeSeconds = 0.35}, list);
+    // Every object went from under 30 away to at least 30: both levels listed at half weight.
+    ASSERT_EQ(list.items.size(), 2 * row.positions.size());
+    for (std::size_t k = 0; k < list.items.size(); k += 2) {
+        EXPECT_EQ(list.items[k].level, 1);
+        EXPECT_EQ(list.items[k + 1].level, 0);
+        EXPECT_NEAR(list.items[k].fade, 0.5f, 1e-5f);
+        EXPECT_NEAR(list.items[k].fade + list.items[k + 1].fade, 1.0f, 1e-6f);
+    }
+}
+
+TEST(LodSelect, withoutLodTableFinestLevelIsShown) {
+    LodNode node;
+    node.setThresholds({1.0f, 2.0f});
+    LodRow row;
+    buildRow(row, node);
+    DrawList list;
+    select(row.scene, camera, {}, list);
+    ASSERT_EQ(list.items.size(), row.positions.size());
+    for (const DrawItem& item : list.items) EXPECT_EQ(item.level, 0);
+}

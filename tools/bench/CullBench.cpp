@@ -1,0 +1,162 @@
+// arcomp bench cull: the select traversal (cull + LOD + draw-list build) on
+// the scene of CullScene.hpp, timed against OpenSceneGraph's CullVisitor on
+// the same scene in the same run where OpenSceneGraph is available.
+
+#include "graph/Lod.hpp"
+#include "graph/SelectPass.hpp"
+#include "tools/arcomp/Command.hpp"
+#include "tools/bench/CullScene.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace arcomp {
+
+namespace {
+
+constexpr int kWarmupFrames = 20;
+
+struct ArcompCullScene {
+    Scene scene;
+    LodTable lods;
+    std::uint32_t levelGeometry[3] = {};
+};
+
+void addGroup(ArcompCullScene& out, const CullScene& s, std::uint32_t group, NodeId parent, const MeshPart* parts) {
+    const CullGroup& g = s.groups[group];
+    for (std::uint32_t k : g.objects) {
+        const NodeId t = out.scene.addTransform(parent, glm::translate(glm::mat4(1.0f), s.positions[k]));
+        LodNode lod;
+        lod.setThresholds({kCullRanges[0], kCullRanges[1]});
+        lod.hysteresis = 0.0f;  // OpenSceneGraph's ranges have none; counts must match
+        const NodeId l = out.scene.addNode(t, NodeKind::Lod, out.lods.add(lod));
+        for (int level = 0; level < 3; ++level) out.scene.addMesh(l, parts[level]);
+    }
+    for (std::uint32_t child : g.groups) addGroup(out, s, child, out.scene.addGroup(parent), parts);
+}
+
+void build(ArcompCullScene& out, const CullScene& s) {
+    const std::uint32_t material = out.scene.addMaterial({});
+    MeshPart parts[3];
+    for (int level = 0; level < 3; ++level) {
+        out.levelGeometry[level] =
+            out.scene.addGeometry(makeUvSphere(1.0f, kCullSphereSlices[level], kCullSphereStacks[level]));
+        parts[level] = {out.levelGeometry[level], material};
+    }
+    addGroup(out, s, 0, out.scene.root(), parts);
+    out.scene.update();
+}
+
+View cameraView(const CullScene& s, int frame, int frames) {
+    const CullCamera c = cullCamera(s, frame, frames);
+    return View::lookAt(c.eye, c.target, {0, 1, 0}, kCullFovyDegrees, {kCullWidth, kCullHeight}, kCullNear, kCullFar);
+}
+
+CullRun runArcompCull(ArcompCullScene& a, const CullScene& s, int frames) {
+    CullRun run;
+    DrawList list;
+    for (int f = -kWarmupFrames; f < frames; ++f) {
+        const int frame = std::max(f, 0);
+        const View view = cameraView(s, frame, frames);
+        const SelectSettings settings{.lod = &a.lods, .timeSeconds = frame / 60.0};
+        const auto start = std::chrono::steady_clock::now();
+        select(a.scene, view, settings, list);
+        const auto stop = std::chrono::steady_clock::now();
+        if (f < 0) continue;
+        run.msPerFrame.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
+        CullFrameCounts counts;
+        counts.visible = static_cast<std::uint32_t>(list.items.size());
+        for (const DrawItem& item : list.items) ++counts.levels[std::min<int>(item.level, 2)];
+        run.counts.push_back(counts);
+    }
+    return run;
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+struct Summary {
+    double medianMs = 0, minMs = 0, maxMs = 0;
+    double visibleMedian = 0;
+    std::uint64_t levels[3] = {0, 0, 0};
+};
+
+Summary summarize(const CullRun& run) {
+    Summary s;
+    s.medianMs = median(run.msPerFrame);
+    s.minMs = *std::min_element(run.msPerFrame.begin(), run.msPerFrame.end());
+    s.maxMs = *std::max_element(run.msPerFrame.begin(), run.msPerFrame.end());
+    std::vector<double> visible;
+    for (const CullFrameCounts& c : run.counts) {
+        visible.push_back(c.visible);
+        for (int l = 0; l < 3; ++l) s.levels[l] += c.levels[l];
+    }
+    s.visibleMedian = median(visible);
+    return s;
+}
+
+int runCullBench(std::uint32_t objects, const std::string& layoutName, int frames) {
+    if (frames < 1) throw InputError("--frames must be at least 1");
+    if (objects < 1) throw InputError("--objects must be at least 1");
+    if (layoutName != "flat" && layoutName != "tree") throw InputError("--layout must be flat or tree, not " + layoutName);
+    const CullLayout layout = layoutName == "flat" ? CullLayout::Flat : CullLayout::Tree;
+    const CullScene description = makeCullScene(objects, layout);
+
+    std::cerr << "cull: building " << objects << " objects (" << layoutName << ")\n";
+    auto scene = std::make_unique<ArcompCullScene>();
+    build(*scene, description);
+    std::cerr << "cull: " << scene->scene.nodeCount() << " nodes; timing arcomp\n";
+    const CullRun ours = runArcompCull(*scene, description, frames);
+    const Summary s = summarize(ours);
+
+    std::ostringstream json;
+    json << "{\"bench\":\"cull\",\"objects\":" << objects << ",\"layout\":\"" << layoutName << "\",\"frames\":" << frames
+         << ",\"warmup_frames\":" << kWarmupFrames << ",\"ms_per_frame_median\":" << s.medianMs
+         << ",\"ms_per_frame_min\":" << s.minMs << ",\"ms_per_frame_max\":" << s.maxMs
+         << ",\"ns_per_object_median\":" << s.medianMs * 1e6 / objects << ",\"visible_median\":" << s.visibleMedian
+         << ",\"lod_level_counts\":[" << s.levels[0] << "," << s.levels[1] << "," << s.levels[2] << "]"
+         << ",\"nodes\":" << scene->scene.nodeCount();
+#ifdef ARCOMP_HAVE_OSG
+    scene.reset();  // give OpenSceneGraph the memory
+    std::cerr << "cull: timing OpenSceneGraph CullVisitor\n";
+    const CullRun osg = runOsgCull(description, kWarmupFrames, frames);
+    const Summary o = summarize(osg);
+    std::size_t mismatched = 0;
+    for (std::size_t f = 0; f < ours.counts.size(); ++f) mismatched += ours.counts[f] == osg.counts[f] ? 0 : 1;
+    json << ",\"osg_ms_per_frame_median\":" << o.medianMs << ",\"osg_ms_per_frame_min\":" << o.minMs
+         << ",\"osg_ms_per_frame_max\":" << o.maxMs << ",\"osg_visible_median\":" << o.visibleMedian
+         << ",\"osg_lod_level_counts\":[" << o.levels[0] << "," << o.levels[1] << "," << o.levels[2] << "]"
+         << ",\"frames_with_count_mismatch\":" << mismatched
+         << ",\"counts_match_osg\":" << (mismatched == 0 ? "true" : "false")
+         << ",\"speedup_vs_osg\":" << (s.medianMs > 0 ? o.medianMs / s.medianMs : 0.0);
+#else
+    json << ",\"osg\":\"not built (OpenSceneGraph not found)\"";
+#endif
+    json << "}";
+    std::cout << json.str() << std::endl;
+    return kExitOk;
+}
+
+const bool registered = registerBench({"cull", "Select traversal (cull + LOD + draw list) against OpenSceneGraph",
+    [](CLI::App& app) {
+        auto objects = std::make_shared<std::uint32_t>(100000);
+        auto layout = std::make_shared<std::string>("flat");
+        auto frames = std::make_shared<int>(200);
+        app.add_option("--objects", *objects, "Number of objects")->capture_default_str();
+        app.add_option("--layout", *layout, "flat or tree")->capture_default_str();
+        app.add_option("--frames", *frames, "Measured frames (after 20 warm-up frames)")->capture_default_str();
+        return [=] { return runCullBench(*objects, *layout, *frames); };
+    }});
+
+} // namespace
+
+} // namespace arcomp
