@@ -1,5 +1,7 @@
 #include "video/YuvConversion.hpp"
 
+#include <opencv2/core/utility.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -81,15 +83,17 @@ YuvEncoding defaultYuvEncoding(PixelFormat format, int height) {
 cv::Mat yuyvToBgr(const std::uint8_t* data, int width, int height, int stride, YuvEncoding encoding) {
     const YuvToRgb k = yuvToRgb(encoding);
     cv::Mat out(height, width, CV_8UC3);
-    for (int row = 0; row < height; ++row) {
-        const std::uint8_t* in = data + static_cast<std::ptrdiff_t>(row) * stride;
-        std::uint8_t* o = out.ptr<std::uint8_t>(row);
-        for (int x = 0; x + 1 < width; x += 2, in += 4, o += 6) {
-            const int u = in[1] - 128, v = in[3] - 128;
-            putBgr(o, k, in[0], u, v);
-            putBgr(o + 3, k, in[2], u, v);
+    cv::parallel_for_(cv::Range(0, height), [&](const cv::Range& rows) {
+        for (int row = rows.start; row < rows.end; ++row) {
+            const std::uint8_t* in = data + static_cast<std::ptrdiff_t>(row) * stride;
+            std::uint8_t* o = out.ptr<std::uint8_t>(row);
+            for (int x = 0; x + 1 < width; x += 2, in += 4, o += 6) {
+                const int u = in[1] - 128, v = in[3] - 128;
+                putBgr(o, k, in[0], u, v);
+                putBgr(o + 3, k, in[2], u, v);
+            }
         }
-    }
+    });
     return out;
 }
 
@@ -97,15 +101,17 @@ cv::Mat nv12ToBgr(const std::uint8_t* y, int yStride, const std::uint8_t* uv, in
                   YuvEncoding encoding) {
     const YuvToRgb k = yuvToRgb(encoding);
     cv::Mat out(height, width, CV_8UC3);
-    for (int row = 0; row < height; ++row) {
-        const std::uint8_t* yr = y + static_cast<std::ptrdiff_t>(row) * yStride;
-        const std::uint8_t* cr = uv + static_cast<std::ptrdiff_t>(row / 2) * uvStride;
-        std::uint8_t* o = out.ptr<std::uint8_t>(row);
-        for (int x = 0; x < width; ++x, o += 3) {
-            const int u = cr[x & ~1] - 128, v = cr[(x & ~1) + 1] - 128;
-            putBgr(o, k, yr[x], u, v);
+    cv::parallel_for_(cv::Range(0, height), [&](const cv::Range& rows) {
+        for (int row = rows.start; row < rows.end; ++row) {
+            const std::uint8_t* yr = y + static_cast<std::ptrdiff_t>(row) * yStride;
+            const std::uint8_t* cr = uv + static_cast<std::ptrdiff_t>(row / 2) * uvStride;
+            std::uint8_t* o = out.ptr<std::uint8_t>(row);
+            for (int x = 0; x < width; ++x, o += 3) {
+                const int u = cr[x & ~1] - 128, v = cr[(x & ~1) + 1] - 128;
+                putBgr(o, k, yr[x], u, v);
+            }
         }
-    }
+    });
     return out;
 }
 
