@@ -17,6 +17,10 @@ struct DrawItem {
     float screenArea;      // projected pixels of the bounding sphere
     std::uint8_t level;    // LOD level the part came from, 0 = finest
     Shading shading;
+    // A part of the geometry's index list; indexCount 0 draws all of it.
+    // Silhouette nodes use it to pick their region's list.
+    std::uint32_t firstIndex = 0;
+    std::uint32_t indexCount = 0;
 };
 
 struct DrawList {

@@ -34,6 +34,15 @@ struct SelectPass {
             out.items.push_back({node, scene.meshPart(node), glm::length(bound.center - view.eye),
                                  view.projectedArea(bound), 0, settings.shading});
             break;
+        case NodeKind::SilhouetteRegion:
+            if (settings.silhouettes && scene.payload(node) < settings.silhouettes->nodes.size()) {
+                const SilhouetteNode& s = settings.silhouettes->nodes[scene.payload(node)];
+                const glm::vec3 localEye = glm::vec3(glm::inverse(scene.world(node)) * glm::vec4(view.eye, 1.0f));
+                const SilhouetteRange r = s.rangeFor(localEye);
+                out.items.push_back({node, s.part, glm::length(bound.center - view.eye), view.projectedArea(bound), 0,
+                                     settings.shading, r.firstIndex, r.indexCount});
+            }
+            break;
         default:
             break;
         }

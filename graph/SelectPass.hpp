@@ -8,12 +8,14 @@
 //   select(scene, view, {.shading = Shading::Phong}, list);
 
 #include "graph/DrawList.hpp"
+#include "graph/SilhouetteNodes.hpp"
 #include "graph/View.hpp"
 
 namespace arcomp {
 
 struct SelectSettings {
     Shading shading = Shading::Phong;
+    const SilhouetteNodes* silhouettes = nullptr;  // required when the scene has SilhouetteRegion nodes
 };
 
 void select(const Scene& scene, const View& view, const SelectSettings& settings, DrawList& out);

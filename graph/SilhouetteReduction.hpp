@@ -60,8 +60,8 @@ struct RegionReduction {
 };
 
 struct ReductionSettings {
-    float targetError = 1.0f;  // meshoptimizer's relative error; the checks, not this, keep the silhouette
-    int maxTries = 16;
+    float targetError = 0.05f;  // meshoptimizer's relative error; the checks, not this, keep the silhouette
+    int maxTries = 24;
     int triesPerRing = 4;
 };
 
