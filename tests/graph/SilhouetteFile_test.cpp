@@ -1,0 +1,68 @@
+#include "graph/SilhouetteFile.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+using namespace arcomp;
+
+namespace {
+
+SilhouetteMesh smallMesh() {
+    const Geometry sphere = makeUvSphere(1.0f, 12, 6);
+    const glm::vec3 tetra[] = {{3, 0, 0}, {4, 0, 0}, {3, 1, 0}, {3, 0, 1}};
+    return bakeSilhouetteMesh(sphere.positions, sphere.indices,
+                              {ViewRegion::fromBox({{-0.5f, -0.5f, 3}, {0.5f, 0.5f, 4}}),
+                               ViewRegion::fromVertices(tetra)});
+}
+
+void putU32(std::vector<std::byte>& b, std::size_t at, std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) b[at + i] = static_cast<std::byte>((v >> (8 * i)) & 0xff);
+}
+
+} // namespace
+
+TEST(SilhouetteFile, roundTripKeepsBufferRangesAndRegions) {
+    const SilhouetteMesh m = smallMesh();
+    const SilhouetteMesh back = decodeSilhouetteMesh(encodeSilhouetteMesh(m));
+    EXPECT_EQ(back.positions, m.positions);
+    EXPECT_EQ(back.indices, m.indices);
+    EXPECT_EQ(back.full.indexCount, m.full.indexCount);
+    ASSERT_EQ(back.ranges.size(), 2u);
+    EXPECT_EQ(back.ranges[1].firstIndex, m.ranges[1].firstIndex);
+    EXPECT_EQ(back.regionAt({0, 0, 3.5f}), 0);
+    EXPECT_EQ(back.regionAt({3.2f, 0.2f, 0.2f}), 1);
+}
+
+TEST(SilhouetteFile, everyTruncationIsRefused) {
+    const std::vector<std::byte> bytes = encodeSilhouetteMesh(smallMesh());
+    for (std::size_t n = 0; n < bytes.size(); n += 7)
+        EXPECT_THROW(decodeSilhouetteMesh(std::span(bytes).first(n)), ModelError) << n << " bytes";
+}
+
+TEST(SilhouetteFile, badHeaderIndicesAndRangesAreRefused) {
+    const std::vector<std::byte> good = encodeSilhouetteMesh(smallMesh());
+    auto refused = [](std::vector<std::byte> b) {
+        try {
+            decodeSilhouetteMesh(b, "test.sil");
+        } catch (const ModelError& e) {
+            return std::string(e.what()).find("test.sil: byte ") == 0;
+        }
+        return false;
+    };
+    auto b = good; b[0] = std::byte{'X'};
+    EXPECT_TRUE(refused(b));                       // magic
+    b = good; putU32(b, 8, 2);
+    EXPECT_TRUE(refused(b));                       // version
+    b = good; putU32(b, 12, 0xffffffffu);
+    EXPECT_TRUE(refused(b));                       // vertex count beyond the file, refused before allocating
+    b = good; putU32(b, 36 + 12 * smallMesh().positions.size(), 1u << 30);
+    EXPECT_TRUE(refused(b));                       // first index out of range
+    b = good; putU32(b, 32, 0xfffffff0u);
+    EXPECT_TRUE(refused(b));                       // full range past the index list
+    b = good; b.push_back(std::byte{0});
+    EXPECT_TRUE(refused(b));                       // trailing bytes
+    b = good; putU32(b, 36, 0x7fc00000u);
+    EXPECT_TRUE(refused(b));                       // NaN position
+    EXPECT_FALSE(refused(good));
+}
