@@ -1,6 +1,11 @@
 #include "graph/SilhouetteMesh.hpp"
 
+#include <algorithm>
+#include <atomic>
+#include <exception>
 #include <map>
+#include <mutex>
+#include <thread>
 #include <stdexcept>
 #include <tuple>
 
@@ -53,14 +58,41 @@ SilhouetteMesh bakeSilhouetteMesh(std::span<const glm::vec3> positions, std::spa
     const MeshHoles holes = findHoles(m.positions, fullIndices);
     m.regions = std::move(regions);
     if (report) report->clear();
-    for (std::size_t i = 0; i < m.regions.size(); ++i) {
-        RegionReduction r = reduceForRegion(m.positions, fullIndices, m.regions[i], holes);
+
+    // Regions are independent: one worker per core takes the next region.
+    // Each result lands in its own slot, so the output does not depend on
+    // the schedule.
+    std::vector<RegionReduction> results(m.regions.size());
+    std::atomic<std::size_t> next{0};
+    std::size_t done = 0;
+    std::mutex progressLock;
+    std::exception_ptr failure;
+    auto work = [&] {
+        for (std::size_t i; (i = next++) < results.size();) {
+            try {
+                results[i] = reduceForRegion(m.positions, fullIndices, m.regions[i], holes);
+            } catch (...) {
+                const std::lock_guard lock(progressLock);
+                if (!failure) failure = std::current_exception();
+            }
+            const std::lock_guard lock(progressLock);
+            ++done;
+            if (progress) progress(done, results.size());
+        }
+    };
+    const std::size_t workers = std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), results.size());
+    std::vector<std::thread> threads;
+    for (std::size_t w = 1; w < workers; ++w) threads.emplace_back(work);
+    work();
+    for (std::thread& t : threads) t.join();
+    if (failure) std::rethrow_exception(failure);
+
+    for (const RegionReduction& r : results) {
         m.ranges.push_back({static_cast<std::uint32_t>(m.indices.size()), static_cast<std::uint32_t>(r.indices.size())});
         m.indices.insert(m.indices.end(), r.indices.begin(), r.indices.end());
         if (report)
             report->push_back({r.front, r.back, r.silhouette, r.backKept, r.frontAfter, r.frontLocked, r.rejectedTries,
                                r.trianglesBefore(), r.trianglesAfter()});
-        if (progress) progress(i + 1, m.regions.size());
     }
     return m;
 }

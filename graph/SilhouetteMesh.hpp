@@ -49,7 +49,8 @@ struct SilhouetteMesh {
 using BakeProgress = std::function<void(std::size_t regionsDone, std::size_t regionCount)>;
 
 // Welds equal positions first (so that borders and holes are found on the
-// surface, not on split vertices), then reduces the mesh for every region.
+// surface, not on split vertices), then reduces the mesh for every region,
+// regions in parallel. `progress` is called under a lock, from any thread.
 SilhouetteMesh bakeSilhouetteMesh(std::span<const glm::vec3> positions, std::span<const std::uint32_t> indices,
                                   std::vector<ViewRegion> regions, std::vector<SilhouetteRegionReport>* report = nullptr,
                                   const BakeProgress& progress = {});
