@@ -26,6 +26,9 @@ Geometry SilhouetteMesh::geometry() const {
     Geometry g;
     g.positions = positions;
     g.indices = indices;
+    // Normals from the full mesh alone: the region lists repeat its
+    // triangles and would weigh them several times.
+    g.normals = computeVertexNormals(positions, {indices.begin(), indices.begin() + full.indexCount});
     g.finalize();
     return g;
 }

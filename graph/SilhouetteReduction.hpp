@@ -8,8 +8,8 @@
 //   // r.indices index `positions`, the same buffer the full mesh uses
 //
 // What is guaranteed, and checked on every result (not assumed from the
-// simplifier): for every eye e in the region, with the whole mesh in front
-// of e, the set of image points covered by the reduced mesh equals the set
+// simplifier): for every eye e in the region, outside the mesh's solid and
+// with the whole mesh in front of e (a pinhole camera at e), the set of image points covered by the reduced mesh equals the set
 // covered by the full mesh, except possibly on the projected curves of FM's
 // border (which lie on SM or on the outline). Why:
 // - Every simplified FM triangle is strictly front-facing from every region
