@@ -16,15 +16,25 @@ std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b) {
 }
 
 // Sum of the triangles' edges as a chain: +1 for an edge running low to
-// high index, -1 for the reverse; interior edges cancel.
-std::unordered_map<std::uint64_t, int> edgeChain(std::span<const std::uint32_t> indices) {
-    std::unordered_map<std::uint64_t, int> chain;
-    chain.reserve(indices.size());
+// high index, -1 for the reverse; interior edges cancel. Sorted (edge,
+// count) pairs with the zero counts left out.
+std::vector<std::pair<std::uint64_t, int>> edgeChain(std::span<const std::uint32_t> indices) {
+    std::vector<std::pair<std::uint64_t, int>> edges;
+    edges.reserve(indices.size());
     for (std::size_t t = 0; t + 2 < indices.size(); t += 3)
         for (int k = 0; k < 3; ++k) {
             const std::uint32_t a = indices[t + k], b = indices[t + (k + 1) % 3];
-            chain[edgeKey(a, b)] += a < b ? 1 : -1;
+            edges.push_back({edgeKey(a, b), a < b ? 1 : -1});
         }
+    std::sort(edges.begin(), edges.end());
+    std::vector<std::pair<std::uint64_t, int>> chain;
+    for (std::size_t i = 0; i < edges.size();) {
+        int sum = 0;
+        std::size_t j = i;
+        for (; j < edges.size() && edges[j].first == edges[i].first; ++j) sum += edges[j].second;
+        if (sum != 0) chain.push_back({edges[i].first, sum});
+        i = j;
+    }
     return chain;
 }
 

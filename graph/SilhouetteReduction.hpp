@@ -61,8 +61,8 @@ struct RegionReduction {
 
 struct ReductionSettings {
     float targetError = 0.05f;  // meshoptimizer's relative error; the checks, not this, keep the silhouette
-    int maxTries = 24;
-    int triesPerRing = 4;
+    int maxTries = 16;
+    int triesPerRing = 3;
 };
 
 RegionReduction reduceForRegion(std::span<const glm::vec3> positions, std::span<const std::uint32_t> indices,
