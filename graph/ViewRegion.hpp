@@ -9,7 +9,7 @@
 //   if (r.contains(eye)) ...
 //
 // fromVertices drops points inside the hull from vertices() (they add nothing
-// to classification) and throws InputError-like std::invalid_argument when
+// to classification) and throws std::invalid_argument when
 // the points span no volume or are more than kMaxRegionVertices.
 
 #include "graph/Bounds.hpp"

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <random>
 
 using namespace arcomp;
 
@@ -65,4 +66,24 @@ TEST(SilhouetteFile, badHeaderIndicesAndRangesAreRefused) {
     b = good; putU32(b, 36, 0x7fc00000u);
     EXPECT_TRUE(refused(b));                       // NaN position
     EXPECT_FALSE(refused(good));
+}
+
+TEST(SilhouetteFile, corruptedBytesGiveAMeshOrModelErrorNothingElse) {
+    const std::vector<std::byte> good = encodeSilhouetteMesh(smallMesh());
+    std::mt19937 rng(3);
+    std::uniform_int_distribution<std::size_t> where(0, good.size() - 1);
+    std::uniform_int_distribution<int> value(0, 255);
+    std::size_t accepted = 0;
+    for (int round = 0; round < 2000; ++round) {
+        std::vector<std::byte> b = good;
+        for (int k = 0; k < 1 + round % 4; ++k) b[where(rng)] = static_cast<std::byte>(value(rng));
+        try {
+            const SilhouetteMesh m = decodeSilhouetteMesh(b);
+            for (std::uint32_t i : m.indices) ASSERT_LT(i, m.positions.size());
+            for (const SilhouetteRange& r : m.ranges) ASSERT_LE(std::uint64_t{r.firstIndex} + r.indexCount, m.indices.size());
+            ++accepted;
+        } catch (const ModelError&) {
+        }
+    }
+    EXPECT_LT(accepted, 2000u);  // most corruptions land in positions or indices and some must be refused
 }
