@@ -1,5 +1,6 @@
 #include "graph/SilhouetteFile.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -154,6 +155,48 @@ SilhouetteMesh readSilhouetteFile(const std::filesystem::path& file) {
     if (!in) throw ModelError(file.string(), "", "cannot be read");
     std::vector<char> data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     return decodeSilhouetteMesh(std::as_bytes(std::span(data)), file.string());
+}
+
+namespace {
+
+bool sameRegions(const std::vector<ViewRegion>& a, const std::vector<ViewRegion>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (!std::equal(a[i].vertices().begin(), a[i].vertices().end(), b[i].vertices().begin(), b[i].vertices().end()))
+            return false;
+    return true;
+}
+
+} // namespace
+
+SilhouetteMesh loadOrBakeSilhouetteMesh(const std::filesystem::path& baked, std::span<const glm::vec3> positions,
+                                        std::span<const std::uint32_t> indices, const std::vector<ViewRegion>& regions,
+                                        std::string& note) {
+    std::error_code ec;
+    if (std::filesystem::exists(baked, ec)) {
+        try {
+            SilhouetteMesh m = readSilhouetteFile(baked);
+            const FlatWeld w = weldPositions(positions, indices);
+            const auto full = m.indicesOf(m.full);
+            if (m.positions == w.positions && std::equal(full.begin(), full.end(), w.indices.begin(), w.indices.end()) &&
+                sameRegions(m.regions, regions)) {
+                note = baked.string() + ": loaded";
+                return m;
+            }
+            note = baked.string() + ": made for another mesh or other regions; baked again";
+        } catch (const ModelError& e) {
+            note = std::string(e.what()) + "; baked again";
+        }
+    } else {
+        note = baked.string() + ": not found; baked";
+    }
+    SilhouetteMesh m = bakeSilhouetteMesh(positions, indices, regions);
+    try {
+        writeSilhouetteFile(baked, m);
+    } catch (const std::exception& e) {
+        note += std::string("; not saved: ") + e.what();
+    }
+    return m;
 }
 
 } // namespace arcomp

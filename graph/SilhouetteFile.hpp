@@ -36,4 +36,12 @@ SilhouetteMesh decodeSilhouetteMesh(std::span<const std::byte> bytes, const std:
 void writeSilhouetteFile(const std::filesystem::path& file, const SilhouetteMesh& mesh);
 SilhouetteMesh readSilhouetteFile(const std::filesystem::path& file);
 
+// What a station does at load time: use `baked` when it holds exactly this
+// mesh (after welding) and these regions; otherwise bake, and write `baked`
+// for next time (a write failure is reported in `note`, the mesh is still
+// returned). `note` says which happened and why.
+SilhouetteMesh loadOrBakeSilhouetteMesh(const std::filesystem::path& baked, std::span<const glm::vec3> positions,
+                                        std::span<const std::uint32_t> indices, const std::vector<ViewRegion>& regions,
+                                        std::string& note);
+
 } // namespace arcomp

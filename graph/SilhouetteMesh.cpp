@@ -33,11 +33,9 @@ Geometry SilhouetteMesh::geometry() const {
     return g;
 }
 
-SilhouetteMesh bakeSilhouetteMesh(std::span<const glm::vec3> positions, std::span<const std::uint32_t> indices,
-                                  std::vector<ViewRegion> regions, std::vector<SilhouetteRegionReport>* report,
-                                  const BakeProgress& progress) {
+FlatWeld weldPositions(std::span<const glm::vec3> positions, std::span<const std::uint32_t> indices) {
     if (indices.size() % 3 != 0) throw std::invalid_argument("index count is not a multiple of 3");
-    SilhouetteMesh m;
+    FlatWeld m;
     std::map<std::tuple<float, float, float>, std::uint32_t> welded;
     std::vector<std::uint32_t> remap(positions.size());
     for (std::size_t v = 0; v < positions.size(); ++v) {
@@ -56,6 +54,17 @@ SilhouetteMesh bakeSilhouetteMesh(std::span<const glm::vec3> positions, std::spa
         if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
         m.indices.insert(m.indices.end(), tri, tri + 3);
     }
+    return m;
+}
+
+SilhouetteMesh bakeSilhouetteMesh(std::span<const glm::vec3> positions, std::span<const std::uint32_t> indices,
+                                  std::vector<ViewRegion> regions, std::vector<SilhouetteRegionReport>* report,
+                                  const BakeProgress& progress) {
+    if (indices.size() % 3 != 0) throw std::invalid_argument("index count is not a multiple of 3");
+    SilhouetteMesh m;
+    FlatWeld w = weldPositions(positions, indices);
+    m.positions = std::move(w.positions);
+    m.indices = std::move(w.indices);
     m.full = {0, static_cast<std::uint32_t>(m.indices.size())};
     const std::vector<std::uint32_t> fullIndices = m.indices;
     const MeshHoles holes = findHoles(m.positions, fullIndices);

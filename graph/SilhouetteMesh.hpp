@@ -46,6 +46,14 @@ struct SilhouetteMesh {
     Geometry geometry() const;
 };
 
+// One vertex per distinct position, indices remapped, triangles that weld
+// to a line or point dropped: the surface bakeSilhouetteMesh works on.
+struct FlatWeld {
+    std::vector<glm::vec3> positions;
+    std::vector<std::uint32_t> indices;
+};
+FlatWeld weldPositions(std::span<const glm::vec3> positions, std::span<const std::uint32_t> indices);
+
 using BakeProgress = std::function<void(std::size_t regionsDone, std::size_t regionCount)>;
 
 // Welds equal positions first (so that borders and holes are found on the

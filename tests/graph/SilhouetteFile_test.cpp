@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <random>
 
 using namespace arcomp;
@@ -86,4 +88,26 @@ TEST(SilhouetteFile, corruptedBytesGiveAMeshOrModelErrorNothingElse) {
         }
     }
     EXPECT_LT(accepted, 2000u);  // most corruptions land in positions or indices and some must be refused
+}
+
+TEST(SilhouetteFile, loadOrBakeReusesAMatchingFileAndRebakesOtherwise) {
+    const std::filesystem::path folder = std::filesystem::path(ARCOMP_TEST_OUTPUT) / "silhouette_file";
+    std::filesystem::create_directories(folder);
+    const std::filesystem::path file = folder / "sphere.sil";
+    std::filesystem::remove(file);
+    const Geometry sphere = makeUvSphere(1.0f, 12, 6);
+    std::vector<ViewRegion> regions = {ViewRegion::fromBox({{-0.5f, -0.5f, 3}, {0.5f, 0.5f, 4}})};
+    std::string note;
+    const SilhouetteMesh first = loadOrBakeSilhouetteMesh(file, sphere.positions, sphere.indices, regions, note);
+    EXPECT_NE(note.find("not found"), std::string::npos) << note;
+    const SilhouetteMesh second = loadOrBakeSilhouetteMesh(file, sphere.positions, sphere.indices, regions, note);
+    EXPECT_NE(note.find("loaded"), std::string::npos) << note;
+    EXPECT_EQ(second.indices, first.indices);
+    regions.push_back(ViewRegion::fromBox({{-0.5f, -0.5f, -4}, {0.5f, 0.5f, -3}}));
+    const SilhouetteMesh third = loadOrBakeSilhouetteMesh(file, sphere.positions, sphere.indices, regions, note);
+    EXPECT_NE(note.find("other regions"), std::string::npos) << note;
+    EXPECT_EQ(third.regions.size(), 2u);
+    std::ofstream(file, std::ios::trunc) << "not a silhouette file";
+    loadOrBakeSilhouetteMesh(file, sphere.positions, sphere.indices, regions, note);
+    EXPECT_NE(note.find("bad magic"), std::string::npos) << note;
 }
