@@ -20,6 +20,10 @@ struct DrawItem {
     // Opacity during an LOD cross-fade (both levels are listed, weights
     // summing to 1); 1 otherwise.
     float fade = 1.0f;
+    // A part of the geometry's index list; indexCount 0 draws all of it.
+    // Silhouette nodes use it to pick their region's list.
+    std::uint32_t firstIndex = 0;
+    std::uint32_t indexCount = 0;
 };
 
 struct DrawList {

@@ -41,6 +41,15 @@ struct SelectPass {
         case NodeKind::Lod:
             visitLod(pos, node, bound, inside, fade);
             return;  // its children are levels: only the chosen ones are visited
+        case NodeKind::SilhouetteRegion:
+            if (settings.silhouettes && scene.payload(node) < settings.silhouettes->nodes.size()) {
+                const SilhouetteNode& s = settings.silhouettes->nodes[scene.payload(node)];
+                const glm::vec3 localEye = glm::vec3(glm::inverse(scene.world(node)) * glm::vec4(view.eye, 1.0f));
+                const SilhouetteRange r = s.rangeFor(localEye);
+                out.items.push_back({node, s.part, glm::length(bound.center - view.eye), view.projectedArea(bound), level,
+                                     settings.shading, fade, r.firstIndex, r.indexCount});
+            }
+            break;
         default:
             break;
         }

@@ -8,6 +8,7 @@
 //   select(scene, view, {.shading = Shading::Phong}, list);
 
 #include "graph/DrawList.hpp"
+#include "graph/SilhouetteNodes.hpp"
 #include "graph/View.hpp"
 
 #include <glm/glm.hpp>
@@ -25,6 +26,9 @@ struct SelectSettings {
     glm::vec3 gaze{0.0f};
     // Frame time, for angular speeds and cross-fades.
     double timeSeconds = 0.0;
+    // Silhouette nodes' region meshes (graph/SilhouetteNodes.hpp); without it
+    // silhouette nodes draw nothing.
+    const SilhouetteNodes* silhouettes = nullptr;
 };
 
 void select(const Scene& scene, const View& view, const SelectSettings& settings, DrawList& out);

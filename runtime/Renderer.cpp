@@ -38,6 +38,7 @@ uniform float uSpecular;
 uniform int uHasTexture;
 uniform int uAlphaMode;
 uniform float uAlphaCutoff;
+uniform float uFade;
 uniform sampler2D uBaseTexture;
 
 // Ambient + diffuse + specular, as a factor on the base colour plus an
@@ -73,7 +74,7 @@ void main() {
         base *= vec4(pow(t.rgb, vec3(2.2)), t.a);
     }
     if (uAlphaMode == 1 && base.a < uAlphaCutoff) discard;
-    float alpha = uAlphaMode == 2 ? base.a : 1.0;
+    float alpha = (uAlphaMode == 2 ? base.a : 1.0) * uFade;
 #if SHADING == 0
     vec3 lit = base.rgb;
 #elif SHADING == 1
@@ -180,6 +181,7 @@ void Renderer::drawItem(const Scene& scene, const DrawItem& item, const View& vi
     glUniform1f(p.uniform("uSpecular"), 0.5f * (1.0f - m.roughness) + 0.1f);
     glUniform1i(p.uniform("uAlphaMode"), static_cast<int>(m.alphaMode));
     glUniform1f(p.uniform("uAlphaCutoff"), m.alphaCutoff);
+    glUniform1f(p.uniform("uFade"), item.fade);
     const GLuint tex = texture(scene, m.baseColorImage);
     glUniform1i(p.uniform("uHasTexture"), tex ? 1 : 0);
     glUniform1i(p.uniform("uBaseTexture"), 0);
@@ -189,8 +191,11 @@ void Renderer::drawItem(const Scene& scene, const DrawItem& item, const View& vi
     else glEnable(GL_CULL_FACE);
     const GpuGeometry& g = geometry(scene, item.part.geometry);
     glBindVertexArray(g.vao);
-    glDrawElements(GL_TRIANGLES, g.indexCount, GL_UNSIGNED_INT, nullptr);
-    trianglesDrawn_ += static_cast<std::size_t>(g.indexCount / 3);
+    // A silhouette region draws its own range of the shared index list.
+    const GLsizei count = item.indexCount ? static_cast<GLsizei>(item.indexCount) : g.indexCount;
+    const auto offset = static_cast<std::uintptr_t>(item.indexCount ? item.firstIndex : 0) * sizeof(std::uint32_t);
+    glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, reinterpret_cast<const void*>(offset));
+    trianglesDrawn_ += static_cast<std::size_t>(count / 3);
 }
 
 void Renderer::draw(const Scene& scene, const DrawList& list, const View& view, const RenderSettings& settings) {
@@ -209,10 +214,13 @@ void Renderer::draw(const Scene& scene, const DrawList& list, const View& view, 
     glDepthFunc(GL_LESS);
     glCullFace(GL_BACK);
 
-    // Opaque front to back (early depth rejection), then blended back to front.
+    // Opaque front to back (early depth rejection), then blended back to
+    // front; a level fading in or out of an LOD cross-fade is blended.
     std::vector<const DrawItem*> opaque, blended;
-    for (const DrawItem& item : list.items)
-        (scene.material(item.part.material).alphaMode == AlphaMode::Blend ? blended : opaque).push_back(&item);
+    for (const DrawItem& item : list.items) {
+        const bool blend = item.fade < 1.0f || scene.material(item.part.material).alphaMode == AlphaMode::Blend;
+        (blend ? blended : opaque).push_back(&item);
+    }
     std::sort(opaque.begin(), opaque.end(), [](auto* a, auto* b) { return a->viewDistance < b->viewDistance; });
     std::sort(blended.begin(), blended.end(), [](auto* a, auto* b) { return a->viewDistance > b->viewDistance; });
 
