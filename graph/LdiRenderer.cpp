@@ -1,0 +1,218 @@
+#include "graph/LdiRenderer.hpp"
+
+#include "graph/McMillanOrder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numeric>
+#include <thread>
+
+namespace arcomp {
+
+namespace {
+
+constexpr float kMinRadius = 0.71f;      // reaches the nearest pixel centre from anywhere
+constexpr float kHalfDiagonal = 0.866f;  // half a cube's diagonal, in voxel sizes
+constexpr float kRimFalloff = 0.6f;      // weight 1 at the centre, 0.4 at the rim
+
+struct Accumulator {
+    glm::vec3 color{0.0f};
+    float alpha = 0.0f;
+    float depth = std::numeric_limits<float>::infinity();
+
+    void over(const glm::vec4& c, float weight, float z) {
+        const float a = c.a * weight;
+        color = glm::vec3(c) * a + color * (1.0f - a);
+        alpha = a + alpha * (1.0f - a);
+        depth = std::min(depth, z);
+    }
+};
+
+} // namespace
+
+std::size_t PointImage::coveredPixels() const {
+    std::size_t n = 0;
+    for (std::size_t i = 3; i < rgba.size(); i += 4) n += rgba[i] != 0;
+    return n;
+}
+
+LdiRenderer::LdiRenderer(const LdiSet& set, int threads) : set_(set), threads_(std::max(1, threads)) {}
+
+template <class F> void LdiRenderer::parallel(F&& f) {
+    std::vector<std::thread> helpers;
+    for (int t = 1; t < threads_; ++t) helpers.emplace_back([&f, t, this] { f(t, threads_); });
+    f(0, threads_);
+    for (std::thread& h : helpers) h.join();
+}
+
+void LdiRenderer::project(const View& view) {
+    const std::size_t n = set_.cloud.size();
+    image_.width = view.viewport.x;
+    image_.height = view.viewport.y;
+    screen_.resize(n);
+    depth_.resize(n);
+    radius_.resize(n);
+    const glm::mat4 viewProjection = view.viewProjection();
+    const float pixelScale = view.pixelScale();
+    const float footprint = kHalfDiagonal * set_.cloud.pointSize * pixelScale;
+    const glm::vec2 size(image_.width, image_.height);
+    parallel([&](int worker, int workers) {
+        for (std::size_t i = n * static_cast<std::size_t>(worker) / static_cast<std::size_t>(workers),
+                         end = n * static_cast<std::size_t>(worker + 1) / static_cast<std::size_t>(workers);
+             i < end; ++i) {
+            const glm::vec3& p = set_.cloud.positions[i];
+            const float z = glm::dot(p - view.eye, view.forward);
+            if (!(z > view.near) || z > view.far) {
+                depth_[i] = -1.0f;  // not drawn
+                continue;
+            }
+            const glm::vec4 clip = viewProjection * glm::vec4(p, 1.0f);
+            screen_[i] = glm::vec2(clip.x / clip.w * 0.5f + 0.5f, 0.5f - clip.y / clip.w * 0.5f) * size;
+            depth_[i] = z;
+            radius_[i] = std::max(kMinRadius, footprint / z);
+        }
+    });
+}
+
+void LdiRenderer::splat(const std::vector<std::uint32_t>& ids, std::size_t begin, std::size_t end,
+                        std::vector<Splat>& out) const {
+    const int w = image_.width, h = image_.height;
+    for (std::size_t k = begin; k < end; ++k) {
+        const std::uint32_t id = ids[k];
+        if (depth_[id] < 0.0f) continue;
+        const glm::vec2 s = screen_[id];
+        const float r = radius_[id], r2 = r * r, invR2 = kRimFalloff / r2;
+        const int x0 = std::max(0, static_cast<int>(std::ceil(s.x - r - 0.5f)));
+        const int x1 = std::min(w - 1, static_cast<int>(std::floor(s.x + r - 0.5f)));
+        const int y0 = std::max(0, static_cast<int>(std::ceil(s.y - r - 0.5f)));
+        const int y1 = std::min(h - 1, static_cast<int>(std::floor(s.y + r - 0.5f)));
+        for (int y = y0; y <= y1; ++y) {
+            const float dy = static_cast<float>(y) + 0.5f - s.y;
+            for (int x = x0; x <= x1; ++x) {
+                const float dx = static_cast<float>(x) + 0.5f - s.x;
+                const float d2 = dx * dx + dy * dy;
+                if (d2 <= r2)
+                    out.push_back({static_cast<std::uint32_t>(y * w + x), id, 1.0f - d2 * invR2});
+            }
+        }
+    }
+}
+
+void LdiRenderer::gather(std::size_t streams) {
+    const std::size_t pixels = static_cast<std::size_t>(image_.width) * static_cast<std::size_t>(image_.height);
+    pixelStart_.assign(pixels + 1, 0);
+    std::size_t total = 0;
+    for (std::size_t s = 0; s < streams; ++s) {
+        total += splats_[s].size();
+        for (const Splat& sp : splats_[s]) ++pixelStart_[sp.pixel + 1];
+    }
+    std::partial_sum(pixelStart_.begin(), pixelStart_.end(), pixelStart_.begin());
+    sorted_.resize(total);
+    // Stable: within a pixel, stream 0's splats keep their order, then stream 1's, ...
+    for (std::size_t s = 0; s < streams; ++s)
+        for (const Splat& sp : splats_[s]) sorted_[pixelStart_[sp.pixel]++] = {sp.point, sp.weight};
+    // Each start now holds its pixel's end; shift back.
+    for (std::size_t p = pixels; p > 0; --p) pixelStart_[p] = pixelStart_[p - 1];
+    pixelStart_[0] = 0;
+}
+
+void LdiRenderer::compositeRows(int y0, int y1, bool merge) {
+    struct Run {
+        std::uint32_t next, end;
+    };
+    std::vector<Run> runs;
+    runs.reserve(set_.ldis.size());
+    const auto& colors = set_.cloud.colors;
+    for (std::size_t p = static_cast<std::size_t>(y0) * static_cast<std::size_t>(image_.width),
+                     last = static_cast<std::size_t>(y1) * static_cast<std::size_t>(image_.width);
+         p < last; ++p) {
+        const std::uint32_t begin = pixelStart_[p], end = pixelStart_[p + 1];
+        Accumulator acc;
+        if (!merge) {
+            for (std::uint32_t k = begin; k < end; ++k)
+                acc.over(colors[sorted_[k].point], sorted_[k].weight, depth_[sorted_[k].point]);
+        } else if (begin != end) {
+            // The n projection buffers' runs for this pixel, each back to front.
+            runs.clear();
+            std::uint32_t start = begin;
+            for (std::uint32_t k = begin + 1; k <= end; ++k) {
+                if (k == end || set_.pointLdi[sorted_[k].point] != set_.pointLdi[sorted_[k - 1].point]) {
+                    runs.push_back({start, k});
+                    start = k;
+                }
+            }
+            while (!runs.empty()) {
+                std::size_t pick = 0;
+                float deepest = depth_[sorted_[runs[0].next].point];
+                for (std::size_t r = 1; r < runs.size(); ++r) {
+                    const float d = depth_[sorted_[runs[r].next].point];
+                    if (d > deepest) deepest = d, pick = r;
+                }
+                const Entry& e = sorted_[runs[pick].next];
+                acc.over(colors[e.point], e.weight, deepest);
+                if (++runs[pick].next == runs[pick].end) {
+                    runs[pick] = runs.back();
+                    runs.pop_back();
+                }
+            }
+        }
+        std::uint8_t* out = &image_.rgba[p * 4];
+        for (int c = 0; c < 3; ++c) out[c] = static_cast<std::uint8_t>(std::lround(std::clamp(acc.color[c], 0.0f, 1.0f) * 255.0f));
+        out[3] = static_cast<std::uint8_t>(std::lround(std::clamp(acc.alpha, 0.0f, 1.0f) * 255.0f));
+        image_.depth[p] = acc.depth;
+    }
+}
+
+void LdiRenderer::composite(bool merge) {
+    const std::size_t pixels = static_cast<std::size_t>(image_.width) * static_cast<std::size_t>(image_.height);
+    image_.rgba.resize(pixels * 4);
+    image_.depth.resize(pixels);
+    parallel([&](int worker, int workers) {
+        compositeRows(image_.height * worker / workers, image_.height * (worker + 1) / workers, merge);
+    });
+}
+
+const PointImage& LdiRenderer::render(const View& view) {
+    project(view);
+    const std::size_t n = set_.ldis.size();
+    order_.resize(std::max<std::size_t>(order_.size(), n));
+    splats_.resize(std::max<std::size_t>(splats_.size(), n));
+    parallel([&](int worker, int workers) {
+        for (std::size_t l = static_cast<std::size_t>(worker); l < n; l += static_cast<std::size_t>(workers)) {
+            order_[l].clear();
+            appendBackToFront(set_.ldis[l], view.eye, order_[l]);
+            splats_[l].clear();
+            splat(order_[l], 0, order_[l].size(), splats_[l]);
+        }
+    });
+    gather(n);
+    composite(true);
+    return image_;
+}
+
+const PointImage& LdiRenderer::renderDepthSorted(const View& view) {
+    project(view);
+    byDepth_.clear();
+    for (std::size_t i = 0; i < depth_.size(); ++i)
+        if (depth_[i] >= 0.0f) byDepth_.emplace_back(depth_[i], static_cast<std::uint32_t>(i));
+    std::sort(byDepth_.begin(), byDepth_.end(), std::greater<>());
+    order_.resize(std::max<std::size_t>(order_.size(), 1));
+    order_[0].clear();
+    for (const auto& [z, id] : byDepth_) order_[0].push_back(id);
+    const auto streams = static_cast<std::size_t>(threads_);
+    splats_.resize(std::max(splats_.size(), streams));
+    const std::size_t m = order_[0].size();
+    parallel([&](int worker, int workers) {
+        splats_[static_cast<std::size_t>(worker)].clear();
+        splat(order_[0], m * static_cast<std::size_t>(worker) / static_cast<std::size_t>(workers),
+              m * static_cast<std::size_t>(worker + 1) / static_cast<std::size_t>(workers),
+              splats_[static_cast<std::size_t>(worker)]);
+    });
+    gather(streams);
+    composite(false);
+    return image_;
+}
+
+} // namespace arcomp
