@@ -14,7 +14,7 @@ namespace arcomp {
 namespace {
 
 constexpr float kMinRadius = 0.71f;      // reaches the nearest pixel centre from anywhere
-constexpr float kHalfDiagonal = 0.866f;  // half a cube's diagonal, in voxel sizes
+constexpr float kFootprint = 0.71f;      // half a face's diagonal, in point sizes: closes the gaps of a square grid
 constexpr float kRimFalloff = 0.6f;      // weight 1 at the centre, 0.4 at the rim
 
 struct Accumulator {
@@ -22,13 +22,14 @@ struct Accumulator {
     float alpha = 0.0f;
     float depth = std::numeric_limits<float>::infinity();
 
-    void over(const glm::vec4& c, float weight, float z) {
-        const float a = c.a * weight;
-        color = glm::vec3(c) * a + color * (1.0f - a);
+    void over(glm::u8vec4 c, float a, float z) {
+        color = glm::vec3(c) * (a / 255.0f) + color * (1.0f - a);
         alpha = a + alpha * (1.0f - a);
         depth = std::min(depth, z);
     }
 };
+
+std::uint8_t toByte(float v) { return static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); }
 
 } // namespace
 
@@ -56,7 +57,7 @@ void LdiRenderer::project(const View& view) {
     radius_.resize(n);
     const glm::mat4 viewProjection = view.viewProjection();
     const float pixelScale = view.pixelScale();
-    const float footprint = kHalfDiagonal * set_.cloud.pointSize * pixelScale;
+    const float footprint = kFootprint * set_.cloud.pointSize * pixelScale;
     const glm::vec2 size(image_.width, image_.height);
     parallel([&](int worker, int workers) {
         for (std::size_t i = n * static_cast<std::size_t>(worker) / static_cast<std::size_t>(workers),
@@ -76,13 +77,16 @@ void LdiRenderer::project(const View& view) {
     });
 }
 
-void LdiRenderer::splat(const std::vector<std::uint32_t>& ids, std::size_t begin, std::size_t end,
+void LdiRenderer::splat(const std::vector<std::uint32_t>& ids, std::size_t begin, std::size_t end, std::uint8_t ldi,
                         std::vector<Splat>& out) const {
     const int w = image_.width, h = image_.height;
     for (std::size_t k = begin; k < end; ++k) {
         const std::uint32_t id = ids[k];
         if (depth_[id] < 0.0f) continue;
         const glm::vec2 s = screen_[id];
+        const glm::vec4 c = set_.cloud.colors[id];
+        const glm::u8vec4 colorLdi(glm::round(glm::clamp(glm::vec3(c), 0.0f, 1.0f) * 255.0f), ldi);
+        const float z = depth_[id], alpha = c.a;
         const float r = radius_[id], r2 = r * r, invR2 = kRimFalloff / r2;
         const int x0 = std::max(0, static_cast<int>(std::ceil(s.x - r - 0.5f)));
         const int x1 = std::min(w - 1, static_cast<int>(std::floor(s.x + r - 0.5f)));
@@ -94,7 +98,7 @@ void LdiRenderer::splat(const std::vector<std::uint32_t>& ids, std::size_t begin
                 const float dx = static_cast<float>(x) + 0.5f - s.x;
                 const float d2 = dx * dx + dy * dy;
                 if (d2 <= r2)
-                    out.push_back({static_cast<std::uint32_t>(y * w + x), id, 1.0f - d2 * invR2});
+                    out.push_back({static_cast<std::uint32_t>(y * w + x), {z, alpha * (1.0f - d2 * invR2), colorLdi}});
             }
         }
     }
@@ -112,7 +116,7 @@ void LdiRenderer::gather(std::size_t streams) {
     sorted_.resize(total);
     // Stable: within a pixel, stream 0's splats keep their order, then stream 1's, ...
     for (std::size_t s = 0; s < streams; ++s)
-        for (const Splat& sp : splats_[s]) sorted_[pixelStart_[sp.pixel]++] = {sp.point, sp.weight};
+        for (const Splat& sp : splats_[s]) sorted_[pixelStart_[sp.pixel]++] = sp.entry;
     // Each start now holds its pixel's end; shift back.
     for (std::size_t p = pixels; p > 0; --p) pixelStart_[p] = pixelStart_[p - 1];
     pixelStart_[0] = 0;
@@ -124,43 +128,47 @@ void LdiRenderer::compositeRows(int y0, int y1, bool merge) {
     };
     std::vector<Run> runs;
     runs.reserve(set_.ldis.size());
-    const auto& colors = set_.cloud.colors;
     for (std::size_t p = static_cast<std::size_t>(y0) * static_cast<std::size_t>(image_.width),
                      last = static_cast<std::size_t>(y1) * static_cast<std::size_t>(image_.width);
          p < last; ++p) {
         const std::uint32_t begin = pixelStart_[p], end = pixelStart_[p + 1];
+        std::uint8_t* out = &image_.rgba[p * 4];
+        if (begin == end) {
+            out[0] = out[1] = out[2] = out[3] = 0;
+            image_.depth[p] = std::numeric_limits<float>::infinity();
+            continue;
+        }
         Accumulator acc;
         if (!merge) {
             for (std::uint32_t k = begin; k < end; ++k)
-                acc.over(colors[sorted_[k].point], sorted_[k].weight, depth_[sorted_[k].point]);
-        } else if (begin != end) {
+                acc.over(sorted_[k].colorLdi, sorted_[k].alpha, sorted_[k].depth);
+        } else {
             // The n projection buffers' runs for this pixel, each back to front.
             runs.clear();
             std::uint32_t start = begin;
             for (std::uint32_t k = begin + 1; k <= end; ++k) {
-                if (k == end || set_.pointLdi[sorted_[k].point] != set_.pointLdi[sorted_[k - 1].point]) {
+                if (k == end || sorted_[k].colorLdi.w != sorted_[k - 1].colorLdi.w) {
                     runs.push_back({start, k});
                     start = k;
                 }
             }
             while (!runs.empty()) {
                 std::size_t pick = 0;
-                float deepest = depth_[sorted_[runs[0].next].point];
+                float deepest = sorted_[runs[0].next].depth;
                 for (std::size_t r = 1; r < runs.size(); ++r) {
-                    const float d = depth_[sorted_[runs[r].next].point];
+                    const float d = sorted_[runs[r].next].depth;
                     if (d > deepest) deepest = d, pick = r;
                 }
                 const Entry& e = sorted_[runs[pick].next];
-                acc.over(colors[e.point], e.weight, deepest);
+                acc.over(e.colorLdi, e.alpha, e.depth);
                 if (++runs[pick].next == runs[pick].end) {
                     runs[pick] = runs.back();
                     runs.pop_back();
                 }
             }
         }
-        std::uint8_t* out = &image_.rgba[p * 4];
-        for (int c = 0; c < 3; ++c) out[c] = static_cast<std::uint8_t>(std::lround(std::clamp(acc.color[c], 0.0f, 1.0f) * 255.0f));
-        out[3] = static_cast<std::uint8_t>(std::lround(std::clamp(acc.alpha, 0.0f, 1.0f) * 255.0f));
+        for (int c = 0; c < 3; ++c) out[c] = toByte(acc.color[c]);
+        out[3] = toByte(acc.alpha);
         image_.depth[p] = acc.depth;
     }
 }
@@ -184,7 +192,7 @@ const PointImage& LdiRenderer::render(const View& view) {
             order_[l].clear();
             appendBackToFront(set_.ldis[l], view.eye, order_[l]);
             splats_[l].clear();
-            splat(order_[l], 0, order_[l].size(), splats_[l]);
+            splat(order_[l], 0, order_[l].size(), static_cast<std::uint8_t>(l), splats_[l]);
         }
     });
     gather(n);
@@ -207,7 +215,7 @@ const PointImage& LdiRenderer::renderDepthSorted(const View& view) {
     parallel([&](int worker, int workers) {
         splats_[static_cast<std::size_t>(worker)].clear();
         splat(order_[0], m * static_cast<std::size_t>(worker) / static_cast<std::size_t>(workers),
-              m * static_cast<std::size_t>(worker + 1) / static_cast<std::size_t>(workers),
+              m * static_cast<std::size_t>(worker + 1) / static_cast<std::size_t>(workers), 0,
               splats_[static_cast<std::size_t>(worker)]);
     });
     gather(streams);

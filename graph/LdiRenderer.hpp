@@ -10,7 +10,7 @@
 //   const PointImage& img = r.render(view);             // McMillan + merge
 //   const PointImage& ref = r.renderDepthSorted(view);  // exact order, same splats
 //
-// Splat footprint: a disc of half the voxel's diagonal on screen (at least
+// Splat footprint: a disc of half a voxel face's diagonal on screen (at least
 // 0.71 px, so that every point reaches a pixel centre), weighted with a
 // quadratic falloff from 1 at the centre to 0.4 at its rim.
 //
@@ -25,6 +25,8 @@
 
 #include "graph/Ldi.hpp"
 #include "graph/View.hpp"
+
+#include <glm/gtc/type_precision.hpp>
 
 #include <cstdint>
 #include <vector>
@@ -50,18 +52,21 @@ public:
     std::size_t lastSplatCount() const { return sorted_.size(); }
 
 private:
+    // What the merge needs of one splat, packed so that it reads the
+    // projection buffers front to back without touching the points.
+    struct Entry {
+        float depth;          // view-axis depth of the point
+        float alpha;          // the point's alpha times the footprint weight
+        glm::u8vec4 colorLdi; // straight RGB8, and the LDI it came from in .w
+    };
     struct Splat {
         std::uint32_t pixel;
-        std::uint32_t point;
-        float weight;
-    };
-    struct Entry {
-        std::uint32_t point;
-        float weight;
+        Entry entry;
     };
 
     void project(const View& view);
-    void splat(const std::vector<std::uint32_t>& ids, std::size_t begin, std::size_t end, std::vector<Splat>& out) const;
+    void splat(const std::vector<std::uint32_t>& ids, std::size_t begin, std::size_t end, std::uint8_t ldi,
+               std::vector<Splat>& out) const;
     void gather(std::size_t streams);
     void composite(bool merge);
     void compositeRows(int y0, int y1, bool merge);
