@@ -29,6 +29,17 @@ struct Accumulator {
     }
 };
 
+// Without SSE4.1 (the x86-64 baseline) std::floor is a library call; these
+// run once per splatted point.
+int floorToInt(float v) {
+    const int i = static_cast<int>(v);
+    return i - (static_cast<float>(i) > v);
+}
+int ceilToInt(float v) {
+    const int i = static_cast<int>(v);
+    return i + (static_cast<float>(i) < v);
+}
+
 std::uint8_t toByte(float v) { return static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); }
 
 } // namespace
@@ -88,10 +99,12 @@ void LdiRenderer::splat(const std::vector<std::uint32_t>& ids, std::size_t begin
         const glm::u8vec4 colorLdi(glm::round(glm::clamp(glm::vec3(c), 0.0f, 1.0f) * 255.0f), ldi);
         const float z = depth_[id], alpha = c.a;
         const float r = radius_[id], r2 = r * r, invR2 = kRimFalloff / r2;
-        const int x0 = std::max(0, static_cast<int>(std::ceil(s.x - r - 0.5f)));
-        const int x1 = std::min(w - 1, static_cast<int>(std::floor(s.x + r - 0.5f)));
-        const int y0 = std::max(0, static_cast<int>(std::ceil(s.y - r - 0.5f)));
-        const int y1 = std::min(h - 1, static_cast<int>(std::floor(s.y + r - 0.5f)));
+        // Off-screen points would overflow int; they reach no pixel anyway.
+        if (s.x + r < 0.0f || s.y + r < 0.0f || s.x - r > static_cast<float>(w) || s.y - r > static_cast<float>(h)) continue;
+        const int x0 = std::max(0, ceilToInt(s.x - r - 0.5f));
+        const int x1 = std::min(w - 1, floorToInt(s.x + r - 0.5f));
+        const int y0 = std::max(0, ceilToInt(s.y - r - 0.5f));
+        const int y1 = std::min(h - 1, floorToInt(s.y + r - 0.5f));
         for (int y = y0; y <= y1; ++y) {
             const float dy = static_cast<float>(y) + 0.5f - s.y;
             for (int x = x0; x <= x1; ++x) {
