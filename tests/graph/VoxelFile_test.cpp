@@ -4,6 +4,7 @@
 
 #include <cstring>
 #include <filesystem>
+#include <random>
 
 using namespace arcomp;
 
@@ -82,4 +83,30 @@ TEST(VoxelFile, acceptsAnEmptyModel) {
     g.resolution = 1;
     const VoxelGrid r = decodeVoxels(encodeVoxels(g));
     EXPECT_EQ(r.size(), 0u);
+}
+
+TEST(VoxelFile, randomlyMutatedFilesDecodeValidOrThrowModelError) {
+    const std::vector<std::uint8_t> good = encodeVoxels(sample());
+    std::mt19937 rng(11);
+    int accepted = 0;
+    for (int trial = 0; trial < 3000; ++trial) {
+        std::vector<std::uint8_t> b = good;
+        const int edits = 1 + static_cast<int>(rng() % 4);
+        for (int e = 0; e < edits; ++e) b[rng() % b.size()] = static_cast<std::uint8_t>(rng());
+        if (rng() % 8 == 0) b.resize(rng() % (b.size() + 1));
+        try {
+            const VoxelGrid g = decodeVoxels(b);
+            ++accepted;
+            ASSERT_GE(g.resolution, 1);
+            ASSERT_EQ(g.cells.size(), g.colors.size());
+            for (std::size_t i = 0; i < g.size(); ++i) {
+                for (int a = 0; a < 3; ++a) ASSERT_LT(g.cells[i][a], g.resolution);
+                if (i > 0) {
+                    ASSERT_LT(g.linearIndex(i - 1), g.linearIndex(i));
+                }
+            }
+        } catch (const ModelError&) {
+        }
+    }
+    EXPECT_GT(accepted, 0) << "colour-only edits must still decode";
 }
