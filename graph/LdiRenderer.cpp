@@ -17,18 +17,6 @@ constexpr float kMinRadius = 0.71f;      // reaches the nearest pixel centre fro
 constexpr float kFootprint = 0.71f;      // half a face's diagonal, in point sizes: closes the gaps of a square grid
 constexpr float kRimFalloff = 0.6f;      // weight 1 at the centre, 0.4 at the rim
 
-struct Accumulator {
-    glm::vec3 color{0.0f};
-    float alpha = 0.0f;
-    float depth = std::numeric_limits<float>::infinity();
-
-    void over(glm::u8vec4 c, float a, float z) {
-        color = glm::vec3(c) * (a / 255.0f) + color * (1.0f - a);
-        alpha = a + alpha * (1.0f - a);
-        depth = std::min(depth, z);
-    }
-};
-
 // Without SSE4.1 (the x86-64 baseline) std::floor is a library call; these
 // run once per splatted point.
 int floorToInt(float v) {
@@ -43,6 +31,12 @@ int ceilToInt(float v) {
 std::uint8_t toByte(float v) { return static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); }
 
 } // namespace
+
+void LdiRenderer::Accumulator::over(glm::u8vec4 c, float a, float z) {
+    color = glm::vec3(c) * (a / 255.0f) + color * (1.0f - a);
+    alpha = a + alpha * (1.0f - a);
+    depth = std::min(depth, z);
+}
 
 std::size_t PointImage::coveredPixels() const {
     std::size_t n = 0;
@@ -88,33 +82,75 @@ void LdiRenderer::project(const View& view) {
     });
 }
 
-void LdiRenderer::splat(const std::vector<std::uint32_t>& ids, std::size_t begin, std::size_t end, std::uint8_t ldi,
-                        std::vector<Splat>& out) const {
-    const int w = image_.width, h = image_.height;
-    for (std::size_t k = begin; k < end; ++k) {
-        const std::uint32_t id = ids[k];
-        if (depth_[id] < 0.0f) continue;
-        const glm::vec2 s = screen_[id];
-        const glm::vec4 c = set_.cloud.colors[id];
-        const glm::u8vec4 colorLdi(glm::round(glm::clamp(glm::vec3(c), 0.0f, 1.0f) * 255.0f), ldi);
-        const float z = depth_[id], alpha = c.a;
-        const float r = radius_[id], r2 = r * r, invR2 = kRimFalloff / r2;
-        // Off-screen points would overflow int; they reach no pixel anyway.
-        if (s.x + r < 0.0f || s.y + r < 0.0f || s.x - r > static_cast<float>(w) || s.y - r > static_cast<float>(h)) continue;
-        const int x0 = std::max(0, ceilToInt(s.x - r - 0.5f));
-        const int x1 = std::min(w - 1, floorToInt(s.x + r - 0.5f));
-        const int y0 = std::max(0, ceilToInt(s.y - r - 0.5f));
-        const int y1 = std::min(h - 1, floorToInt(s.y + r - 0.5f));
-        for (int y = y0; y <= y1; ++y) {
-            const float dy = static_cast<float>(y) + 0.5f - s.y;
-            for (int x = x0; x <= x1; ++x) {
-                const float dx = static_cast<float>(x) + 0.5f - s.x;
-                const float d2 = dx * dx + dy * dy;
-                if (d2 <= r2)
-                    out.push_back({static_cast<std::uint32_t>(y * w + x), {z, alpha * (1.0f - d2 * invR2), colorLdi}});
-            }
+// Calls emit(pixel, entry) for each pixel of the point's footprint within
+// rows [rowLo, rowHi).
+template <class Emit>
+void LdiRenderer::footprint(std::uint32_t id, std::uint8_t ldi, int rowLo, int rowHi, Emit&& emit) const {
+    if (depth_[id] < 0.0f) return;
+    const int w = image_.width;
+    const glm::vec2 s = screen_[id];
+    const float r = radius_[id], r2 = r * r, invR2 = kRimFalloff / r2;
+    // Off-screen points would overflow int; they reach no pixel anyway.
+    if (s.x + r < 0.0f || s.y + r < static_cast<float>(rowLo) || s.x - r > static_cast<float>(w) ||
+        s.y - r > static_cast<float>(rowHi))
+        return;
+    const int x0 = std::max(0, ceilToInt(s.x - r - 0.5f));
+    const int x1 = std::min(w - 1, floorToInt(s.x + r - 0.5f));
+    const int y0 = std::max(rowLo, ceilToInt(s.y - r - 0.5f));
+    const int y1 = std::min(rowHi - 1, floorToInt(s.y + r - 0.5f));
+    if (y0 > y1 || x0 > x1) return;
+    const glm::vec4 c = set_.cloud.colors[id];
+    const glm::u8vec4 colorLdi(glm::round(glm::clamp(glm::vec3(c), 0.0f, 1.0f) * 255.0f), ldi);
+    const float z = depth_[id];
+    for (int y = y0; y <= y1; ++y) {
+        const float dy = static_cast<float>(y) + 0.5f - s.y;
+        for (int x = x0; x <= x1; ++x) {
+            const float dx = static_cast<float>(x) + 0.5f - s.x;
+            const float d2 = dx * dx + dy * dy;
+            if (d2 <= r2) emit(static_cast<std::uint32_t>(y * w + x), Entry{z, c.a * (1.0f - d2 * invR2), colorLdi});
         }
     }
+}
+
+void LdiRenderer::splat(const std::vector<std::uint32_t>& ids, std::size_t begin, std::size_t end, std::uint8_t ldi,
+                        std::vector<Splat>& out) const {
+    for (std::size_t k = begin; k < end; ++k)
+        footprint(ids[k], ldi, 0, image_.height, [&out](std::uint32_t pixel, const Entry& e) { out.push_back({pixel, e}); });
+}
+
+// One stream already in back-to-front order needs no buffers: splats are
+// composited as they come. Each thread owns a band of rows and walks the
+// whole stream, which keeps the order without any locking.
+void LdiRenderer::compositeInOrder(const std::vector<std::uint32_t>& ids) {
+    const std::size_t pixels = static_cast<std::size_t>(image_.width) * static_cast<std::size_t>(image_.height);
+    image_.rgba.resize(pixels * 4);
+    image_.depth.resize(pixels);
+    accumulators_.resize(pixels);
+    std::vector<std::size_t> counts(static_cast<std::size_t>(threads_), 0);
+    parallel([&](int worker, int workers) {
+        const int y0 = image_.height * worker / workers, y1 = image_.height * (worker + 1) / workers;
+        const std::size_t p0 = static_cast<std::size_t>(y0) * static_cast<std::size_t>(image_.width);
+        const std::size_t p1 = static_cast<std::size_t>(y1) * static_cast<std::size_t>(image_.width);
+        std::fill(accumulators_.begin() + static_cast<std::ptrdiff_t>(p0), accumulators_.begin() + static_cast<std::ptrdiff_t>(p1),
+                  Accumulator{});
+        std::size_t n = 0;
+        for (std::uint32_t id : ids)
+            footprint(id, 0, y0, y1, [&](std::uint32_t pixel, const Entry& e) {
+                accumulators_[pixel].over(e.colorLdi, e.alpha, e.depth);
+                ++n;
+            });
+        counts[static_cast<std::size_t>(worker)] = n;
+        for (std::size_t p = p0; p < p1; ++p) store(p, accumulators_[p]);
+    });
+    splatCount_ = 0;
+    for (std::size_t n : counts) splatCount_ += n;
+}
+
+void LdiRenderer::store(std::size_t p, const Accumulator& acc) {
+    std::uint8_t* out = &image_.rgba[p * 4];
+    for (int c = 0; c < 3; ++c) out[c] = toByte(acc.color[c]);
+    out[3] = toByte(acc.alpha);
+    image_.depth[p] = acc.depth;
 }
 
 void LdiRenderer::gather(std::size_t streams) {
@@ -180,9 +216,7 @@ void LdiRenderer::compositeRows(int y0, int y1, bool merge) {
                 }
             }
         }
-        for (int c = 0; c < 3; ++c) out[c] = toByte(acc.color[c]);
-        out[3] = toByte(acc.alpha);
-        image_.depth[p] = acc.depth;
+        store(p, acc);
     }
 }
 
@@ -204,11 +238,17 @@ const PointImage& LdiRenderer::render(const View& view) {
         for (std::size_t l = static_cast<std::size_t>(worker); l < n; l += static_cast<std::size_t>(workers)) {
             order_[l].clear();
             appendBackToFront(set_.ldis[l], view.eye, order_[l]);
+            if (n == 1) continue;
             splats_[l].clear();
             splat(order_[l], 0, order_[l].size(), static_cast<std::uint8_t>(l), splats_[l]);
         }
     });
+    if (n == 1) {
+        compositeInOrder(order_[0]);
+        return image_;
+    }
     gather(n);
+    splatCount_ = sorted_.size();
     composite(true);
     return image_;
 }
@@ -222,17 +262,7 @@ const PointImage& LdiRenderer::renderDepthSorted(const View& view) {
     order_.resize(std::max<std::size_t>(order_.size(), 1));
     order_[0].clear();
     for (const auto& [z, id] : byDepth_) order_[0].push_back(id);
-    const auto streams = static_cast<std::size_t>(threads_);
-    splats_.resize(std::max(splats_.size(), streams));
-    const std::size_t m = order_[0].size();
-    parallel([&](int worker, int workers) {
-        splats_[static_cast<std::size_t>(worker)].clear();
-        splat(order_[0], m * static_cast<std::size_t>(worker) / static_cast<std::size_t>(workers),
-              m * static_cast<std::size_t>(worker + 1) / static_cast<std::size_t>(workers), 0,
-              splats_[static_cast<std::size_t>(worker)]);
-    });
-    gather(streams);
-    composite(false);
+    compositeInOrder(order_[0]);
     return image_;
 }
 

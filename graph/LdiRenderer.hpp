@@ -19,8 +19,12 @@
 // already back to front. It is the same data, but one counting sort builds
 // it and the merge reads it from one place.
 //
+// With one LDI (and for the depth-sorted reference) there is one stream,
+// already back to front, so its splats are composited as they come and
+// the buffers are skipped: the merge of a single buffer is the identity.
+//
 // Two threads: LDIs are ordered and splatted in parallel, and the merge
-// splits the image's rows. The renderer keeps its buffers between frames,
+// (or the single stream's compositing) splits the image's rows. The renderer keeps its buffers between frames,
 // so it allocates nothing once warm; one renderer serves one thread.
 
 #include "graph/Ldi.hpp"
@@ -29,6 +33,7 @@
 #include <glm/gtc/type_precision.hpp>
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace arcomp {
@@ -49,7 +54,7 @@ public:
     const PointImage& renderDepthSorted(const View& view);
 
     // Splats written in the last frame (all buffers together).
-    std::size_t lastSplatCount() const { return sorted_.size(); }
+    std::size_t lastSplatCount() const { return splatCount_; }
 
 private:
     // What the merge needs of one splat, packed so that it reads the
@@ -63,10 +68,19 @@ private:
         std::uint32_t pixel;
         Entry entry;
     };
+    struct Accumulator {
+        glm::vec3 color{0.0f};  // premultiplied
+        float alpha = 0.0f;
+        float depth = std::numeric_limits<float>::infinity();
+        void over(glm::u8vec4 straightRgb, float alpha, float depth);
+    };
 
     void project(const View& view);
     void splat(const std::vector<std::uint32_t>& ids, std::size_t begin, std::size_t end, std::uint8_t ldi,
                std::vector<Splat>& out) const;
+    template <class Emit> void footprint(std::uint32_t id, std::uint8_t ldi, int rowLo, int rowHi, Emit&& emit) const;
+    void compositeInOrder(const std::vector<std::uint32_t>& ids);
+    void store(std::size_t pixel, const Accumulator& acc);
     void gather(std::size_t streams);
     void composite(bool merge);
     void compositeRows(int y0, int y1, bool merge);
@@ -83,6 +97,8 @@ private:
     std::vector<std::uint32_t> pixelStart_;
     std::vector<Entry> sorted_;
     std::vector<std::pair<float, std::uint32_t>> byDepth_;
+    std::vector<Accumulator> accumulators_;
+    std::size_t splatCount_ = 0;
 };
 
 } // namespace arcomp
