@@ -94,3 +94,15 @@ TEST(LdiRenderer, splatFootprintGrowsWithTheProjectedPointSize) {
     EXPECT_EQ(small, 1u);
     EXPECT_GT(large, 4u);
 }
+
+TEST(LdiRenderer, singleLdiCompositesItsMcMillanStreamDirectly) {
+    LdiSet set = threeOnTheAxis({0, 0, 0});
+    set.ldis.pop_back();  // one LDI: no projection buffers, no merge
+    for (int threads : {1, 2}) {
+        LdiRenderer renderer(set, threads);
+        const PointImage& img = renderer.render(kEye);
+        EXPECT_EQ(pixel(img, 4, 4), glm::u8vec4(32, 64, 128, 223)) << threads << " threads";
+        EXPECT_NEAR(img.depth[4 * 9 + 4], 7.0f, 1e-4f);
+        EXPECT_EQ(renderer.lastSplatCount(), 3u);
+    }
+}
