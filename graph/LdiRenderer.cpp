@@ -32,12 +32,6 @@ std::uint8_t toByte(float v) { return static_cast<std::uint8_t>(std::clamp(v, 0.
 
 } // namespace
 
-void LdiRenderer::Accumulator::over(glm::u8vec4 c, float a, float z) {
-    color = glm::vec3(c) * (a / 255.0f) + color * (1.0f - a);
-    alpha = a + alpha * (1.0f - a);
-    depth = std::min(depth, z);
-}
-
 std::size_t PointImage::coveredPixels() const {
     std::size_t n = 0;
     for (std::size_t i = 3; i < rgba.size(); i += 4) n += rgba[i] != 0;
@@ -146,7 +140,7 @@ void LdiRenderer::compositeInOrder(const std::vector<std::uint32_t>& ids) {
     for (std::size_t n : counts) splatCount_ += n;
 }
 
-void LdiRenderer::store(std::size_t p, const Accumulator& acc) {
+inline void LdiRenderer::store(std::size_t p, const Accumulator& acc) {
     std::uint8_t* out = &image_.rgba[p * 4];
     for (int c = 0; c < 3; ++c) out[c] = toByte(acc.color[c]);
     out[3] = toByte(acc.alpha);

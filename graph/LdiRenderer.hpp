@@ -72,7 +72,12 @@ private:
         glm::vec3 color{0.0f};  // premultiplied
         float alpha = 0.0f;
         float depth = std::numeric_limits<float>::infinity();
-        void over(glm::u8vec4 straightRgb, float alpha, float depth);
+        // Porter-Duff "over", back to front, on premultiplied colour.
+        void over(glm::u8vec4 straightRgb, float a, float z) {
+            color = glm::vec3(straightRgb) * (a * (1.0f / 255.0f)) + color * (1.0f - a);
+            alpha = a + alpha * (1.0f - a);
+            depth = z < depth ? z : depth;
+        }
     };
 
     void project(const View& view);
