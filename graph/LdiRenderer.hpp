@@ -15,17 +15,20 @@
 // quadratic falloff from 1 at the centre to 0.4 at its rim.
 //
 // Layout: the n projection buffers are stored interleaved, not side by
-// side: for each output pixel, LDI 0's ids, then LDI 1's, ... each run
-// already back to front. It is the same data, but one counting sort builds
-// it and the merge reads it from one place.
+// side: for each output pixel, LDI 0's entries, then LDI 1's, ... each run
+// already back to front. An entry carries the point's depth, weighted alpha
+// and colour instead of its id, so the merge never reads the point arrays.
+// It is the same data, but one stable counting sort builds it and the merge
+// reads it from one place.
 //
 // With one LDI (and for the depth-sorted reference) there is one stream,
 // already back to front, so its splats are composited as they come and
 // the buffers are skipped: the merge of a single buffer is the identity.
 //
 // Two threads: LDIs are ordered and splatted in parallel, and the merge
-// (or the single stream's compositing) splits the image's rows. The renderer keeps its buffers between frames,
-// so it allocates nothing once warm; one renderer serves one thread.
+// (or the single stream's compositing) splits the image's rows. The
+// renderer keeps its buffers between frames, so it allocates nothing once
+// warm; one renderer serves one caller thread.
 
 #include "graph/Ldi.hpp"
 #include "graph/View.hpp"
