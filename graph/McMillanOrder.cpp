@@ -1,0 +1,98 @@
+#include "graph/McMillanOrder.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace arcomp {
+
+namespace {
+
+EpipoleSide sideOf(float v, int size) {
+    if (v < 0.0f) return EpipoleSide::Before;
+    if (v >= static_cast<float>(size)) return EpipoleSide::After;
+    return EpipoleSide::Inside;
+}
+
+// One axis's scan: the cells before the epipole's cell, then the rest, each
+// towards or away from it.
+struct AxisRun {
+    int first, last, step;  // inclusive; empty when (last - first) * step < 0
+};
+
+void axisRuns(float epipole, int size, bool towards, AxisRun runs[2]) {
+    const int split = static_cast<int>(std::clamp(std::floor(epipole), 0.0f, static_cast<float>(size)));
+    // Cells [0, split) lie before p: towards p means ascending.
+    runs[0] = towards ? AxisRun{0, split - 1, 1} : AxisRun{split - 1, 0, -1};
+    runs[1] = towards ? AxisRun{size - 1, split, -1} : AxisRun{split, size - 1, 1};
+}
+
+bool emptyRun(const AxisRun& r) { return (r.last - r.first) * r.step < 0; }
+
+} // namespace
+
+Epipole epipoleOf(const LdiCamera& camera, const glm::vec3& eye) {
+    const glm::vec3 c = camera.toCamera(eye);
+    Epipole e;
+    const float length = glm::length(c);
+    if (length == 0.0f) {
+        // Same eye: every order across pixels is right; scan away from the centre.
+        e.pixel = camera.principal();
+    } else if (std::abs(c.z) <= 1e-7f * length) {
+        // On e0's screen plane: the epipole is at infinity in direction (x, y).
+        // Scanning towards it from in front equals scanning away from its
+        // mirror from behind, so either sign gives the same order.
+        e.pixel = camera.principal() + glm::vec2(c.x, c.y) / length * 1e9f;
+        e.inFront = true;
+    } else {
+        e.pixel = glm::vec2(c.x, c.y) / c.z * camera.focal + camera.principal();
+        e.inFront = c.z > 0.0f;
+    }
+    e.column = sideOf(e.pixel.x, camera.width);
+    e.row = sideOf(e.pixel.y, camera.height);
+    return e;
+}
+
+void appendBackToFront(const Ldi& ldi, const glm::vec3& eye, std::vector<std::uint32_t>& out) {
+    const LdiCamera& cam = ldi.camera;
+    const Epipole e = epipoleOf(cam, eye);
+    AxisRun columns[2], rows[2];
+    axisRuns(e.pixel.x, cam.width, e.inFront, columns);
+    axisRuns(e.pixel.y, cam.height, e.inFront, rows);
+    const glm::vec3 offset = eye - cam.eye;
+    const glm::mat3 toWorld = glm::transpose(cam.rotation);
+    const glm::vec2 principal = cam.principal();
+    for (const AxisRun& rs : rows) {
+        if (emptyRun(rs)) continue;
+        for (const AxisRun& cs : columns) {
+            if (emptyRun(cs)) continue;
+            for (int y = rs.first;; y += rs.step) {
+                const std::uint32_t rowBase = static_cast<std::uint32_t>(y) * static_cast<std::uint32_t>(cam.width);
+                for (int x = cs.first;; x += cs.step) {
+                    const std::uint32_t pixel = rowBase + static_cast<std::uint32_t>(x);
+                    const std::uint32_t begin = ldi.pixelStart[pixel], end = ldi.pixelStart[pixel + 1];
+                    if (begin != end) {
+                        const glm::vec3 local((static_cast<float>(x) + 0.5f - principal.x) / cam.focal,
+                                              (static_cast<float>(y) + 0.5f - principal.y) / cam.focal, 1.0f);
+                        const float nearest = glm::dot(offset, glm::normalize(toWorld * local));
+                        // Points before `nearest` along the ray, ascending, meet those
+                        // after it, descending; the farther from it goes first.
+                        std::uint32_t lo = begin, hi = end;
+                        std::uint32_t split = static_cast<std::uint32_t>(
+                            std::upper_bound(ldi.rayDepth.begin() + begin, ldi.rayDepth.begin() + end, nearest) -
+                            ldi.rayDepth.begin());
+                        while (lo < split && hi > split) {
+                            if (nearest - ldi.rayDepth[lo] >= ldi.rayDepth[hi - 1] - nearest) out.push_back(ldi.points[lo++]);
+                            else out.push_back(ldi.points[--hi]);
+                        }
+                        while (lo < split) out.push_back(ldi.points[lo++]);
+                        while (hi > split) out.push_back(ldi.points[--hi]);
+                    }
+                    if (x == cs.last) break;
+                }
+                if (y == rs.last) break;
+            }
+        }
+    }
+}
+
+} // namespace arcomp
