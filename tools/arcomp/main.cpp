@@ -2,9 +2,11 @@
 // Command.hpp); this file only parses the command line and maps failures to
 // exit codes.
 
+#include "graph/GazeSource.hpp"
 #include "graph/ModelError.hpp"
 #include "runtime/ConfigError.hpp"
 #include "tools/arcomp/Command.hpp"
+#include "video/VideoError.hpp"
 
 #include <spdlog/spdlog.h>
 
@@ -25,7 +27,8 @@ void addAll(CLI::App& parent, std::vector<Command>& commands, std::vector<std::p
 
 bool isBadInput(const std::exception& e) {
     return dynamic_cast<const InputError*>(&e) || dynamic_cast<const ModelError*>(&e) ||
-           dynamic_cast<const ConfigError*>(&e);
+           dynamic_cast<const ConfigError*>(&e) || dynamic_cast<const VideoError*>(&e) ||
+           dynamic_cast<const GazeTrackError*>(&e);
 }
 
 } // namespace
