@@ -82,6 +82,8 @@ StationConfig loadStationConfig(const std::filesystem::path& file) {
     render.vec4("background", cfg.render.background);
     render.finish();
 
+    readOperatorConfig(root, cfg.operation);
+
     root.finish();
     report.throwIfAny();
     return cfg;

@@ -6,6 +6,7 @@
 //   StationConfig cfg = loadStationConfig("configs/demo-replay.yaml");
 
 #include "graph/Shading.hpp"
+#include "runtime/OperatorConfig.hpp"
 
 #include <glm/glm.hpp>
 
@@ -52,6 +53,7 @@ struct StationConfig {
     std::vector<ObjectConfig> objects;
     CameraConfig camera;
     RenderConfig render;
+    OperatorConfig operation;
 };
 
 StationConfig loadStationConfig(const std::filesystem::path& file);

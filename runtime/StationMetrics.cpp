@@ -1,0 +1,144 @@
+#include "runtime/StationMetrics.hpp"
+
+#include <cstdio>
+#include <sstream>
+
+namespace arcomp {
+
+namespace {
+
+constexpr std::size_t kKeptErrors = 10;
+
+// JSON string literal; control characters escaped so a device path or an
+// OS message can never break the document.
+std::string quoted(std::string_view text) {
+    std::string out = "\"";
+    for (char c : text) {
+        switch (c) {
+        case '"': out += "\\\""; break;
+        case '\\': out += "\\\\"; break;
+        case '\n': out += "\\n"; break;
+        case '\t': out += "\\t"; break;
+        default:
+            if (static_cast<unsigned char>(c) < 0x20) {
+                char escape[8];
+                std::snprintf(escape, sizeof escape, "\\u%04x", c);
+                out += escape;
+            } else {
+                out += c;
+            }
+        }
+    }
+    return out + "\"";
+}
+
+// Prometheus label values escape backslash, quote and newline.
+std::string labelValue(std::string_view text) {
+    std::string out;
+    for (char c : text) {
+        if (c == '\\' || c == '"') out += '\\';
+        out += c == '\n' ? 'n' : c;
+    }
+    return out;
+}
+
+} // namespace
+
+StationMetrics::StationMetrics() : started_(std::chrono::steady_clock::now()) {}
+
+void StationMetrics::recordFrame(double frameMs) {
+    const auto now = std::chrono::steady_clock::now();
+    std::lock_guard lock(mutex_);
+    ++frames_;
+    lastFrameMs_ = frameMs;
+    frameSecondsSum_ += frameMs / 1000.0;
+    for (std::size_t i = 0; i < kFrameTimeBuckets.size(); ++i)
+        if (frameMs / 1000.0 <= kFrameTimeBuckets[i]) {
+            ++bucketCounts_[i];
+            break;
+        }
+    recentFrames_.push_back(now);
+    while (now - recentFrames_.front() > std::chrono::seconds(1)) recentFrames_.pop_front();
+}
+
+void StationMetrics::setCamera(const std::string& name, const SourceState& state, std::uint64_t drops) {
+    std::lock_guard lock(mutex_);
+    Camera& camera = cameras_[name];
+    const bool lost = isLost(state.status) || state.status == SourceStatus::Stalled;
+    if (camera.wasLost && state.status == SourceStatus::Streaming) ++camera.reconnects;
+    if (lost) camera.wasLost = true;
+    else if (state.status == SourceStatus::Streaming) camera.wasLost = false;
+    camera.state = state;
+    camera.drops = drops;
+}
+
+void StationMetrics::recordError(std::string message) {
+    std::lock_guard lock(mutex_);
+    ++errors_;
+    lastErrors_.push_back(std::move(message));
+    if (lastErrors_.size() > kKeptErrors) lastErrors_.pop_front();
+}
+
+void StationMetrics::setConfig(std::string file) {
+    std::lock_guard lock(mutex_);
+    config_ = std::move(file);
+}
+
+std::string StationMetrics::statusJson() const {
+    std::lock_guard lock(mutex_);
+    const double uptime = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+    std::ostringstream s;
+    s << "{\"config\":" << quoted(config_) << ",\"uptime_s\":" << uptime << ",\"frames\":" << frames_
+      << ",\"fps\":" << recentFrames_.size() << ",\"last_frame_ms\":" << lastFrameMs_ << ",\"cameras\":[";
+    bool first = true;
+    for (const auto& [name, camera] : cameras_) {
+        s << (first ? "" : ",") << "{\"name\":" << quoted(name) << ",\"state\":" << quoted(sourceStatusName(camera.state.status))
+          << ",\"reason\":" << quoted(camera.state.reason) << ",\"drops\":" << camera.drops
+          << ",\"reconnects\":" << camera.reconnects << '}';
+        first = false;
+    }
+    s << "],\"errors\":" << errors_ << ",\"last_errors\":[";
+    for (std::size_t i = 0; i < lastErrors_.size(); ++i) s << (i ? "," : "") << quoted(lastErrors_[i]);
+    s << "]}";
+    return s.str();
+}
+
+std::string StationMetrics::prometheusText() const {
+    std::lock_guard lock(mutex_);
+    const double uptime = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+    std::ostringstream s;
+    s << "# HELP arcomp_uptime_seconds Seconds since the station started.\n"
+         "# TYPE arcomp_uptime_seconds gauge\n"
+      << "arcomp_uptime_seconds " << uptime << '\n'
+      << "# HELP arcomp_frame_time_seconds Time from one frame's start to the next.\n"
+         "# TYPE arcomp_frame_time_seconds histogram\n";
+    std::uint64_t cumulative = 0;
+    for (std::size_t i = 0; i < kFrameTimeBuckets.size(); ++i) {
+        cumulative += bucketCounts_[i];
+        s << "arcomp_frame_time_seconds_bucket{le=\"" << kFrameTimeBuckets[i] << "\"} " << cumulative << '\n';
+    }
+    s << "arcomp_frame_time_seconds_bucket{le=\"+Inf\"} " << frames_ << '\n'
+      << "arcomp_frame_time_seconds_sum " << frameSecondsSum_ << '\n'
+      << "arcomp_frame_time_seconds_count " << frames_ << '\n'
+      << "# HELP arcomp_frames_per_second Frames rendered in the last second.\n"
+         "# TYPE arcomp_frames_per_second gauge\n"
+      << "arcomp_frames_per_second " << recentFrames_.size() << '\n'
+      << "# HELP arcomp_camera_up 1 while the camera streams, 0 otherwise.\n"
+         "# TYPE arcomp_camera_up gauge\n";
+    for (const auto& [name, camera] : cameras_)
+        s << "arcomp_camera_up{camera=\"" << labelValue(name) << "\"} " << (camera.state.status == SourceStatus::Streaming ? 1 : 0) << '\n';
+    s << "# HELP arcomp_camera_dropped_frames_total Frames a camera delivered that the station was too slow to show.\n"
+         "# TYPE arcomp_camera_dropped_frames_total counter\n";
+    for (const auto& [name, camera] : cameras_)
+        s << "arcomp_camera_dropped_frames_total{camera=\"" << labelValue(name) << "\"} " << camera.drops << '\n';
+    s << "# HELP arcomp_camera_reconnects_total Times a lost camera came back.\n"
+         "# TYPE arcomp_camera_reconnects_total counter\n";
+    for (const auto& [name, camera] : cameras_)
+        s << "arcomp_camera_reconnects_total{camera=\"" << labelValue(name) << "\"} " << camera.reconnects << '\n';
+    s << "# HELP arcomp_errors_total Errors the station reported and recovered from.\n"
+         "# TYPE arcomp_errors_total counter\n"
+      << "arcomp_errors_total " << errors_ << '\n';
+    return s.str();
+}
+
+} // namespace arcomp

@@ -1,0 +1,61 @@
+#pragma once
+// What an operator can learn about a running station: frame times, drops,
+// camera states and the last errors. The frame loop records into it; the
+// status server renders it as JSON (/status) and Prometheus text (/metrics)
+// from another thread, so every call takes a short lock.
+//
+//   StationMetrics metrics;
+//   metrics.recordFrame(16.4);                              // each frame, ms
+//   metrics.setCamera("front", {SourceStatus::Streaming, ""}, drops);
+//   std::string text = metrics.prometheusText();
+
+#include "video/SourceStatus.hpp"
+
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <mutex>
+#include <string>
+
+namespace arcomp {
+
+class StationMetrics {
+public:
+    // Upper bounds of the frame-time histogram, in seconds (Prometheus `le`).
+    static constexpr std::array<double, 9> kFrameTimeBuckets{0.005, 0.010, 0.0167, 0.020, 0.0333, 0.050, 0.100, 0.250, 1.0};
+
+    StationMetrics();
+
+    void recordFrame(double frameMs);
+    // `drops` is the source's running total; `reconnects` counts transitions
+    // from lost back to streaming, which the station sees and the source does not report.
+    void setCamera(const std::string& name, const SourceState& state, std::uint64_t drops);
+    void recordError(std::string message);
+    void setConfig(std::string file);
+
+    std::string statusJson() const;
+    std::string prometheusText() const;
+
+private:
+    struct Camera {
+        SourceState state;
+        std::uint64_t drops = 0;
+        std::uint64_t reconnects = 0;
+        bool wasLost = false;
+    };
+    mutable std::mutex mutex_;
+    std::chrono::steady_clock::time_point started_;
+    std::string config_;
+    std::uint64_t frames_ = 0;
+    double frameSecondsSum_ = 0.0;
+    std::array<std::uint64_t, kFrameTimeBuckets.size()> bucketCounts_{};  // not cumulative
+    std::deque<std::chrono::steady_clock::time_point> recentFrames_;     // the last second, for fps
+    double lastFrameMs_ = 0.0;
+    std::map<std::string, Camera> cameras_;
+    std::deque<std::string> lastErrors_;  // newest last, the last ten
+    std::uint64_t errors_ = 0;
+};
+
+} // namespace arcomp

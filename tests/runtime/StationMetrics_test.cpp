@@ -1,0 +1,50 @@
+#include "runtime/StationMetrics.hpp"
+
+#include <gtest/gtest.h>
+
+namespace arcomp {
+
+TEST(StationMetrics, histogramBucketsAreCumulativeAndCountEveryFrame) {
+    StationMetrics metrics;
+    metrics.recordFrame(4.0);    // <= 5 ms
+    metrics.recordFrame(15.0);   // <= 16.7 ms
+    metrics.recordFrame(400.0);  // <= 1 s
+    metrics.recordFrame(2500.0); // only +Inf
+    const std::string text = metrics.prometheusText();
+    EXPECT_NE(text.find("arcomp_frame_time_seconds_bucket{le=\"0.005\"} 1\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("arcomp_frame_time_seconds_bucket{le=\"0.0167\"} 2\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("arcomp_frame_time_seconds_bucket{le=\"1\"} 3\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("arcomp_frame_time_seconds_bucket{le=\"+Inf\"} 4\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("arcomp_frame_time_seconds_count 4\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("arcomp_frame_time_seconds_sum 2.919\n"), std::string::npos) << text;
+}
+
+TEST(StationMetrics, cameraFaultAndReconnectShowInBothViews) {
+    StationMetrics metrics;
+    metrics.setCamera("front", {SourceStatus::Streaming, ""}, 0);
+    metrics.setCamera("front", {SourceStatus::Disconnected, "/dev/video0: ENODEV while streaming"}, 3);
+    std::string json = metrics.statusJson();
+    EXPECT_NE(json.find("\"state\":\"disconnected\""), std::string::npos) << json;
+    EXPECT_NE(json.find("ENODEV while streaming"), std::string::npos) << json;
+    EXPECT_NE(metrics.prometheusText().find("arcomp_camera_up{camera=\"front\"} 0\n"), std::string::npos);
+
+    metrics.setCamera("front", {SourceStatus::Streaming, ""}, 3);
+    metrics.setCamera("front", {SourceStatus::Streaming, ""}, 5);  // still the same reconnect
+    const std::string text = metrics.prometheusText();
+    EXPECT_NE(text.find("arcomp_camera_up{camera=\"front\"} 1\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("arcomp_camera_reconnects_total{camera=\"front\"} 1\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("arcomp_camera_dropped_frames_total{camera=\"front\"} 5\n"), std::string::npos) << text;
+}
+
+TEST(StationMetrics, statusJsonEscapesMessagesAndKeepsTheLastTenErrors) {
+    StationMetrics metrics;
+    for (int i = 0; i < 12; ++i) metrics.recordError("error " + std::to_string(i));
+    metrics.recordError("quote \" backslash \\ newline \n tab \t bell \a");
+    const std::string json = metrics.statusJson();
+    EXPECT_NE(json.find("\"errors\":13"), std::string::npos) << json;
+    EXPECT_EQ(json.find("\"error 2\""), std::string::npos) << "errors beyond the last ten are dropped";
+    EXPECT_NE(json.find("\"error 3\""), std::string::npos) << json;
+    EXPECT_NE(json.find(R"(quote \" backslash \\ newline \n tab \t bell \u0007)"), std::string::npos) << json;
+}
+
+} // namespace arcomp
