@@ -82,6 +82,8 @@ StationConfig loadStationConfig(const std::filesystem::path& file) {
     render.vec4("background", cfg.render.background);
     render.finish();
 
+    readCompositingConfig(root, cfg.compositing);
+
     root.finish();
     report.throwIfAny();
     return cfg;
