@@ -114,6 +114,13 @@ void Station::buildHoldouts() {
     holdoutScene_.update();
 }
 
+Image Station::readHoldout() {
+    if (!holdoutMask_) holdoutMask_ = std::make_unique<RenderTarget>(compositor_->size());
+    holdoutMask_->bind();
+    holdoutRenderer_->draw(holdoutScene_, holdoutList_, view_, {.clearColor = glm::vec4(0.0f)});
+    return holdoutMask_->read();
+}
+
 std::size_t Station::silhouetteTrianglesTotal() const {
     std::size_t n = 0;
     for (const SilhouetteNode& s : silhouettes_.nodes)
@@ -191,23 +198,27 @@ bool Station::frame() {
     }
     stats_.selectMs = msSince(t);
 
-    compositor_->cgTarget().bind();
-    cgRenderer_->draw(scene_, cgList_, view_, {.clearColor = glm::vec4(0.0f)});
+    const CompositorConfig& comp = cfg_.compositing.compositor;
+    compositor_->begin(frame_, {.backdropVideo = comp.backdropVideo, .backdropColor = comp.backdropColor});
+    glFinish();
+    stats_.compositeMs = msSince(t);
+
+    cgRenderer_->draw(scene_, cgList_, view_, {.clearColor = std::nullopt});
     glFinish();
     stats_.cgTriangles = cgRenderer_->trianglesDrawn();
     stats_.renderMs = msSince(t);
 
-    compositor_->holdoutTarget().bind();
-    holdoutRenderer_->draw(holdoutScene_, holdoutList_, view_, {.clearColor = glm::vec4(0.0f)});
+    compositor_->beginHoldout();
+    holdoutRenderer_->draw(holdoutScene_, holdoutList_, view_, {.clearColor = std::nullopt});
+    compositor_->endHoldout();
     glFinish();
     stats_.holdoutTriangles = holdoutRenderer_->trianglesDrawn();
     stats_.holdoutMs = msSince(t);
 
-    compositor_->uploadVideo(frame_, person_);
-    compositor_->composite({.backdropVideo = cfg_.compositing.compositor.backdropVideo,
-                            .backdropColor = cfg_.compositing.compositor.backdropColor});
+    compositor_->person(person_);
     glFinish();
-    stats_.compositeMs = msSince(t);
+    stats_.compositeMs += msSince(t);
+    stats_.personTiles = compositor_->personTiles();
 
     ++frames_;
     stats_.frame = frames_;

@@ -3,6 +3,8 @@
 // the person matte, the CG scene and its holdout meshes, the renderers, the
 // compositor and the file outputs. frame() runs
 //   capture -> update -> select -> render -> composite -> output
+// (composite being: backdrop, CG, holdout into the stencil, person layer;
+// see runtime/Compositor.hpp)
 // and records each stage's milliseconds in stats().
 //
 //   auto ctx = HeadlessContext::create(GlRequest::Auto);   // or a window's context
@@ -54,13 +56,14 @@ struct FrameStats {
     double selectMs = 0;       // culling, LOD, silhouette region, in front / behind
     double renderMs = 0;       // CG, all objects, shaded
     double holdoutMs = 0;      // holdout mask from the front objects' meshes
-    double compositeMs = 0;    // video upload and the full-screen pass
+    double compositeMs = 0;    // backdrop and person uploads, person tiles drawn
     double outputMs = 0;       // read back and write files (0 without file outputs)
     double totalMs = 0;
     std::size_t cgTriangles = 0;
     std::size_t holdoutTriangles = 0;
     std::size_t objectsInFront = 0;
     std::size_t objectsBehind = 0;
+    std::size_t personTiles = 0;  // 32x32 tiles where the matte had any alpha
     bool newVideoFrame = false;  // live: false when the camera had nothing new
 };
 
@@ -83,8 +86,10 @@ public:
     const View& view() const { return view_; }
     glm::ivec2 size() const { return compositor_->size(); }
     const std::vector<std::string>& warnings() const { return warnings_; }
-    // Holdout mask of the last frame, read back (R channel: 255 where cut).
-    Image readHoldout() const { return compositor_->holdoutTarget().read(); }
+    // The last frame's holdout mask, drawn again (same meshes, same view)
+    // into a colour target and read back: 255 where the person is cut. The
+    // frame itself keeps the mask only in the stencil.
+    Image readHoldout();
     // The last matte output (premultiplied BGRA, video size).
     const cv::Mat& personLayer() const { return person_; }
     // Overrides the camera (tests move it along a path); keeps the intrinsics.
@@ -109,6 +114,7 @@ private:
     DrawList cgList_, holdoutCandidates_, holdoutList_;
     std::unique_ptr<Renderer> cgRenderer_, holdoutRenderer_;
     std::unique_ptr<Compositor> compositor_;
+    std::unique_ptr<RenderTarget> holdoutMask_;  // only for readHoldout()
     std::unique_ptr<VideoFileWriter> video_;
     std::vector<std::string> warnings_;
     cv::Mat frame_, person_, bgr_;

@@ -179,7 +179,7 @@ StationInput pattern(glm::ivec2 size) {
         std::make_unique<TestPatternSource>(TestPatternOptions{.width = size.x, .height = size.y, .paced = false}), 30.0);
 }
 
-cv::Mat holdoutMask(const Station& s) { return coverageOf(s.readHoldout()).clone(); }
+cv::Mat holdoutMask(Station& s) { return coverageOf(s.readHoldout()).clone(); }
 
 TEST(Station, silhouetteHoldoutDiffersFromFullMeshOnlyAtTheOutline) {
     auto ctx = HeadlessContext::create(GlRequest::Auto);
