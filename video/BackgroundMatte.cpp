@@ -79,17 +79,21 @@ void BackgroundMatte::apply(const cv::Mat& frame, cv::Mat& person) {
     if (!openKernel_.empty()) cv::morphologyEx(mask_, mask_, cv::MORPH_OPEN, openKernel_);
     if (!closeKernel_.empty()) cv::morphologyEx(mask_, mask_, cv::MORPH_CLOSE, closeKernel_);
 
-    if (mask_.size() != frame.size()) cv::resize(mask_, alpha_, frame.size(), 0, 0, cv::INTER_LINEAR);
-    else mask_.copyTo(alpha_);
+    // Feathering and smoothing at model scale: a fraction of the pixels, and
+    // the linear upscale below softens the edge further.
     if (spec_.featherPx > 0) {
-        const int k = spec_.featherPx | 1;
-        cv::GaussianBlur(alpha_, alpha_, {k, k}, 0.0);
+        const int k = std::max(1, static_cast<int>(spec_.featherPx * spec_.scale + 0.5)) | 1;
+        cv::GaussianBlur(mask_, soft_, {k, k}, 0.0);
+    } else {
+        mask_.copyTo(soft_);
     }
     if (spec_.temporal > 0.0) {
-        if (previous_.size() == alpha_.size())
-            cv::addWeighted(previous_, spec_.temporal, alpha_, 1.0 - spec_.temporal, 0.0, alpha_);
-        alpha_.copyTo(previous_);
+        if (previous_.size() == soft_.size())
+            cv::addWeighted(previous_, spec_.temporal, soft_, 1.0 - spec_.temporal, 0.0, soft_);
+        soft_.copyTo(previous_);
     }
+    if (soft_.size() != frame.size()) cv::resize(soft_, alpha_, frame.size(), 0, 0, cv::INTER_LINEAR);
+    else soft_.copyTo(alpha_);
     premultiply(frame, alpha_, person);
 }
 

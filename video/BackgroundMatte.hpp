@@ -40,7 +40,7 @@ private:
     BackgroundSpec spec_;
     cv::Ptr<cv::BackgroundSubtractor> model_;
     cv::Mat plate_;  // CleanPlate, at model scale
-    cv::Mat small_, mask_, alpha_, previous_;
+    cv::Mat small_, mask_, soft_, alpha_, previous_;
     cv::Mat openKernel_, closeKernel_;
 };
 

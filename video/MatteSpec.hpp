@@ -39,7 +39,7 @@ struct BackgroundSpec {
     double scale = 0.5;          // the model runs at this fraction of the frame size (0.1..1), alpha is scaled back
     int openPx = 3;              // opening: removes specks smaller than this (pixels of the scaled mask); 0 = off
     int closePx = 9;             // closing: fills holes smaller than this; 0 = off
-    int featherPx = 5;           // Gaussian blur of the full-size alpha, for soft edges; 0 = hard edges
+    int featherPx = 5;           // soft edge width in frame pixels (a blur at model scale); 0 = hard edges
     double temporal = 0.5;       // weight of the previous alpha (0..0.95) against flicker; 0 = off
 };
 
