@@ -12,6 +12,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <thread>
 
 namespace arcomp {
 
@@ -156,6 +157,12 @@ bool Station::grabNext() {
         f = std::move(r.frame);
     } else {
         f = input_.live->newest();
+        // A camera takes a moment to deliver its first frame; the station
+        // needs one to know its size.
+        for (int wait = 0; !f && frame_.empty() && wait < 600; ++wait) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+            f = input_.live->newest();
+        }
     }
     stats_.newVideoFrame = f.has_value();
     if (f) {

@@ -12,8 +12,10 @@
 //   while (station.frame()) {}                              // false at the end of the input
 //   station.finish();                                       // closes the video file
 //
-// The composited frame stays in compositedFrame() (a colour texture in an
-// FBO) after frame(): a windowed driver blits or samples it to present it.
+// The composited frame stays in compositedFrame() after frame(): an RGBA8
+// colour texture (colorTexture(), rows bottom-up as GL keeps them) in an FBO
+// (framebuffer()); a windowed driver draws it with a textured quad or blits
+// the FBO to the default framebuffer to present it.
 // Replay pulls frames in order with no thread and no drops, so the same
 // input gives bit-identical output images on the same machine.
 
@@ -70,7 +72,7 @@ struct FrameStats {
 class Station {
 public:
     // A GL context must be current. The output size is the video's size (the
-    // first frame is read here). Outputs come from cfg.compositing.output.
+    // first frame is read here; a live source gets up to 3 s to deliver it). Outputs come from cfg.compositing.output.
     // Throws VideoError when there is no first frame or an output cannot be
     // opened.
     Station(const StationConfig& cfg, StationInput input);

@@ -32,8 +32,10 @@ void paint(glm::ivec2 size, cv::Rect r, std::optional<glm::vec4> colour) {
     glDisable(GL_SCISSOR_TEST);
 }
 
-TEST(Compositor, layersPersonOverCgOverVideoExceptWhereHeldOut) {
-    auto ctx = HeadlessContext::create(GlRequest::Auto);
+class CompositorOnEachApi : public ::testing::TestWithParam<GlRequest> {};
+
+TEST_P(CompositorOnEachApi, layersPersonOverCgOverVideoExceptWhereHeldOut) {
+    auto ctx = HeadlessContext::create(GetParam());
     const glm::ivec2 size{128, 96};
     Compositor c(size);
     cv::Mat frame(size.y, size.x, CV_8UC3, cv::Scalar(90, 90, 90));  // grey video
@@ -52,6 +54,9 @@ TEST(Compositor, layersPersonOverCgOverVideoExceptWhereHeldOut) {
     EXPECT_EQ(at(out, 100, 80), cv::Vec4b(90, 90, 90, 255));  // the video alone
     EXPECT_EQ(c.personTiles(), 2u * 3u);                      // 64x96 of 32-pixel tiles
 }
+
+INSTANTIATE_TEST_SUITE_P(Gl, CompositorOnEachApi, ::testing::Values(GlRequest::Gl33, GlRequest::Es3),
+                         [](const auto& info) { return info.param == GlRequest::Gl33 ? "gl33" : "es3"; });
 
 TEST(Compositor, personCoversCgBehindWhereNotHeldOut) {
     auto ctx = HeadlessContext::create(GlRequest::Auto);
