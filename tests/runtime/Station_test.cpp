@@ -119,7 +119,7 @@ TEST(Station, vtestPersonIsCutByCgInFrontAndCoversCgBehind) {
         if (cv::countNonZero(cut) >= 30) {
             ++framesWithPersonBehindPillar;
             heldOut += static_cast<std::size_t>(cv::countNonZero(cut));
-            named += " " + std::to_string(f);
+            named += " " + std::to_string(f) + ":" + std::to_string(cv::countNonZero(cut)) + "px";
             EXPECT_LE(maxDifference(out, cg, cut), 1) << "frame " << f;
         }
         // The person outside it shows the video, over the CG behind too.
@@ -133,7 +133,7 @@ TEST(Station, vtestPersonIsCutByCgInFrontAndCoversCgBehind) {
         // Background with no CG shows the video.
         EXPECT_LE(maxDifference(out, video, background & ~anyObject), 1) << "frame " << f;
     }
-    std::cout << "frames with a person partly behind the pillar:" << named << "\n";
+    std::cout << "frames with a person partly behind the pillar (frame:person pixels held out):" << named << "\n";
     EXPECT_GE(framesWithPersonBehindPillar, 3);
     EXPECT_GT(heldOut, 500u);
     EXPECT_GT(personShown, 5000u);
