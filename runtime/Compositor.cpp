@@ -63,11 +63,17 @@ void Compositor::begin(const cv::Mat& frame, const CompositeSettings& settings) 
             throw std::invalid_argument("Compositor::begin: expected a BGR frame of the output size");
         // Straight into the colour texture: no pass, just the upload. RGBA is
         // the fast upload path; rows flipped to GL's bottom-first order.
-        cv::cvtColor(frame, plate_, cv::COLOR_BGR2RGBA);
-        cv::flip(plate_, flipped_, 0);
+        // Converted row by row into the flipped position: one pass, not two.
+        plate_.create(frame.rows, frame.cols, CV_8UC4);
+        cv::parallel_for_(cv::Range(0, frame.rows), [&](const cv::Range& rows) {
+            for (int y = rows.start; y < rows.end; ++y) {
+                cv::Mat out = plate_.row(frame.rows - 1 - y);
+                cv::cvtColor(frame.row(y), out, cv::COLOR_BGR2RGBA);
+            }
+        });
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
         glBindTexture(GL_TEXTURE_2D, output_.colorTexture());
-        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size_.x, size_.y, GL_RGBA, GL_UNSIGNED_BYTE, flipped_.data);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size_.x, size_.y, GL_RGBA, GL_UNSIGNED_BYTE, plate_.data);
         glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     } else {
         const glm::vec4 c = settings.backdropColor;

@@ -72,7 +72,7 @@ private:
 
     glm::ivec2 size_;
     RenderTarget output_;
-    cv::Mat plate_, flipped_;
+    cv::Mat plate_;  // the frame as RGBA, rows bottom first
     GLuint personTexture_ = 0, tileVao_ = 0, tileBuffer_ = 0;
     std::vector<float> tiles_;  // two triangles per occupied tile, NDC x, y
     std::size_t tileCount_ = 0;
