@@ -8,6 +8,7 @@
 #include "../support/TempDir.hpp"
 
 #include <gtest/gtest.h>
+#include <opencv2/imgcodecs.hpp>
 
 #include <array>
 #include <cstdio>
@@ -104,4 +105,19 @@ TEST(ReplayCommand, videoOutputIsAFinishedPlayableFile) {
     int frames = 0;
     while (file.next()) ++frames;
     EXPECT_EQ(frames, 6);
+}
+
+TEST(ReplayCommand, matteIsWrittenForInspectionWhenAsked) {
+    TempDir dir;
+    const auto cfg = dir.write("s.yaml", std::string(kScene) +
+                                             "video:\n  source: pattern\n  size: [160, 120]\n"
+                                             "matte:\n  kind: background\n  background:\n    method: clean_plate\n"
+                                             "output:\n  matte_dir: mattes\n");
+    const CommandResult r = replay(cfg.string() + " --frames 4 --out " + (dir.path() / "out").string());
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_EQ(pngsIn(dir.path() / "mattes"), 4u);
+    // The pattern's moving shapes differ from the first frame: some alpha.
+    const cv::Mat alpha = cv::imread((dir.path() / "mattes/matte-000003.png").string(), cv::IMREAD_UNCHANGED);
+    ASSERT_EQ(alpha.type(), CV_8UC1);
+    EXPECT_GT(cv::countNonZero(alpha), 0);
 }
