@@ -39,7 +39,7 @@ std::optional<GlApiKind> parseGlApi(std::string_view text, bool& isAuto);
     X(BINDTEXTURE, glBindTexture) X(BINDVERTEXARRAY, glBindVertexArray) X(BLENDFUNC, glBlendFunc)                \
     X(BLENDFUNCSEPARATE, glBlendFuncSeparate) X(BUFFERDATA, glBufferData) X(BUFFERSUBDATA, glBufferSubData)       \
     X(CHECKFRAMEBUFFERSTATUS, glCheckFramebufferStatus) X(CLEAR, glClear) X(CLEARCOLOR, glClearColor)             \
-    X(CLEARDEPTHF, glClearDepthf) X(COLORMASK, glColorMask) X(COMPILESHADER, glCompileShader)                     \
+    X(CLEARDEPTHF, glClearDepthf) X(CLEARSTENCIL, glClearStencil) X(COLORMASK, glColorMask) X(COMPILESHADER, glCompileShader)                     \
     X(CREATEPROGRAM, glCreateProgram) X(CREATESHADER, glCreateShader) X(CULLFACE, glCullFace)                     \
     X(DELETEBUFFERS, glDeleteBuffers) X(DELETEFRAMEBUFFERS, glDeleteFramebuffers)                                 \
     X(DELETEPROGRAM, glDeleteProgram) X(DELETEQUERIES, glDeleteQueries) X(DELETERENDERBUFFERS, glDeleteRenderbuffers) \

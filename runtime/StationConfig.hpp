@@ -6,6 +6,7 @@
 //   StationConfig cfg = loadStationConfig("configs/demo-replay.yaml");
 
 #include "graph/Shading.hpp"
+#include "runtime/CompositingConfig.hpp"
 #include "runtime/OperatorConfig.hpp"
 
 #include <glm/glm.hpp>
@@ -53,6 +54,7 @@ struct StationConfig {
     std::vector<ObjectConfig> objects;
     CameraConfig camera;
     RenderConfig render;
+    CompositingConfig compositing;  // video, matte, compositor, output
     OperatorConfig operation;
 };
 

@@ -1,0 +1,120 @@
+#include "runtime/CompositingConfig.hpp"
+
+#include "runtime/YamlMap.hpp"
+
+namespace arcomp {
+
+namespace {
+
+void readVideo(YamlMap& root, CompositingConfig& out) {
+    if (!root.has("video")) return;
+    YamlMap v = root.map("video");
+    SourceSpec spec;
+    std::string kind = "file";
+    v.choice("source", kind, {"file", "pattern", "v4l2", "libcamera"});
+    spec.kind = kind == "file" ? SourceKind::File : kind == "pattern" ? SourceKind::Pattern
+              : kind == "v4l2" ? SourceKind::V4l2 : SourceKind::Libcamera;
+    if (spec.kind == SourceKind::File) {
+        // Not required to exist: a missing file falls back (see `fallback`).
+        std::filesystem::path p;
+        v.path("path", p, false, Required::Yes);
+        spec.path = p.string();
+    } else {
+        v.text("path", spec.path);
+    }
+    glm::ivec2 size{spec.width, spec.height};
+    v.vec2i("size", size, 16, 16384);
+    spec.width = size.x;
+    spec.height = size.y;
+    v.number("fps", spec.fps, 1.0, 1000.0);
+    v.boolean("loop", spec.loop);
+    std::string fallback = "none";
+    v.choice("fallback", fallback, {"none", "pattern", "file", "image", "last_good"});
+    spec.fallback.kind = fallback == "pattern" ? FallbackKind::Pattern : fallback == "file" ? FallbackKind::File
+                       : fallback == "image"   ? FallbackKind::Image   : fallback == "last_good" ? FallbackKind::LastGoodFrame
+                                               : FallbackKind::None;
+    if (spec.fallback.kind == FallbackKind::File || spec.fallback.kind == FallbackKind::Image) {
+        std::filesystem::path p;
+        v.path("fallback_path", p, true, Required::Yes);
+        spec.fallback.path = p.string();
+    }
+    v.finish();
+    out.video = spec;
+}
+
+void readMatte(YamlMap& root, MatteSpec& out) {
+    YamlMap m = root.map("matte");
+    std::string kind = "none";
+    m.choice("kind", kind, {"none", "chroma", "background"});
+    out.kind = kind == "chroma" ? MatteKind::Chroma : kind == "background" ? MatteKind::Background : MatteKind::None;
+    if (m.has("chroma")) {
+        YamlMap c = m.map("chroma");
+        glm::vec3 rgb(out.chroma.keyBgr[2], out.chroma.keyBgr[1], out.chroma.keyBgr[0]);
+        c.vec3("key_rgb", rgb);
+        if (glm::any(glm::lessThan(rgb, glm::vec3(0.0f))) || glm::any(glm::greaterThan(rgb, glm::vec3(255.0f))))
+            c.report().add(c.mark(), "matte.chroma.key_rgb: components must lie in 0..255");
+        out.chroma.keyBgr = cv::Vec3b(cv::saturate_cast<uchar>(rgb.b), cv::saturate_cast<uchar>(rgb.g),
+                                      cv::saturate_cast<uchar>(rgb.r));
+        c.number("similarity", out.chroma.similarity, 0.0, 1.0);
+        c.number("smoothness", out.chroma.smoothness, 0.0, 1.0);
+        c.number("spill", out.chroma.spill, 0.0, 1.0);
+        c.finish();
+    }
+    if (m.has("background")) {
+        YamlMap b = m.map("background");
+        BackgroundSpec& s = out.background;
+        std::string method = "mog2";
+        b.choice("method", method, {"mog2", "knn", "cnt", "clean_plate"});
+        s.method = method == "knn" ? BackgroundMethod::Knn : method == "cnt" ? BackgroundMethod::Cnt
+                 : method == "clean_plate" ? BackgroundMethod::CleanPlate : BackgroundMethod::Mog2;
+        std::filesystem::path plate;
+        b.path("clean_plate", plate, true);
+        s.cleanPlate = plate.string();
+        b.number("threshold", s.threshold, 1e-3, 1e4);
+        b.number("learning_rate", s.learningRate, -1.0, 1.0);
+        b.integer("history", s.history, 1, 100000);
+        b.number("scale", s.scale, 0.1, 1.0);
+        b.integer("open_px", s.openPx, 0, 99);
+        b.integer("close_px", s.closePx, 0, 99);
+        b.integer("feather_px", s.featherPx, 0, 99);
+        b.number("temporal", s.temporal, 0.0, 0.95);
+        b.finish();
+    }
+    m.finish();
+}
+
+void readCompositor(YamlMap& root, CompositorConfig& out) {
+    YamlMap c = root.map("compositor");
+    c.number("person_plane_m", out.personPlaneMetres, 1e-3, 1e5);
+    c.number("holdout_region_m", out.holdoutRegionMetres, 1e-3, 1e3);
+    std::string holdout = "silhouette";
+    c.choice("holdout", holdout, {"silhouette", "full"});
+    out.holdout = holdout == "full" ? HoldoutMesh::Full : HoldoutMesh::Silhouette;
+    std::string backdrop = "video";
+    c.choice("backdrop", backdrop, {"video", "color"});
+    out.backdropVideo = backdrop == "video";
+    c.vec4("backdrop_color", out.backdropColor);
+    c.finish();
+}
+
+void readOutput(YamlMap& root, OutputConfig& out) {
+    YamlMap o = root.map("output");
+    o.path("png_dir", out.pngDir, false);
+    o.path("video_file", out.videoFile, false);
+    o.text("video_fourcc", out.videoFourcc);
+    if (out.videoFourcc.size() != 4) o.report().add(o.mark(), "output.video_fourcc: expected 4 characters, e.g. MJPG");
+    o.path("matte_dir", out.matteDir, false);
+    o.boolean("window", out.window);
+    o.finish();
+}
+
+} // namespace
+
+void readCompositingConfig(YamlMap& root, CompositingConfig& out) {
+    readVideo(root, out);
+    readMatte(root, out.matte);
+    readCompositor(root, out.compositor);
+    readOutput(root, out.output);
+}
+
+} // namespace arcomp

@@ -1,0 +1,58 @@
+#pragma once
+// The config sections of a compositing station: `video` (where frames come
+// from), `matte` (how the person is cut from them), `compositor` (where the
+// person stands among the CG) and `output` (where composited frames go).
+// Field-by-field documentation: configs/README.md. An absent section keeps
+// the station as it was without it: no video, no matte, nothing written.
+//
+//   readCompositingConfig(root, cfg.compositing);   // inside loadStationConfig
+
+#include "video/MatteSpec.hpp"
+#include "video/SourceSpec.hpp"
+
+#include <glm/glm.hpp>
+
+#include <filesystem>
+#include <optional>
+
+namespace arcomp {
+
+class YamlMap;
+
+// Which mesh cuts the person where a CG object stands in front: the
+// silhouette mesh of the viewpoint region holding the camera (cheap), or the
+// full mesh (the reference).
+enum class HoldoutMesh { Silhouette, Full };
+
+struct CompositorConfig {
+    // The person layer stands on a plane this far along the camera's view
+    // axis; CG objects whose centre is nearer are in front of the person.
+    float personPlaneMetres = 5.0f;
+    // The silhouette meshes are baked for eyes within a box this many metres
+    // either side of the camera position, in each axis.
+    float holdoutRegionMetres = 0.5f;
+    HoldoutMesh holdout = HoldoutMesh::Silhouette;
+    // What lies behind everything: the video frame itself, or a colour
+    // (studio chroma key, where the backing must not show).
+    bool backdropVideo = true;
+    glm::vec4 backdropColor{0.0f, 0.0f, 0.0f, 1.0f};
+};
+
+struct OutputConfig {
+    std::filesystem::path pngDir;     // frame-000000.png ...; empty: none
+    std::filesystem::path videoFile;  // empty: none
+    std::string videoFourcc = "MJPG";
+    std::filesystem::path matteDir;   // the matte's alpha per frame, for inspection; empty: none
+    bool window = false;              // for `arcomp run`; replay ignores it
+};
+
+struct CompositingConfig {
+    std::optional<SourceSpec> video;  // absent: no video section
+    MatteSpec matte;
+    CompositorConfig compositor;
+    OutputConfig output;
+};
+
+void readCompositingConfig(YamlMap& root, CompositingConfig& out);
+
+} // namespace arcomp

@@ -1,0 +1,162 @@
+#include "runtime/Compositor.hpp"
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <stdexcept>
+
+namespace arcomp {
+
+using namespace gl;
+
+namespace {
+
+// The person layer on the occupied tiles. Output and video share one pixel
+// grid, so the fragment fetches its own texel; video rows arrive top first,
+// framebuffer rows count from the bottom.
+const char* const kPersonShader = R"(
+#ifdef VERTEX
+layout(location = 0) in vec2 aPosition;
+void main() { gl_Position = vec4(aPosition, 0.0, 1.0); }
+#else
+out vec4 fragColor;
+uniform sampler2D uPerson;
+uniform int uHeight;
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    fragColor = texelFetch(uPerson, ivec2(p.x, uHeight - 1 - p.y), 0).bgra;   // uploaded as BGRA bytes
+}
+#endif
+)";
+
+} // namespace
+
+Compositor::Compositor(glm::ivec2 size) : size_(size), output_(size) {
+    glGenTextures(1, &personTexture_);
+    glBindTexture(GL_TEXTURE_2D, personTexture_);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, size.x, size.y, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glGenVertexArrays(1, &tileVao_);
+    glBindVertexArray(tileVao_);
+    glGenBuffers(1, &tileBuffer_);
+    glBindBuffer(GL_ARRAY_BUFFER, tileBuffer_);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+    glBindVertexArray(0);
+    program_.emplace(kPersonShader);
+}
+
+Compositor::~Compositor() {
+    glDeleteTextures(1, &personTexture_);
+    glDeleteBuffers(1, &tileBuffer_);
+    glDeleteVertexArrays(1, &tileVao_);
+}
+
+void Compositor::begin(const cv::Mat& frame, const CompositeSettings& settings) {
+    output_.bind();
+    glDepthMask(GL_TRUE);
+    glStencilMask(0xFF);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    if (settings.backdropVideo) {
+        if (frame.cols != size_.x || frame.rows != size_.y || frame.type() != CV_8UC3)
+            throw std::invalid_argument("Compositor::begin: expected a BGR frame of the output size");
+        // Straight into the colour texture: no pass, just the upload. RGBA is
+        // the fast upload path; rows flipped to GL's bottom-first order.
+        // Converted row by row into the flipped position: one pass, not two.
+        plate_.create(frame.rows, frame.cols, CV_8UC4);
+        cv::parallel_for_(cv::Range(0, frame.rows), [&](const cv::Range& rows) {
+            for (int y = rows.start; y < rows.end; ++y) {
+                cv::Mat out = plate_.row(frame.rows - 1 - y);
+                cv::cvtColor(frame.row(y), out, cv::COLOR_BGR2RGBA);
+            }
+        });
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glBindTexture(GL_TEXTURE_2D, output_.colorTexture());
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size_.x, size_.y, GL_RGBA, GL_UNSIGNED_BYTE, plate_.data);
+        glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    } else {
+        const glm::vec4 c = settings.backdropColor;
+        glClearColor(c.r * c.a, c.g * c.a, c.b * c.a, c.a);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    }
+}
+
+void Compositor::beginHoldout() {
+    output_.bind();
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    // Depth the holdout may write is never read again: the person layer is
+    // drawn without the depth test.
+    glEnable(GL_STENCIL_TEST);
+    glStencilMask(0xFF);
+    glStencilFunc(GL_ALWAYS, 1, 0xFF);
+    // Marked whether or not the depth test passes: the silhouette mesh lies
+    // on (not in front of) its own object's CG surface.
+    glStencilOp(GL_REPLACE, GL_REPLACE, GL_REPLACE);
+}
+
+void Compositor::endHoldout() {
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    glDisable(GL_STENCIL_TEST);
+}
+
+void Compositor::findTiles(const cv::Mat& person) {
+    const int tx = (size_.x + kTile - 1) / kTile, ty = (size_.y + kTile - 1) / kTile;
+    std::vector<std::uint8_t> occupied(static_cast<std::size_t>(tx * ty), 0);
+    cv::parallel_for_(cv::Range(0, ty), [&](const cv::Range& rows) {
+        for (int j = rows.start; j < rows.end; ++j)
+            for (int y = j * kTile; y < std::min(size_.y, (j + 1) * kTile); ++y) {
+                const std::uint8_t* p = person.ptr<std::uint8_t>(y) + 3;
+                for (int x = 0; x < size_.x; ++x)
+                    if (p[4 * x]) occupied[static_cast<std::size_t>(j * tx + x / kTile)] = 1;
+            }
+    });
+    tiles_.clear();
+    tileCount_ = 0;
+    const auto ndcX = [&](int x) { return 2.0f * static_cast<float>(std::min(x, size_.x)) / static_cast<float>(size_.x) - 1.0f; };
+    // Tile row j counts from the top of the image; NDC y from the bottom.
+    const auto ndcY = [&](int y) { return 1.0f - 2.0f * static_cast<float>(std::min(y, size_.y)) / static_cast<float>(size_.y); };
+    for (int j = 0; j < ty; ++j)
+        for (int i = 0; i < tx; ++i) {
+            if (!occupied[static_cast<std::size_t>(j * tx + i)]) continue;
+            const float x0 = ndcX(i * kTile), x1 = ndcX((i + 1) * kTile);
+            const float y0 = ndcY((j + 1) * kTile), y1 = ndcY(j * kTile);
+            tiles_.insert(tiles_.end(), {x0, y0, x1, y0, x1, y1, x0, y0, x1, y1, x0, y1});
+            ++tileCount_;
+        }
+}
+
+void Compositor::person(const cv::Mat& person) {
+    if (person.cols != size_.x || person.rows != size_.y || person.type() != CV_8UC4 || !person.isContinuous())
+        throw std::invalid_argument("Compositor::person: expected continuous premultiplied BGRA of the output size");
+    findTiles(person);
+    if (tileCount_ == 0) return;
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glBindTexture(GL_TEXTURE_2D, personTexture_);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size_.x, size_.y, GL_RGBA, GL_UNSIGNED_BYTE, person.data);
+
+    output_.bind();
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_EQUAL, 0, 0xFF);  // not where the holdout marked
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied "over"
+    ShaderProgram& p = *program_;
+    p.use();
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, personTexture_);
+    glUniform1i(p.uniform("uPerson"), 0);
+    glUniform1i(p.uniform("uHeight"), size_.y);
+    glBindVertexArray(tileVao_);
+    glBindBuffer(GL_ARRAY_BUFFER, tileBuffer_);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(tiles_.size() * sizeof(float)), tiles_.data(), GL_STREAM_DRAW);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(tiles_.size() / 2));
+    glBindVertexArray(0);
+    glDisable(GL_BLEND);
+    glDisable(GL_STENCIL_TEST);
+}
+
+} // namespace arcomp

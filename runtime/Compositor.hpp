@@ -1,0 +1,82 @@
+#pragma once
+// Joins the video and the CG into one frame, in one target, with no
+// full-screen shader pass: llvmpipe pays about 10 ms for every full-screen
+// pass at 1080p, so only the pixels that need work get it.
+//   1. begin(): the video frame is uploaded straight into the output's
+//      colour texture as the backdrop (or the backdrop colour is cleared);
+//      depth and stencil are cleared.
+//   2. The caller draws all CG into output() (Renderer, no clear): CG is
+//      over the backdrop, nearer CG over farther by depth.
+//   3. beginHoldout() ... endHoldout(): the caller draws the objects in front
+//      of the person plane with their silhouette meshes; they only mark the
+//      stencil (the holdout mask), colour and depth stay as they are.
+//   4. person(): the person layer (video x matte, premultiplied) is drawn
+//      "over" everything, except where the stencil holds the holdout, and
+//      only on the tiles where the matte has any alpha.
+// Result: person over CG behind; CG in front wherever it cuts the person.
+//
+//   Compositor c({768, 576});
+//   c.begin(frame, {});                                 // BGR, video size
+//   renderer.draw(scene, cgList, view, {.clearColor = std::nullopt});
+//   c.beginHoldout(); holdoutRenderer.draw(holdoutScene, frontList, view, {.clearColor = std::nullopt}); c.endHoldout();
+//   c.person(personBgra);                               // premultiplied BGRA
+//   Image img = c.output().read();                      // or sample c.output().colorTexture() in a window
+//
+// Colour: everything is blended as premultiplied RGBA in the sRGB-encoded
+// (gamma) space the video arrives in and the renderer writes (it lights in
+// linear and encodes once). Blending encoded values is what broadcast keyers
+// do; it keeps the matte's edge as the matte computed it and costs no
+// decode/encode per pixel, at the price of slightly dark soft edges between
+// very different colours.
+
+#include "runtime/RenderTarget.hpp"
+#include "runtime/ShaderProgram.hpp"
+
+#include <opencv2/core/mat.hpp>
+
+#include <optional>
+#include <vector>
+
+namespace arcomp {
+
+struct CompositeSettings {
+    bool backdropVideo = true;
+    glm::vec4 backdropColor{0.0f, 0.0f, 0.0f, 1.0f};  // straight RGBA, used as given
+};
+
+class Compositor {
+public:
+    // Person tiles are this many pixels square.
+    static constexpr int kTile = 32;
+
+    explicit Compositor(glm::ivec2 size);
+    ~Compositor();
+    Compositor(const Compositor&) = delete;
+    Compositor& operator=(const Compositor&) = delete;
+
+    // `frame`: CV_8UC3 BGR at size(). Leaves output() bound.
+    void begin(const cv::Mat& frame, const CompositeSettings& settings);
+    void beginHoldout();
+    void endHoldout();
+    // `person`: CV_8UC4 premultiplied BGRA at size().
+    void person(const cv::Mat& person);
+
+    // The composited frame: a texture a window can sample or blit from.
+    const RenderTarget& output() const { return output_; }
+    glm::ivec2 size() const { return size_; }
+    // Tiles the person layer was drawn on, last frame.
+    std::size_t personTiles() const { return tileCount_; }
+
+private:
+    void findTiles(const cv::Mat& person);
+
+    glm::ivec2 size_;
+    RenderTarget output_;
+    cv::Mat plate_;  // the frame as RGBA, rows bottom first
+    GLuint personTexture_ = 0, tileVao_ = 0, tileBuffer_ = 0;
+    std::vector<float> tiles_;  // two triangles per occupied tile, NDC x, y
+    std::size_t tileCount_ = 0;
+    std::optional<ShaderProgram> program_;
+};
+
+} // namespace arcomp

@@ -1,0 +1,260 @@
+#include "runtime/Station.hpp"
+
+#include "graph/SelectPass.hpp"
+#include "graph/SilhouetteMesh.hpp"
+#include "runtime/ImageFile.hpp"
+#include "runtime/SceneFile.hpp"
+#include "video/MatteSpec.hpp"
+#include "video/VideoError.hpp"
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <thread>
+
+namespace arcomp {
+
+using namespace gl;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point& t) {
+    const Clock::time_point now = Clock::now();
+    const double ms = std::chrono::duration<double, std::milli>(now - t).count();
+    t = now;
+    return ms;
+}
+
+std::string numbered(const char* stem, std::uint64_t index) {
+    char name[64];
+    std::snprintf(name, sizeof name, "%s-%06llu.png", stem, static_cast<unsigned long long>(index));
+    return name;
+}
+
+} // namespace
+
+StationInput StationInput::fromReplay(std::unique_ptr<FrameGrabber> g, double fps) {
+    StationInput in;
+    in.replay = std::move(g);
+    in.fps = fps;
+    return in;
+}
+
+StationInput StationInput::fromLive(std::unique_ptr<FrameSource> s, double fps) {
+    StationInput in;
+    in.live = std::move(s);
+    in.fps = fps;
+    return in;
+}
+
+Station::Station(const StationConfig& cfg, StationInput input) : cfg_(cfg), input_(std::move(input)) {
+    matte_ = makeMatte(cfg_.compositing.matte);
+    firstPending_ = grabNext();
+    if (!firstPending_) throw VideoError(input_.replay ? input_.replay->name() : input_.live->name(), "first frame",
+                                     "no frame to start from");
+    const glm::ivec2 size(frame_.cols, frame_.rows);
+
+    buildScene(cfg_, scene_, warnings_);
+    scene_.update();
+    // The CG camera is the video camera: its pose and field of view from the
+    // config, its image size the video's.
+    CameraConfig camera = cfg_.camera;
+    camera.size = size;
+    if (!cfg_.camera.given) {
+        view_ = View::framing(scene_.bound().empty() ? Sphere{glm::vec3(0.0f), 1.0f} : scene_.bound(),
+                              camera.fovyDegrees, size);
+    } else {
+        view_ = cameraView(camera);
+    }
+    buildHoldouts();
+
+    cgRenderer_ = std::make_unique<Renderer>();
+    holdoutRenderer_ = std::make_unique<Renderer>();
+    compositor_ = std::make_unique<Compositor>(size);
+
+    const OutputConfig& out = cfg_.compositing.output;
+    if (!out.videoFile.empty())
+        video_ = std::make_unique<VideoFileWriter>(out.videoFile.string(), out.videoFourcc, input_.fps,
+                                                   cv::Size(size.x, size.y));
+}
+
+Station::~Station() { finish(); }
+
+void Station::buildHoldouts() {
+    // Every CG mesh gets a twin in the holdout scene: the same place, its
+    // silhouette mesh baked for the box of eyes around the camera (in the
+    // mesh's own space), drawn unlit white into the mask.
+    Material white;
+    white.name = "holdout";
+    white.baseColor = glm::vec4(1.0f);
+    white.unlit = true;
+    white.doubleSided = true;
+    const std::uint32_t material = holdoutScene_.addMaterial(white);
+    const float r = cfg_.compositing.compositor.holdoutRegionMetres;
+    const bool full = cfg_.compositing.compositor.holdout == HoldoutMesh::Full;
+    for (const NodeId n : scene_.order()) {
+        if (scene_.kind(n) != NodeKind::Mesh) continue;
+        const glm::mat4& world = scene_.world(n);
+        const glm::mat4 toLocal = glm::inverse(world);
+        std::vector<glm::vec3> corners;
+        for (int i = 0; i < 8; ++i) {
+            const glm::vec3 offset((i & 1) ? r : -r, (i & 2) ? r : -r, (i & 4) ? r : -r);
+            corners.push_back(glm::vec3(toLocal * glm::vec4(view_.eye + offset, 1.0f)));
+        }
+        const Geometry& g = scene_.geometry(scene_.meshPart(n).geometry);
+        std::vector<ViewRegion> regions;
+        if (!full) regions.push_back(ViewRegion::fromVertices(corners));
+        const SilhouetteMesh mesh = bakeSilhouetteMesh(g.positions, g.indices, std::move(regions));
+        const NodeId place = holdoutScene_.addTransform(holdoutScene_.root(), world, scene_.name(n));
+        addSilhouetteNode(holdoutScene_, place, silhouettes_, mesh, material, scene_.name(n));
+    }
+    holdoutScene_.update();
+}
+
+Image Station::readHoldout() {
+    if (!holdoutMask_) holdoutMask_ = std::make_unique<RenderTarget>(compositor_->size());
+    holdoutMask_->bind();
+    holdoutRenderer_->draw(holdoutScene_, holdoutList_, view_, {.clearColor = glm::vec4(0.0f)});
+    return holdoutMask_->read();
+}
+
+std::size_t Station::silhouetteTrianglesTotal() const {
+    std::size_t n = 0;
+    for (const SilhouetteNode& s : silhouettes_.nodes)
+        for (const SilhouetteRange& r : s.ranges) n += r.indexCount / 3;
+    return n;
+}
+
+void Station::setCamera(const glm::vec3& eye, const glm::vec3& target) {
+    CameraConfig camera = cfg_.camera;
+    camera.eye = eye;
+    camera.target = target;
+    camera.size = compositor_->size();
+    view_ = cameraView(camera);
+}
+
+bool Station::capture() {
+    if (firstPending_) {
+        firstPending_ = false;  // the constructor read it to learn the size
+        stats_.newVideoFrame = true;
+        return true;
+    }
+    return grabNext();
+}
+
+bool Station::grabNext() {
+    std::optional<Frame> f;
+    if (input_.replay) {
+        GrabResult r = input_.replay->grab();
+        if (!r.frame) {
+            inputEnd_ = r.state.reason;
+            return false;
+        }
+        f = std::move(r.frame);
+    } else {
+        f = input_.live->newest();
+        // A camera takes a moment to deliver its first frame; the station
+        // needs one to know its size.
+        for (int wait = 0; !f && frame_.empty() && wait < 600; ++wait) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+            f = input_.live->newest();
+        }
+    }
+    stats_.newVideoFrame = f.has_value();
+    if (f) {
+        if (!frame_.empty() && f->image.size() != frame_.size())
+            cv::resize(f->image, frame_, frame_.size(), 0, 0, cv::INTER_AREA);  // a fallback of another size
+        else frame_ = f->image;
+        if (!frame_.isContinuous()) frame_ = frame_.clone();
+    }
+    return !frame_.empty();
+}
+
+bool Station::frame() {
+    Clock::time_point t = Clock::now();
+    const Clock::time_point start = t;
+
+    if (!capture()) return false;
+    stats_.captureMs = msSince(t);
+    if (stats_.newVideoFrame || person_.empty()) matte_->apply(frame_, person_);
+    stats_.matteMs = msSince(t);
+
+    scene_.update();
+    holdoutScene_.update();
+    stats_.updateMs = msSince(t);
+
+    select(scene_, view_, {.shading = cfg_.render.shading}, cgList_);
+    select(holdoutScene_, view_, {.shading = Shading::Unlit, .silhouettes = &silhouettes_}, holdoutCandidates_);
+    // In front of the person: the object's centre is nearer than the person
+    // plane along the view axis.
+    holdoutList_.clear();
+    const float plane = cfg_.compositing.compositor.personPlaneMetres;
+    stats_.objectsInFront = stats_.objectsBehind = 0;
+    for (const DrawItem& item : holdoutCandidates_.items) {
+        const float depth = glm::dot(holdoutScene_.worldBound(item.node).center - view_.eye, view_.forward);
+        if (depth < plane) {
+            holdoutList_.items.push_back(item);
+            ++stats_.objectsInFront;
+        } else {
+            ++stats_.objectsBehind;
+        }
+    }
+    stats_.selectMs = msSince(t);
+
+    const CompositorConfig& comp = cfg_.compositing.compositor;
+    compositor_->begin(frame_, {.backdropVideo = comp.backdropVideo, .backdropColor = comp.backdropColor});
+    glFinish();
+    stats_.compositeMs = msSince(t);
+
+    cgRenderer_->draw(scene_, cgList_, view_, {.clearColor = std::nullopt});
+    glFinish();
+    stats_.cgTriangles = cgRenderer_->trianglesDrawn();
+    stats_.renderMs = msSince(t);
+
+    compositor_->beginHoldout();
+    holdoutRenderer_->draw(holdoutScene_, holdoutList_, view_, {.clearColor = std::nullopt});
+    compositor_->endHoldout();
+    glFinish();
+    stats_.holdoutTriangles = holdoutRenderer_->trianglesDrawn();
+    stats_.holdoutMs = msSince(t);
+
+    compositor_->person(person_);
+    glFinish();
+    stats_.compositeMs += msSince(t);
+    stats_.personTiles = compositor_->personTiles();
+
+    ++frames_;
+    stats_.frame = frames_;
+    writeOutputs();
+    stats_.outputMs = msSince(t);
+    stats_.totalMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    return true;
+}
+
+void Station::writeOutputs() {
+    const OutputConfig& out = cfg_.compositing.output;
+    const std::uint64_t index = frames_ - 1;
+    if (!out.matteDir.empty()) {
+        std::filesystem::create_directories(out.matteDir);
+        const std::filesystem::path file = out.matteDir / numbered("matte", index);
+        if (!cv::imwrite(file.string(), alphaOf(person_))) throw VideoError(file.string(), "matte", "cannot write");
+    }
+    if (out.pngDir.empty() && !video_) return;
+    const Image image = compositor_->output().read();
+    if (!out.pngDir.empty()) writePng(out.pngDir / numbered("frame", index), image);
+    if (video_) {
+        const cv::Mat rgba(image.height, image.width, CV_8UC4, const_cast<std::uint8_t*>(image.rgba.data()));
+        cv::cvtColor(rgba, bgr_, cv::COLOR_RGBA2BGR);
+        video_->write(bgr_);
+    }
+}
+
+void Station::finish() {
+    if (video_) video_->close();
+}
+
+} // namespace arcomp

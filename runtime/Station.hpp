@@ -1,0 +1,129 @@
+#pragma once
+// One compositing station's frame, in one place: it owns the video input,
+// the person matte, the CG scene and its holdout meshes, the renderers, the
+// compositor and the file outputs. frame() runs
+//   capture -> update -> select -> render -> composite -> output
+// (composite being: backdrop, CG, holdout into the stencil, person layer;
+// see runtime/Compositor.hpp)
+// and records each stage's milliseconds in stats().
+//
+//   auto ctx = HeadlessContext::create(GlRequest::Auto);   // or a window's context
+//   Station station(cfg, StationInput::replay(std::move(grabber)));
+//   while (station.frame()) {}                              // false at the end of the input
+//   station.finish();                                       // closes the video file
+//
+// The composited frame stays in compositedFrame() after frame(): an RGBA8
+// colour texture (colorTexture(), rows bottom-up as GL keeps them) in an FBO
+// (framebuffer()); a windowed driver draws it with a textured quad or blits
+// the FBO to the default framebuffer to present it.
+// Replay pulls frames in order with no thread and no drops, so the same
+// input gives bit-identical output images on the same machine.
+
+#include "graph/DrawList.hpp"
+#include "graph/Scene.hpp"
+#include "graph/SilhouetteNodes.hpp"
+#include "runtime/Compositor.hpp"
+#include "runtime/Renderer.hpp"
+#include "runtime/StationConfig.hpp"
+#include "video/FrameGrabber.hpp"
+#include "video/FrameSource.hpp"
+#include "video/PersonMatte.hpp"
+#include "video/VideoFileWriter.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace arcomp {
+
+// Where frames come from: a grabber pulled frame by frame (replay: every
+// frame, in order) or a live source whose newest frame is taken.
+struct StationInput {
+    std::unique_ptr<FrameGrabber> replay;
+    std::unique_ptr<FrameSource> live;
+    double fps = 25.0;  // for the video file output
+
+    static StationInput fromReplay(std::unique_ptr<FrameGrabber> g, double fps);
+    static StationInput fromLive(std::unique_ptr<FrameSource> s, double fps);
+};
+
+// Per frame: stage times (wall clock, ms; GL stages end with glFinish so the
+// GPU's share lands in its own stage) and counters.
+struct FrameStats {
+    std::uint64_t frame = 0;   // frames composited so far, this one included
+    double captureMs = 0;      // wait for / decode the frame
+    double matteMs = 0;        // person layer on the CPU
+    double updateMs = 0;       // transforms and bounds
+    double selectMs = 0;       // culling, LOD, silhouette region, in front / behind
+    double renderMs = 0;       // CG, all objects, shaded
+    double holdoutMs = 0;      // holdout mask from the front objects' meshes
+    double compositeMs = 0;    // backdrop and person uploads, person tiles drawn
+    double outputMs = 0;       // read back and write files (0 without file outputs)
+    double totalMs = 0;
+    std::size_t cgTriangles = 0;
+    std::size_t holdoutTriangles = 0;
+    std::size_t objectsInFront = 0;
+    std::size_t objectsBehind = 0;
+    std::size_t personTiles = 0;  // 32x32 tiles where the matte had any alpha
+    bool newVideoFrame = false;  // live: false when the camera had nothing new
+};
+
+class Station {
+public:
+    // A GL context must be current. The output size is the video's size (the
+    // first frame is read here; a live source gets up to 3 s to deliver it). Outputs come from cfg.compositing.output.
+    // Throws VideoError when there is no first frame or an output cannot be
+    // opened.
+    Station(const StationConfig& cfg, StationInput input);
+    ~Station();
+
+    // One frame; false when a replay input has ended (nothing was drawn).
+    bool frame();
+    // Finishes outputs (closes the video file). Safe to call twice.
+    void finish();
+
+    const FrameStats& stats() const { return stats_; }
+    const RenderTarget& compositedFrame() const { return compositor_->output(); }
+    const View& view() const { return view_; }
+    glm::ivec2 size() const { return compositor_->size(); }
+    const std::vector<std::string>& warnings() const { return warnings_; }
+    // The last frame's holdout mask, drawn again (same meshes, same view)
+    // into a colour target and read back: 255 where the person is cut. The
+    // frame itself keeps the mask only in the stencil.
+    Image readHoldout();
+    // The last matte output (premultiplied BGRA, video size).
+    const cv::Mat& personLayer() const { return person_; }
+    // Overrides the camera (tests move it along a path); keeps the intrinsics.
+    void setCamera(const glm::vec3& eye, const glm::vec3& target);
+    std::size_t silhouetteTrianglesTotal() const;
+    // Why a replay input ended ("end after 795 frames", a decoder error); empty while it runs.
+    const std::string& inputEnd() const { return inputEnd_; }  // all regions' lists, for reports
+
+private:
+    bool capture();
+    bool grabNext();
+    void buildHoldouts();
+    void writeOutputs();
+
+    StationConfig cfg_;
+    StationInput input_;
+    std::unique_ptr<PersonMatte> matte_;
+    Scene scene_;
+    Scene holdoutScene_;
+    SilhouetteNodes silhouettes_;
+    View view_;
+    DrawList cgList_, holdoutCandidates_, holdoutList_;
+    std::unique_ptr<Renderer> cgRenderer_, holdoutRenderer_;
+    std::unique_ptr<Compositor> compositor_;
+    std::unique_ptr<RenderTarget> holdoutMask_;  // only for readHoldout()
+    std::unique_ptr<VideoFileWriter> video_;
+    std::vector<std::string> warnings_;
+    cv::Mat frame_, person_, bgr_;
+    bool firstPending_ = false;
+    std::string inputEnd_;
+    FrameStats stats_;
+    std::uint64_t frames_ = 0;
+};
+
+} // namespace arcomp

@@ -1,0 +1,109 @@
+// The video, matte, compositor and output sections: read with defaults,
+// relative paths resolved, mistakes reported with their place.
+
+#include "runtime/ConfigError.hpp"
+#include "runtime/StationConfig.hpp"
+
+#include "../support/TempDir.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace arcomp;
+using arcomp::test::TempDir;
+
+namespace {
+
+const char* const kScene = "scene:\n  objects:\n    - shape: box\n";
+
+std::string issuesOf(const std::filesystem::path& file) {
+    try {
+        loadStationConfig(file);
+    } catch (const ConfigError& e) {
+        std::string s;
+        for (const ConfigIssue& i : e.issues) s += i.format() + "\n";
+        return s;
+    }
+    return {};
+}
+
+} // namespace
+
+TEST(CompositingConfig, absentSectionsMeanNoVideoNoMatteNoOutput) {
+    TempDir dir;
+    const StationConfig cfg = loadStationConfig(dir.write("s.yaml", kScene));
+    EXPECT_FALSE(cfg.compositing.video.has_value());
+    EXPECT_EQ(cfg.compositing.matte.kind, MatteKind::None);
+    EXPECT_TRUE(cfg.compositing.output.pngDir.empty());
+    EXPECT_TRUE(cfg.compositing.output.videoFile.empty());
+    EXPECT_EQ(cfg.compositing.compositor.holdout, HoldoutMesh::Silhouette);
+}
+
+TEST(CompositingConfig, readsEverySectionAndResolvesPathsAgainstTheConfig) {
+    TempDir dir;
+    const auto file = dir.write("site/s.yaml", std::string(kScene) + R"(
+video:
+  source: file
+  path: clips/walk.avi
+  fallback: pattern
+  size: [320, 240]
+matte:
+  kind: chroma
+  chroma:
+    key_rgb: [10, 200, 20]
+    similarity: 0.1
+    smoothness: 0.05
+    spill: 0.2
+  background:
+    method: cnt
+    scale: 0.25
+compositor:
+  person_plane_m: 7.5
+  holdout: full
+  backdrop: color
+  backdrop_color: [0, 0, 0, 1]
+output:
+  png_dir: out/frames
+  video_file: out/composite.avi
+  video_fourcc: XVID
+)");
+    const StationConfig cfg = loadStationConfig(file);
+    ASSERT_TRUE(cfg.compositing.video.has_value());
+    EXPECT_EQ(cfg.compositing.video->kind, SourceKind::File);
+    EXPECT_EQ(cfg.compositing.video->path, (dir.path() / "site/clips/walk.avi").string());
+    EXPECT_EQ(cfg.compositing.video->fallback.kind, FallbackKind::Pattern);
+    EXPECT_EQ(cfg.compositing.video->width, 320);
+    EXPECT_EQ(cfg.compositing.matte.kind, MatteKind::Chroma);
+    EXPECT_EQ(cfg.compositing.matte.chroma.keyBgr, cv::Vec3b(20, 200, 10));
+    EXPECT_FLOAT_EQ(cfg.compositing.matte.chroma.spill, 0.2f);
+    EXPECT_EQ(cfg.compositing.matte.background.method, BackgroundMethod::Cnt);
+    EXPECT_DOUBLE_EQ(cfg.compositing.matte.background.scale, 0.25);
+    EXPECT_FLOAT_EQ(cfg.compositing.compositor.personPlaneMetres, 7.5f);
+    EXPECT_EQ(cfg.compositing.compositor.holdout, HoldoutMesh::Full);
+    EXPECT_FALSE(cfg.compositing.compositor.backdropVideo);
+    EXPECT_EQ(cfg.compositing.output.pngDir, dir.path() / "site/out/frames");
+    EXPECT_EQ(cfg.compositing.output.videoFourcc, "XVID");
+}
+
+TEST(CompositingConfig, reportsMistakesWithTheirPlace) {
+    TempDir dir;
+    const auto file = dir.write("s.yaml", std::string(kScene) + R"(video:
+  source: webcam
+matte:
+  kind: background
+  background:
+    method: mog2
+    scale: 3
+    colour: red
+compositor:
+  person_plane_m: -1
+output:
+  video_fourcc: MPEG4
+)");
+    const std::string issues = issuesOf(file);
+    EXPECT_NE(issues.find("s.yaml:5:"), std::string::npos) << issues;           // source: webcam
+    EXPECT_NE(issues.find("video.path"), std::string::npos) << issues;          // file needs a path
+    EXPECT_NE(issues.find("matte.background.scale"), std::string::npos) << issues;
+    EXPECT_NE(issues.find("matte.background.colour"), std::string::npos) << issues;  // unknown key
+    EXPECT_NE(issues.find("compositor.person_plane_m"), std::string::npos) << issues;
+    EXPECT_NE(issues.find("video_fourcc"), std::string::npos) << issues;
+}

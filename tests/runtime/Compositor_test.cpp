@@ -1,0 +1,120 @@
+// The compositor's layers on hand-painted inputs: the person covers CG
+// behind, the holdout lets CG in front show, the backdrop shows elsewhere.
+
+#include "runtime/Compositor.hpp"
+#include "runtime/GlContext.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace arcomp;
+using namespace arcomp::gl;
+
+namespace {
+
+cv::Vec4b at(const Image& img, int x, int y) {
+    const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(x)) * 4;
+    return {img.rgba[i], img.rgba[i + 1], img.rgba[i + 2], img.rgba[i + 3]};
+}
+
+// Clears a rectangle (x, y from the top) of the bound target's colour, or
+// its stencil to 1: stands in for drawing CG or a holdout mesh there.
+void paint(glm::ivec2 size, cv::Rect r, std::optional<glm::vec4> colour) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(r.x, size.y - r.y - r.height, r.width, r.height);
+    if (colour) {
+        glClearColor(colour->r, colour->g, colour->b, colour->a);
+        glClear(GL_COLOR_BUFFER_BIT);
+    } else {
+        glClearStencil(1);
+        glClear(GL_STENCIL_BUFFER_BIT);
+        glClearStencil(0);
+    }
+    glDisable(GL_SCISSOR_TEST);
+}
+
+class CompositorOnEachApi : public ::testing::TestWithParam<GlRequest> {};
+
+TEST_P(CompositorOnEachApi, layersPersonOverCgOverVideoExceptWhereHeldOut) {
+    auto ctx = HeadlessContext::create(GetParam());
+    const glm::ivec2 size{128, 96};
+    Compositor c(size);
+    cv::Mat frame(size.y, size.x, CV_8UC3, cv::Scalar(90, 90, 90));  // grey video
+    cv::Mat person(size.y, size.x, CV_8UC4, cv::Scalar(0, 0, 0, 0));
+    person(cv::Rect(0, 0, 64, 96)).setTo(cv::Scalar(0, 0, 200, 255));  // solid red person, left half
+    c.begin(frame, {});
+    paint(size, {0, 0, 128, 48}, glm::vec4(0, 0, 1, 1));  // blue CG, top half
+    c.beginHoldout();
+    paint(size, {0, 0, 64, 48}, std::nullopt);  // the CG top-left is in front of the person
+    c.endHoldout();
+    c.person(person);
+    const Image out = c.output().read();
+    EXPECT_EQ(at(out, 10, 10), cv::Vec4b(0, 0, 255, 255));    // held out: the CG in front
+    EXPECT_EQ(at(out, 10, 80), cv::Vec4b(200, 0, 0, 255));    // person over the video
+    EXPECT_EQ(at(out, 100, 10), cv::Vec4b(0, 0, 255, 255));   // CG over the video
+    EXPECT_EQ(at(out, 100, 80), cv::Vec4b(90, 90, 90, 255));  // the video alone
+    EXPECT_EQ(c.personTiles(), 2u * 3u);                      // 64x96 of 32-pixel tiles
+}
+
+INSTANTIATE_TEST_SUITE_P(Gl, CompositorOnEachApi, ::testing::Values(GlRequest::Gl33, GlRequest::Es3),
+                         [](const auto& info) { return info.param == GlRequest::Gl33 ? "gl33" : "es3"; });
+
+TEST(Compositor, personCoversCgBehindWhereNotHeldOut) {
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    const glm::ivec2 size{40, 40};
+    Compositor c(size);
+    cv::Mat frame(size.y, size.x, CV_8UC3, cv::Scalar(0, 0, 0));
+    cv::Mat person(size.y, size.x, CV_8UC4, cv::Scalar(0, 0, 0, 0));
+    person.at<cv::Vec4b>(5, 37) = cv::Vec4b(10, 20, 30, 255);  // one pixel, top right
+    c.begin(frame, {});
+    paint(size, {0, 0, 40, 40}, glm::vec4(0, 1, 0, 1));
+    c.beginHoldout();
+    c.endHoldout();
+    c.person(person);
+    const Image out = c.output().read();
+    EXPECT_EQ(at(out, 37, 5), cv::Vec4b(30, 20, 10, 255));
+    EXPECT_EQ(at(out, 36, 5), cv::Vec4b(0, 255, 0, 255));
+}
+
+TEST(Compositor, halfTransparentPersonBlendsPremultiplied) {
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    const glm::ivec2 size{16, 16};
+    Compositor c(size);
+    cv::Mat frame(size.y, size.x, CV_8UC3, cv::Scalar(0, 0, 0));
+    cv::Mat person(size.y, size.x, CV_8UC4, cv::Scalar(0, 100, 0, 128));  // green at half alpha, premultiplied
+    c.begin(frame, {});
+    paint(size, {0, 0, 16, 16}, glm::vec4(0, 0, 1, 1));
+    c.beginHoldout();
+    c.endHoldout();
+    c.person(person);
+    const cv::Vec4b p = at(c.output().read(), 8, 8);
+    EXPECT_EQ(p[1], 100);
+    EXPECT_NEAR(p[2], 127, 1);  // blue * (1 - 128/255)
+    EXPECT_EQ(p[3], 255);
+}
+
+TEST(Compositor, colourBackdropReplacesTheVideo) {
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    const glm::ivec2 size{16, 16};
+    Compositor c(size);
+    cv::Mat frame(size.y, size.x, CV_8UC3, cv::Scalar(0, 255, 0));  // a green backing
+    cv::Mat person(size.y, size.x, CV_8UC4, cv::Scalar(0, 0, 0, 0));
+    c.begin(frame, {.backdropVideo = false, .backdropColor = {0.2f, 0.2f, 0.2f, 1.0f}});
+    c.person(person);
+    EXPECT_EQ(at(c.output().read(), 3, 3), cv::Vec4b(51, 51, 51, 255));
+    EXPECT_EQ(c.personTiles(), 0u);
+}
+
+TEST(Compositor, videoRowsKeepTheirOrder) {
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    const glm::ivec2 size{8, 6};
+    Compositor c(size);
+    cv::Mat frame(size.y, size.x, CV_8UC3, cv::Scalar(0, 0, 0));
+    frame.row(0).setTo(cv::Scalar(255, 0, 0));  // top row blue
+    c.begin(frame, {});
+    c.person(cv::Mat(size.y, size.x, CV_8UC4, cv::Scalar::all(0)));
+    const Image out = c.output().read();
+    EXPECT_EQ(at(out, 4, 0), cv::Vec4b(0, 0, 255, 255));
+    EXPECT_EQ(at(out, 4, 5), cv::Vec4b(0, 0, 0, 255));
+}
+
+} // namespace

@@ -1,0 +1,237 @@
+// End-to-end compositing: the demo installation replayed on vtest.avi and
+// checked against masks computed independently (each object rendered alone
+// with its full mesh); silhouette against full-mesh holdouts along a camera
+// path; replay determinism.
+
+#include "graph/SelectPass.hpp"
+#include "runtime/GlContext.hpp"
+#include "runtime/ImageFile.hpp"
+#include "runtime/ReplayInput.hpp"
+#include "runtime/SceneFile.hpp"
+#include "runtime/Station.hpp"
+#include "tests/support/TempDir.hpp"
+#include "video/FileSource.hpp"
+#include "video/TestPatternSource.hpp"
+
+#include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
+
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+
+using namespace arcomp;
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* const kVtest = "/usr/share/doc/opencv-doc/examples/data/vtest.avi";
+
+StationConfig demoConfig() {
+    StationConfig cfg = loadStationConfig(fs::path(ARCOMP_SOURCE_DIR) / "configs/demo-replay.yaml");
+    cfg.compositing.output = {};
+    return cfg;
+}
+
+cv::Mat bgrOf(const Image& img) {
+    const cv::Mat rgba(img.height, img.width, CV_8UC4, const_cast<std::uint8_t*>(img.rgba.data()));
+    cv::Mat bgr;
+    cv::cvtColor(rgba, bgr, cv::COLOR_RGBA2BGR);
+    return bgr;
+}
+
+// The config's objects drawn by a plain Renderer: all of them shaded (the
+// reference CG), or one alone as a coverage mask.
+Image renderObjects(const StationConfig& cfg, const std::vector<std::size_t>& which, const View& view, Shading shading) {
+    StationConfig some = cfg;
+    some.objects.clear();
+    for (std::size_t i : which) some.objects.push_back(cfg.objects[i]);
+    Scene scene;
+    std::vector<std::string> warnings;
+    buildScene(some, scene, warnings);
+    scene.update();
+    DrawList list;
+    select(scene, view, {.shading = shading}, list);
+    RenderTarget target(view.viewport);
+    target.bind();
+    Renderer renderer;
+    renderer.draw(scene, list, view, {.clearColor = glm::vec4(0.0f)});
+    return target.read();
+}
+
+cv::Mat coverageOf(const Image& img) {
+    const cv::Mat rgba(img.height, img.width, CV_8UC4, const_cast<std::uint8_t*>(img.rgba.data()));
+    cv::Mat a;
+    cv::extractChannel(rgba, a, 3);
+    return a > 0;
+}
+
+// Largest per-channel difference of two BGR images over a mask (0 if empty).
+int maxDifference(const cv::Mat& a, const cv::Mat& b, const cv::Mat& mask) {
+    if (cv::countNonZero(mask) == 0) return 0;
+    cv::Mat d;
+    cv::absdiff(a, b, d);
+    // Per-channel max over the mask.
+    std::vector<cv::Mat> ch;
+    cv::split(d, ch);
+    double m = 0;
+    for (const cv::Mat& c : ch) {
+        double v = 0;
+        cv::minMaxLoc(c, nullptr, &v, nullptr, nullptr, mask);
+        m = std::max(m, v);
+    }
+    return static_cast<int>(m);
+}
+
+TEST(Station, vtestPersonIsCutByCgInFrontAndCoversCgBehind) {
+    if (!fs::exists(kVtest)) GTEST_SKIP() << kVtest << " absent (opencv-doc not installed)";
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    const StationConfig cfg = demoConfig();
+    ASSERT_EQ(cfg.objects[0].name, "pillar");
+    Station station(cfg, StationInput::fromReplay(std::make_unique<FileSource>(FileOptions{.path = kVtest}), 10.0));
+    FileSource reference(FileOptions{.path = kVtest});
+    const View view = station.view();
+
+    const cv::Mat cg = bgrOf(renderObjects(cfg, {0, 1, 2}, view, cfg.render.shading));
+    const cv::Mat front = coverageOf(renderObjects(cfg, {0}, view, Shading::Unlit));
+    const cv::Mat behind = coverageOf(renderObjects(cfg, {1, 2}, view, Shading::Unlit));
+    const cv::Mat k = cv::getStructuringElement(cv::MORPH_RECT, {3, 3});
+    cv::Mat frontInner, frontOuter, anyObject;
+    cv::erode(front, frontInner, k);
+    cv::dilate(front, frontOuter, k);
+    cv::bitwise_or(frontOuter, behind, anyObject);
+    ASSERT_GT(cv::countNonZero(front), 1000);
+    ASSERT_GT(cv::countNonZero(behind), 1000);
+
+    int framesWithPersonBehindPillar = 0;
+    std::size_t heldOut = 0, personShown = 0, behindShown = 0;
+    std::string named;
+    for (int f = 0; f < 150; ++f) {
+        ASSERT_TRUE(station.frame());
+        const cv::Mat video = reference.next()->image;
+        const cv::Mat out = bgrOf(station.compositedFrame().read());
+        const cv::Mat alpha = alphaOf(station.personLayer());
+        const cv::Mat person = alpha == 255, background = alpha == 0;
+
+        // The person inside the pillar's silhouette shows the pillar.
+        cv::Mat cut = person & frontInner;
+        if (cv::countNonZero(cut) >= 30) {
+            ++framesWithPersonBehindPillar;
+            heldOut += static_cast<std::size_t>(cv::countNonZero(cut));
+            named += " " + std::to_string(f) + ":" + std::to_string(cv::countNonZero(cut)) + "px";
+            EXPECT_LE(maxDifference(out, cg, cut), 1) << "frame " << f;
+        }
+        // The person outside it shows the video, over the CG behind too.
+        cv::Mat visible = person & ~frontOuter;
+        personShown += static_cast<std::size_t>(cv::countNonZero(visible));
+        EXPECT_LE(maxDifference(out, video, visible), 1) << "frame " << f;
+        // Background inside an object behind shows that object.
+        cv::Mat backCg = background & behind & ~frontOuter;
+        behindShown += static_cast<std::size_t>(cv::countNonZero(backCg));
+        EXPECT_LE(maxDifference(out, cg, backCg), 1) << "frame " << f;
+        // Background with no CG shows the video.
+        EXPECT_LE(maxDifference(out, video, background & ~anyObject), 1) << "frame " << f;
+    }
+    std::cout << "frames with a person partly behind the pillar (frame:person pixels held out):" << named << "\n";
+    EXPECT_GE(framesWithPersonBehindPillar, 3);
+    EXPECT_GT(heldOut, 500u);
+    EXPECT_GT(personShown, 5000u);
+    EXPECT_GT(behindShown, 10000u);
+}
+
+// Occluders with many triangles: a dense sphere, and the bunny when the
+// shared data is there.
+StationConfig occluderConfig(HoldoutMesh holdout) {
+    StationConfig cfg;
+    cfg.file = "occluders.yaml";
+    ObjectConfig sphere;
+    sphere.name = "sphere";
+    sphere.shape = "sphere";
+    sphere.radius = 0.8f;
+    sphere.position = {-1.0f, 0.0f, -5.0f};
+    cfg.objects.push_back(sphere);
+    const fs::path bunny = fs::path(ARCOMP_SHARED_DATA) / "meshes/bunny.obj";
+    ObjectConfig other;
+    if (fs::exists(bunny)) {
+        other.name = "bunny";
+        other.model = bunny;
+        other.scale = glm::vec3(12.0f);
+        other.position = {1.0f, -1.0f, -5.0f};
+    } else {
+        other.name = "box";
+        other.shape = "box";
+        other.rotationDegrees = {20.0f, 30.0f, 0.0f};
+        other.position = {1.0f, 0.0f, -5.0f};
+    }
+    cfg.objects.push_back(other);
+    cfg.camera.given = true;
+    cfg.camera.eye = {0.0f, 0.0f, 0.0f};
+    cfg.camera.target = {0.0f, 0.0f, -10.0f};
+    cfg.compositing.compositor.personPlaneMetres = 8.0f;
+    cfg.compositing.compositor.holdoutRegionMetres = 0.5f;
+    cfg.compositing.compositor.holdout = holdout;
+    return cfg;
+}
+
+StationInput pattern(glm::ivec2 size) {
+    return StationInput::fromReplay(
+        std::make_unique<TestPatternSource>(TestPatternOptions{.width = size.x, .height = size.y, .paced = false}), 30.0);
+}
+
+cv::Mat holdoutMask(Station& s) { return coverageOf(s.readHoldout()).clone(); }
+
+TEST(Station, silhouetteHoldoutDiffersFromFullMeshOnlyAtTheOutline) {
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    const glm::ivec2 size{640, 480};
+    Station silhouette(occluderConfig(HoldoutMesh::Silhouette), pattern(size));
+    Station full(occluderConfig(HoldoutMesh::Full), pattern(size));
+    const cv::Mat k = cv::getStructuringElement(cv::MORPH_RECT, {3, 3});
+    std::size_t silhouetteTriangles = 0, fullTriangles = 0;
+    // A path through the region (eyes within 0.4 m of the camera position).
+    for (int i = 0; i < 12; ++i) {
+        const float t = static_cast<float>(i) / 11.0f;
+        const glm::vec3 eye(0.4f * std::cos(6.28f * t), 0.35f * std::sin(6.28f * t), 0.4f * (2.0f * t - 1.0f));
+        const glm::vec3 target = eye + glm::vec3(0.05f * t, 0.0f, -10.0f);
+        silhouette.setCamera(eye, target);
+        full.setCamera(eye, target);
+        ASSERT_TRUE(silhouette.frame());
+        ASSERT_TRUE(full.frame());
+        EXPECT_EQ(silhouette.stats().objectsInFront, 2u);
+        silhouetteTriangles += silhouette.stats().holdoutTriangles;
+        fullTriangles += full.stats().holdoutTriangles;
+        const cv::Mat s = holdoutMask(silhouette), f = holdoutMask(full);
+        ASSERT_GT(cv::countNonZero(f), 1000);
+        cv::Mat inner, outer, differ;
+        cv::erode(f, inner, k);
+        cv::dilate(f, outer, k);
+        cv::bitwise_xor(s, f, differ);
+        // Within 1 px of the full mesh's outline: inside the dilated mask and
+        // outside the eroded one.
+        const cv::Mat farFromOutline = differ & (inner | ~outer);
+        EXPECT_EQ(cv::countNonZero(farFromOutline), 0) << "eye " << eye.x << "," << eye.y << "," << eye.z;
+    }
+    EXPECT_LT(silhouetteTriangles, fullTriangles);
+}
+
+std::vector<char> bytesOf(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+TEST(Station, replayTwiceGivesIdenticalImages) {
+    test::TempDir dir;
+    const std::string base = std::string(ARCOMP_BINARY) + " replay " + ARCOMP_SOURCE_DIR + "/configs/demo-replay.yaml --frames 12 --out ";
+    ASSERT_EQ(std::system((base + (dir.path() / "a").string() + " >/dev/null 2>&1").c_str()), 0);
+    ASSERT_EQ(std::system((base + (dir.path() / "b").string() + " >/dev/null 2>&1").c_str()), 0);
+    int compared = 0;
+    for (const auto& e : fs::directory_iterator(dir.path() / "a")) {
+        const fs::path other = dir.path() / "b" / e.path().filename();
+        ASSERT_TRUE(fs::exists(other)) << other;
+        EXPECT_EQ(bytesOf(e.path()), bytesOf(other)) << e.path().filename();
+        ++compared;
+    }
+    EXPECT_EQ(compared, 12);
+}
+
+} // namespace

@@ -1,0 +1,123 @@
+// arcomp replay as scripts use it: frame counts, fallbacks, the video
+// output finished properly, exit codes for bad input.
+
+#include "video/FileSource.hpp"
+#include "video/TestPatternSource.hpp"
+#include "video/VideoFileWriter.hpp"
+
+#include "../support/TempDir.hpp"
+
+#include <gtest/gtest.h>
+#include <opencv2/imgcodecs.hpp>
+
+#include <array>
+#include <cstdio>
+#include <sys/wait.h>
+
+using arcomp::test::TempDir;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct CommandResult {
+    int code;
+    std::string out;
+};
+
+CommandResult replay(const std::string& args) {
+    const std::string command = std::string(ARCOMP_BINARY) + " replay " + args + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    std::string out;
+    std::array<char, 4096> buffer;
+    while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) out.append(buffer.data(), n);
+    const int status = pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+const char* const kScene = R"(scene:
+  objects:
+    - shape: box
+      position: [0, 0, -4]
+camera:
+  eye: [0, 0, 0]
+  target: [0, 0, -1]
+)";
+
+std::size_t pngsIn(const fs::path& dir) {
+    std::size_t n = 0;
+    for (const auto& e : fs::directory_iterator(dir)) n += e.path().extension() == ".png";
+    return n;
+}
+
+} // namespace
+
+TEST(ReplayCommand, wholeFileIsReplayedFrameForFrame) {
+    TempDir dir;
+    const fs::path clip = dir.path() / "clip.avi";
+    {
+        arcomp::TestPatternSource pattern({.width = 160, .height = 120, .paced = false});
+        arcomp::VideoFileWriter w(clip.string(), "MJPG", 10.0, {160, 120});
+        for (int i = 0; i < 7; ++i) w.write(pattern.render(static_cast<std::uint64_t>(i)));
+    }
+    const auto cfg = dir.write("s.yaml", std::string(kScene) + "matte:\n  kind: background\n");
+    const CommandResult r = replay(cfg.string() + " --video " + clip.string() + " --out " + (dir.path() / "out").string());
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_EQ(pngsIn(dir.path() / "out"), 7u);
+    EXPECT_TRUE(fs::exists(dir.path() / "out/frame-000006.png"));
+}
+
+TEST(ReplayCommand, missingFileWithAFallbackWarnsAndReplaysThePattern) {
+    TempDir dir;
+    const auto cfg = dir.write("s.yaml", std::string(kScene) +
+                                             "video:\n  path: nowhere.avi\n  fallback: pattern\n  size: [160, 120]\n");
+    const CommandResult r = replay(cfg.string() + " --frames 3 --out " + (dir.path() / "out").string());
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_NE(r.out.find("warning"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("nowhere.avi"), std::string::npos) << r.out;
+    EXPECT_EQ(pngsIn(dir.path() / "out"), 3u);
+}
+
+TEST(ReplayCommand, missingFileWithoutFallbackIsBadInput) {
+    TempDir dir;
+    const auto cfg = dir.write("s.yaml", std::string(kScene) + "video:\n  path: nowhere.avi\n");
+    const CommandResult r = replay(cfg.string() + " --out " + (dir.path() / "out").string());
+    EXPECT_EQ(r.code, 2) << r.out;
+    EXPECT_NE(r.out.find("nowhere.avi"), std::string::npos) << r.out;
+}
+
+TEST(ReplayCommand, noVideoAnywhereIsBadInput) {
+    TempDir dir;
+    const auto cfg = dir.write("s.yaml", kScene);
+    const CommandResult r = replay(cfg.string() + " --out " + (dir.path() / "out").string());
+    EXPECT_EQ(r.code, 2) << r.out;
+    EXPECT_NE(r.out.find("no `video` section"), std::string::npos) << r.out;
+}
+
+TEST(ReplayCommand, videoOutputIsAFinishedPlayableFile) {
+    TempDir dir;
+    const auto cfg = dir.write("s.yaml", std::string(kScene) + "video:\n  source: pattern\n  size: [160, 120]\n");
+    const fs::path movie = dir.path() / "movie.avi";
+    const CommandResult r = replay(cfg.string() + " --frames 6 --out " + (dir.path() / "out").string() +
+                                   " --video-out " + movie.string());
+    ASSERT_EQ(r.code, 0) << r.out;
+    arcomp::FileSource file({.path = movie.string()});
+    EXPECT_EQ(file.info().width, 160);
+    int frames = 0;
+    while (file.next()) ++frames;
+    EXPECT_EQ(frames, 6);
+}
+
+TEST(ReplayCommand, matteIsWrittenForInspectionWhenAsked) {
+    TempDir dir;
+    const auto cfg = dir.write("s.yaml", std::string(kScene) +
+                                             "video:\n  source: pattern\n  size: [160, 120]\n"
+                                             "matte:\n  kind: background\n  background:\n    method: clean_plate\n"
+                                             "output:\n  matte_dir: mattes\n");
+    const CommandResult r = replay(cfg.string() + " --frames 4 --out " + (dir.path() / "out").string());
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_EQ(pngsIn(dir.path() / "mattes"), 4u);
+    // The pattern's moving shapes differ from the first frame: some alpha.
+    const cv::Mat alpha = cv::imread((dir.path() / "mattes/matte-000003.png").string(), cv::IMREAD_UNCHANGED);
+    ASSERT_EQ(alpha.type(), CV_8UC1);
+    EXPECT_GT(cv::countNonZero(alpha), 0);
+}

@@ -1,0 +1,56 @@
+#pragma once
+// Everything needed to build a person matte, as plain data. The station's
+// config loader fills it from the `matte` section; tests fill it directly.
+//
+//   MatteSpec spec{.kind = MatteKind::Chroma, .chroma = {.keyBgr = {0, 177, 64}}};
+//   std::unique_ptr<PersonMatte> matte = makeMatte(spec);
+//
+// MatteKind::None gives a matte with alpha 0 everywhere: no person layer,
+// the video is only the backdrop (plain AR overlay).
+
+#include "video/PersonMatte.hpp"
+
+#include <opencv2/core/types.hpp>
+
+#include <memory>
+#include <string>
+
+namespace arcomp {
+
+enum class MatteKind { None, Chroma, Background };
+
+// Keying on the distance in the CbCr plane from the key colour.
+struct ChromaKeySpec {
+    cv::Vec3b keyBgr{64, 177, 0};  // studio green
+    float similarity = 0.08f;      // CbCr distance (0..~0.7) below which a pixel is fully keyed out
+    float smoothness = 0.06f;      // width of the ramp from transparent to opaque above `similarity`
+    float spill = 0.10f;           // width above `similarity` over which key-coloured spill is desaturated; 0 = off
+};
+
+enum class BackgroundMethod { Mog2, Knn, Cnt, CleanPlate };
+
+// Foreground from a background model, cleaned up for a person layer.
+struct BackgroundSpec {
+    BackgroundMethod method = BackgroundMethod::Mog2;
+    std::string cleanPlate{};    // CleanPlate: an image of the empty place; empty = the first frame seen
+    double threshold = 30.0;     // CleanPlate: per-channel difference that counts as foreground; MOG2: variance threshold
+    double learningRate = -1.0;  // -1: the model's own schedule; 0: frozen after the first frame
+    int history = 300;           // frames the model remembers (MOG2, KNN) / stability (CNT, in frames)
+    double scale = 0.5;          // the model runs at this fraction of the frame size (0.1..1), alpha is scaled back
+    int openPx = 3;              // opening: removes specks smaller than this (pixels of the scaled mask); 0 = off
+    int closePx = 9;             // closing: fills holes smaller than this; 0 = off
+    int featherPx = 5;           // soft edge width in frame pixels (a blur at model scale); 0 = hard edges
+    double temporal = 0.5;       // weight of the previous alpha (0..0.95) against flicker; 0 = off
+};
+
+struct MatteSpec {
+    MatteKind kind = MatteKind::None;
+    ChromaKeySpec chroma;
+    BackgroundSpec background;
+};
+
+// Throws VideoError when the spec cannot be built (a clean plate that cannot
+// be read, a value out of range).
+std::unique_ptr<PersonMatte> makeMatte(const MatteSpec& spec);
+
+} // namespace arcomp
