@@ -82,6 +82,7 @@ StationConfig loadStationConfig(const std::filesystem::path& file) {
     render.vec4("background", cfg.render.background);
     render.finish();
 
+    readBudgetConfig(root, cfg.budget);
     root.finish();
     report.throwIfAny();
     return cfg;
