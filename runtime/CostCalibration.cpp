@@ -1,5 +1,6 @@
 #include "runtime/CostCalibration.hpp"
 
+#include "graph/LodAlternatives.hpp"
 #include "graph/RecursiveLeastSquares.hpp"
 #include "graph/View.hpp"
 
@@ -7,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <random>
 
 namespace arcomp {
 
@@ -39,13 +41,17 @@ CostModel calibrateCosts(const Scene& scene, std::span<const NodeId> levelMeshes
     const float fovy = 45.0f;
     const float pixelScale = static_cast<float>(o.viewport.y) * 0.5f / std::tan(glm::radians(fovy) * 0.5f);
 
-    // Every level's geometry reaches the GPU before anything is timed.
+    // Every level's geometry reaches the GPU, and every shading's program is
+    // compiled (llvmpipe compiles on first draw), before anything is timed.
     const View overview = View::framing(bound, fovy, o.viewport);
-    DrawList warm;
-    for (NodeId n : levelMeshes) warm.items.push_back({n, scene.meshPart(n), 1.0f, 1.0f, 0, Shading::Phong});
-    renderer.draw(scene, warm, overview, {.clearColor = o.clearColor});
-    timer.begin();
-    timer.end();
+    for (int s = 0; s < kShadingCount; ++s) {
+        DrawList warm;
+        for (NodeId n : levelMeshes)
+            warm.items.push_back({n, scene.meshPart(n), 1.0f, 1.0f, 0, static_cast<Shading>(s)});
+        timer.begin();
+        renderer.draw(scene, warm, overview, {.clearColor = o.clearColor});
+        timer.end();
+    }
 
     DrawList empty;
     model.overheadMs = timeFrame(scene, empty, overview, renderer, timer, o);
@@ -73,6 +79,58 @@ CostModel calibrateCosts(const Scene& scene, std::span<const NodeId> levelMeshes
             model.set(level, shading, {std::max(0.0, fit.parameters()[0]), std::max(0.0, fit.parameters()[1])});
         }
     }
+    model.resetFit();
+    return model;
+}
+
+CostModel fitCostsOnFrames(const Scene& scene, std::span<const DrawList> lists, std::span<const View> views,
+                           Renderer& renderer, FrameTimer& timer, const CostModel& prior, int frames,
+                           const CalibrationOptions& o, unsigned seed) {
+    if (lists.empty() || lists.size() != views.size() || frames < 1) return prior;
+    const std::size_t levels = prior.levels();
+    const std::size_t pairs = levels * kShadingCount;
+    // θ = (A of each pair in ms per megapixel, B of each pair in ms); pixels
+    // in megapixels keep both halves of θ of similar size.
+    std::vector<double> theta(2 * pairs), variance(2 * pairs);
+    for (std::size_t k = 0; k < pairs; ++k) {
+        const CostCoefficients& c = prior.at(k / kShadingCount, static_cast<Shading>(k % kShadingCount));
+        theta[k] = c.msPerPixel * 1e6;
+        theta[pairs + k] = c.ms;
+        // The prior is trusted to about its own size (and at least 1 ms).
+        variance[k] = std::max(theta[k] * theta[k], 1.0);
+        variance[pairs + k] = std::max(c.ms * c.ms, 1.0);
+    }
+    RecursiveLeastSquares fit(2 * pairs, 1.0, 1.0, 1e12);
+    fit.reset(theta, variance);
+    const LodAlternatives alternatives(scene);
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<std::size_t> pickList(0, lists.size() - 1);
+    std::uniform_int_distribution<int> pickLevel(0, static_cast<int>(levels) - 1), pickShading(0, kShadingCount - 1);
+    std::vector<double> x(2 * pairs);
+    DrawList list;
+    for (int f = 0; f < frames; ++f) {
+        const std::size_t i = pickList(rng);
+        list = lists[i];
+        std::fill(x.begin(), x.end(), 0.0);
+        for (DrawItem& item : list.items) {
+            const int levelCount = alternatives.levelCount(item.node);
+            const auto level = static_cast<std::uint8_t>(std::min(pickLevel(rng), levelCount - 1));
+            item.node = alternatives.levelNode(item.node, level);
+            item.part = scene.meshPart(item.node);
+            item.level = level;
+            item.shading = static_cast<Shading>(pickShading(rng));
+            const std::size_t k = std::min<std::size_t>(item.level, levels - 1) * kShadingCount +
+                                  static_cast<std::size_t>(item.shading);
+            x[k] += item.screenArea * 1e-6;
+            x[pairs + k] += 1.0;
+        }
+        const double ms = timeFrame(scene, list, views[i], renderer, timer, {.repeats = 1, .clearColor = o.clearColor});
+        fit.add(x, ms - prior.overheadMs);
+    }
+    CostModel model = prior;
+    for (std::size_t k = 0; k < pairs; ++k)
+        model.set(k / kShadingCount, static_cast<Shading>(k % kShadingCount),
+                  {std::max(0.0, fit.parameters()[k] * 1e-6), std::max(0.0, fit.parameters()[pairs + k])});
     model.resetFit();
     return model;
 }

@@ -18,6 +18,7 @@
 #include "runtime/FrameTimer.hpp"
 #include "runtime/Renderer.hpp"
 
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -38,5 +39,16 @@ struct CalibrationOptions {
 // options.viewport. The result has levelMeshes.size() levels.
 CostModel calibrateCosts(const Scene& scene, std::span<const NodeId> levelMeshes, Renderer& renderer,
                          FrameTimer& timer, const CalibrationOptions& options);
+
+// Sharpens a table with whole frames of the station's own scene, so that
+// objects hiding one another, overdraw and the real mix of meshes are in
+// the fit: each of `frames` samples takes one of `lists` (a select pass's
+// output, drawn from views[i]), puts every item at a random level and
+// shading, and times it; A and B of every pair are then fitted to all the
+// frames at once by least squares, with `prior` as the starting point that
+// pairs seldom drawn stay near. The overhead is kept from `prior`.
+CostModel fitCostsOnFrames(const Scene& scene, std::span<const DrawList> lists, std::span<const View> views,
+                           Renderer& renderer, FrameTimer& timer, const CostModel& prior, int frames,
+                           const CalibrationOptions& options, unsigned seed = 1);
 
 } // namespace arcomp

@@ -25,7 +25,7 @@ namespace {
 struct Options {
     std::string out = "bench-budget";
     std::string size = "1280x720";
-    std::string timer = "auto";
+    std::string timer = "finish";
     int repeats = 5;
 };
 
@@ -73,7 +73,7 @@ const bool registered = registerBench(
          auto o = std::make_shared<Options>();
          app.add_option("--out", o->out, "folder for calibration.yaml")->capture_default_str();
          app.add_option("--size", o->size, "output size WIDTHxHEIGHT")->capture_default_str();
-         app.add_option("--timer", o->timer, "auto (GL timer queries where available), query or finish")
+         app.add_option("--timer", o->timer, "finish (wall clock to glFinish), auto or query (GL_TIME_ELAPSED where available; on llvmpipe it leaves out most of the work)")
              ->capture_default_str();
          app.add_option("--repeats", o->repeats, "frames per sample (median)")->capture_default_str();
          return [o] { return run(*o); };

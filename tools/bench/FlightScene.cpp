@@ -79,8 +79,7 @@ FlightScene buildFlightScene(const FlightOptions& o) {
 }
 
 View flightView(double t, glm::ivec2 viewport) {
-    // One loop around the range: a wide ellipse whose eastern end passes
-    // right over it, low, looking ahead and a little towards the range.
+    // One loop around the range, a wide ellipse, flying low.
     const double a = glm::two_pi<double>() * t;
     const glm::vec3 centre(100.0f, 0.0f, -100.0f);
     auto at = [&](double phase) {
@@ -89,9 +88,14 @@ View flightView(double t, glm::ivec2 viewport) {
     };
     glm::vec3 eye = at(a);
     eye.y = 45.0f + 25.0f * static_cast<float>(std::sin(3.0 * a));
-    const glm::vec3 ahead = at(a + 0.08);
-    glm::vec3 target = glm::mix(ahead, glm::vec3(150.0f, 0.0f, -150.0f), 0.35f);
-    target.y = 15.0f;
+    // Looking ahead and well towards the range near its eastern end, close
+    // by; ahead and only a little towards it from the far side.
+    glm::vec3 tangent = at(a + 0.01) - at(a);
+    tangent.y = 0.0f;
+    glm::vec3 toRange = glm::vec3(150.0f, 0.0f, -150.0f) - glm::vec3(eye.x, 0.0f, eye.z);
+    const glm::vec3 dir = glm::normalize(glm::normalize(tangent) + (1.5f + 0.7f * static_cast<float>(std::cos(a))) * glm::normalize(toRange));
+    glm::vec3 target = eye + 100.0f * dir;
+    target.y = eye.y - 25.0f;
     return View::lookAt(eye, target, {0, 1, 0}, 55.0f, viewport, 1.0f, 2000.0f);
 }
 
