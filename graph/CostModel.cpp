@@ -2,24 +2,28 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdlib>
 
 namespace arcomp {
 
 namespace {
-// Prior variances of the fit: the gain is known to about ±0.3 at the start,
-// the offset to about ±3 ms; a handful of frames outweighs them.
-constexpr double kGainVariance = 0.1;
-constexpr double kOffsetVariance = 10.0;
-// The cap on the covariance's trace (windup, see RecursiveLeastSquares.hpp).
-constexpr double kMaxTrace = 100.0;
-// Bounds that keep one wild measurement (a stall of the machine) from
-// turning the prediction upside down.
+// The fit averages each frame's own gain, weighted by how much of the frame
+// the items are (a frame that is mostly overhead says little about them),
+// so the variances are in units of one fully weighted frame's: the prior
+// counts as two frames, and the covariance can never wind up past one
+// frame's worth however long the weights stay small.
+constexpr double kGainVariance = 0.5;
+constexpr double kMaxVariance = 1.0;
+// Bounds on the gain: a table off by more than this is the wrong table.
 constexpr double kMinGain = 0.25, kMaxGain = 4.0;
+// Frames whose calibrated items cost less than this draw too little to
+// tell anything about the gain (an empty view is all overhead).
+constexpr double kMinItemsMs = 0.05;
 } // namespace
 
 CostModel::CostModel(std::size_t levels)
-    : levels_(std::max<std::size_t>(levels, 1)), table_(levels_ * kShadingCount), fit_(2, 0.98, 1.0, kMaxTrace) {
+    : levels_(std::max<std::size_t>(levels, 1)), table_(levels_ * kShadingCount), fit_(1, kDefaultForgetting, kGainVariance, kMaxVariance) {
     resetFit();
 }
 
@@ -49,24 +53,29 @@ double CostModel::itemsMs(const DrawList& list) const {
     return sum;
 }
 
-double CostModel::frameMs(double itemsMs) const { return gain() * itemsMs + offset(); }
+double CostModel::frameMs(double itemsMs) const { return gain() * itemsMs + overheadMs; }
 
+// Fits measured - overheadMs ≈ gain · itemsMs, so that a table loaded or
+// changed later needs no reset.
 void CostModel::observe(double itemsMs, double measuredMs) {
-    if (!refit_ || !(measuredMs > 0.0) || !(itemsMs >= 0.0)) return;
-    fit_.add(std::array{itemsMs, 1.0}, measuredMs - overheadMs);
+    if (!refit_ || !std::isfinite(measuredMs) || !std::isfinite(itemsMs) || itemsMs < kMinItemsMs) return;
+    // The sample's own gain, (measured - overhead) / items, kept within a
+    // factor kMaxSampleRatio of the current one and within the bounds.
+    const double current = gain();
+    const double sample = std::clamp((measuredMs - overheadMs) / itemsMs, std::max(kMinGain, current / kMaxSampleRatio),
+                                     std::min(kMaxGain, current * kMaxSampleRatio));
+    const double weight = std::sqrt(itemsMs / (itemsMs + std::max(overheadMs, 0.0)));
+    fit_.add(std::array{weight}, weight * sample);
 }
 
 void CostModel::enableRefit(bool on, double forgetting) {
     refit_ = on;
-    fit_ = RecursiveLeastSquares(2, forgetting, 1.0, kMaxTrace);
+    fit_ = RecursiveLeastSquares(1, forgetting, kGainVariance, kMaxVariance);
     resetFit();
 }
 
-// The fit is of measured - overheadMs, so that a table loaded or changed
-// later needs no reset.
-void CostModel::resetFit() { fit_.reset(std::array{1.0, 0.0}, std::array{kGainVariance, kOffsetVariance}); }
+void CostModel::resetFit() { fit_.reset(std::array{1.0}, std::array{kGainVariance}); }
 
 double CostModel::gain() const { return refit_ ? std::clamp(fit_.parameters()[0], kMinGain, kMaxGain) : 1.0; }
-double CostModel::offset() const { return overheadMs + (refit_ ? fit_.parameters()[1] : 0.0); }
 
 } // namespace arcomp

@@ -14,12 +14,15 @@
 //   model.observe(itemsMs, measuredMs);
 //
 // The calibrated table comes from `arcomp bench calibrate` (runtime/
-// CostCalibration.hpp). While the station runs, observe() re-fits a gain and
-// an offset on the table's sum by recursive least squares with forgetting,
-// so the prediction follows the machine as its load changes. A frame's
-// measurement is one number, the sum over many objects; from sums alone the
-// 2·4·levels entries of the table cannot be told apart while the controller
-// holds most objects at one setting, but a common gain and offset can.
+// CostCalibration.hpp). While the station runs, observe() re-fits one gain
+// on the table's sum by recursive least squares with forgetting, so the
+// prediction follows the machine as its load changes; the overhead stays as
+// measured. Why one number: a frame's measurement is one number, the sum
+// over many objects. While the controller holds the frame time steady, every
+// frame feeds nearly the same sum, and a gain and an offset fitted together
+// cannot be told apart (one drifts to its bound, the other takes over, and
+// the prediction stops responding to what is drawn). A gain alone is
+// identified by every frame that draws anything.
 
 #include "graph/DrawList.hpp"
 #include "graph/RecursiveLeastSquares.hpp"
@@ -49,18 +52,26 @@ public:
     // The calibrated cost of everything in the list, without the overhead.
     double itemsMs(const DrawList& list) const;
     // Predicted frame time for objects whose calibrated costs sum to itemsMs:
-    // gain · itemsMs + offset; before any observation, itemsMs + overheadMs.
+    // gain · itemsMs + overheadMs; before any observation the gain is 1.
     double frameMs(double itemsMs) const;
 
     // Online re-fitting: the calibrated sum that was predicted and the frame
-    // time measured for it. `forgetting` is λ per frame (0.98: about the last
-    // 50 frames count).
+    // time measured for it. `forgetting` is λ per frame (0.92: about the last
+    // dozen frames count, enough to average out a busy machine's jitter and
+    // short enough to follow a scene whose mix drifts from the table's).
+    // Frames that draw (almost) nothing say nothing about the gain and are
+    // ignored; one frame can move the gain's sample by at most a factor
+    // kMaxSampleRatio, so a stall of the machine is a nudge, not a jump.
     void observe(double itemsMs, double measuredMs);
-    void enableRefit(bool on, double forgetting = 0.98);
-    // Forgets the fit: gain 1, offset overheadMs.
+    void enableRefit(bool on, double forgetting = kDefaultForgetting);
+    // Forgets the fit: gain 1.
     void resetFit();
     double gain() const;
-    double offset() const;
+    // The per-frame time that does not scale with what is drawn: overheadMs.
+    double offset() const { return overheadMs; }
+
+    static constexpr double kDefaultForgetting = 0.92;
+    static constexpr double kMaxSampleRatio = 2.0;
 
     double overheadMs = 0.0;
 
