@@ -60,8 +60,11 @@ public:
     // dozen frames count, enough to average out a busy machine's jitter and
     // short enough to follow a scene whose mix drifts from the table's).
     // Frames that draw (almost) nothing say nothing about the gain and are
-    // ignored; one frame can move the gain's sample by at most a factor
-    // kMaxSampleRatio, so a stall of the machine is a nudge, not a jump.
+    // ignored; a frame's own gain is taken within a factor kMaxSampleRatio
+    // of the current one. On a shared machine the jitter is one-sided (other
+    // work only ever slows a frame), and an unbounded average would follow
+    // the stalls up and have the controller undershoot after each; a real
+    // change of the machine still comes through, a quarter per frame at most.
     void observe(double itemsMs, double measuredMs);
     void enableRefit(bool on, double forgetting = kDefaultForgetting);
     // Forgets the fit: gain 1.
@@ -71,7 +74,7 @@ public:
     double offset() const { return overheadMs; }
 
     static constexpr double kDefaultForgetting = 0.92;
-    static constexpr double kMaxSampleRatio = 2.0;
+    static constexpr double kMaxSampleRatio = 1.25;
 
     double overheadMs = 0.0;
 

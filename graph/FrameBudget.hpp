@@ -47,7 +47,7 @@ struct BudgetSettings {
     // Raising a setting must leave this fraction of the target unused.
     double upgradeMargin = 0.05;
     // Frames an object stays down after being lowered before it may rise.
-    int holdFrames = 15;
+    int holdFrames = 4;
     // Importance = screen area · (floor + (1 - floor) · k1(θ)); 1 ranks by
     // screen size alone, as the paper did.
     float eccentricityFloor = 0.25f;

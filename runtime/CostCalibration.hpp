@@ -44,9 +44,10 @@ CostModel calibrateCosts(const Scene& scene, std::span<const NodeId> levelMeshes
 // objects hiding one another, overdraw and the real mix of meshes are in
 // the fit: each of `frames` samples takes one of `lists` (a select pass's
 // output, drawn from views[i]), puts every item at a random level and
-// shading, and times it; A and B of every pair are then fitted to all the
-// frames at once by least squares, with `prior` as the starting point that
-// pairs seldom drawn stay near. The overhead is kept from `prior`.
+// shading, and times it; then A per shading and B per level (a pair's A is
+// its shading's, its B its level's) are fitted to all the frames at once by
+// least squares, starting from `prior` averaged over the other attribute.
+// The overhead is kept from `prior`.
 CostModel fitCostsOnFrames(const Scene& scene, std::span<const DrawList> lists, std::span<const View> views,
                            Renderer& renderer, FrameTimer& timer, const CostModel& prior, int frames,
                            const CalibrationOptions& options, unsigned seed = 1);

@@ -166,6 +166,38 @@ TEST(FrameBudget, convergesOnAMachineSlowerThanItsTable) {
     EXPECT_GT(measured.front(), 15.0 * 1.2);  // the table alone would have missed
 }
 
+TEST(FrameBudget, holdsTheTargetFromBothSidesWhenTheMachineChangesSpeed) {
+    // The machine runs at the table's speed, then slows to 1.5 times it (the
+    // controller must come down), then speeds up to 0.8 times it (it must
+    // come back up). Within a few dozen frames of each change the measured
+    // frames sit in the band the controller aims for, and the re-fitted
+    // gain says how fast the machine is.
+    std::vector<float> areas;
+    std::vector<glm::vec3> at;
+    for (int i = 0; i < 16; ++i) {
+        areas.push_back(2e4f * static_cast<float>(i + 1));
+        at.push_back({-8.0f + static_cast<float>(i), 0.0f, -12.0f});
+    }
+    const Synthetic s(at);
+    const CostModel truth = table();
+    const double target = 30.0;
+    FrameBudget budget(table(), {.targetMs = target});
+    const double speeds[] = {1.0, 1.5, 0.8};
+    for (double speed : speeds) {
+        for (int frame = 0; frame < 80; ++frame) {
+            DrawList list = s.list(areas);
+            budget.apply(s.scene, list, s.view);
+            const double ms = speed * truth.itemsMs(list) + truth.overheadMs;
+            budget.observe(ms);
+            if (frame >= 40) {
+                EXPECT_LE(ms, target * 1.02) << "speed " << speed << " frame " << frame;
+                EXPECT_GE(ms, target * 0.85) << "speed " << speed << " frame " << frame;
+            }
+        }
+        EXPECT_NEAR(budget.model().gain(), speed, 0.02 * speed) << "speed " << speed;
+    }
+}
+
 namespace {
 
 // Counts how often any item's setting changes from one frame to the next

@@ -11,14 +11,19 @@
 // draw, clear to glFinish; select and the controller's own CPU time are
 // reported apart (apply_us). The cost model is calibrated in the same run
 // (or read with --calibration) and re-fitted online during the managed run.
-// Without --target-ms the target is 0.8 times the unmanaged 5th percentile,
-// so that the unmanaged run exceeds it on nearly every frame.
+// Without --target-ms the target is 1.25 times the controller's floor along
+// the path: the frame time predicted with every object at its coarsest level
+// and unlit, scaled by the table's error measured in the unmanaged run. Lower
+// targets cannot be held by choosing level and shading (the pixels of the
+// range seen close up cost more than that whatever is drawn), and the
+// unmanaged run exceeds this one on most frames (frames_over_target_pct).
 //
 // Writes to --out: budget_frames.csv (per frame), budget_frame_time.png
 // (unmanaged, managed, target), budget_prediction.png (managed predicted vs
 // measured) and calibration.yaml.
 
 #include "graph/FrameBudget.hpp"
+#include "graph/LodAlternatives.hpp"
 #include "graph/SelectPass.hpp"
 #include "runtime/CalibrationFile.hpp"
 #include "runtime/CostCalibration.hpp"
@@ -55,6 +60,7 @@ struct Options {
 
 struct Series {
     std::vector<double> ms, predicted, quality, applyUs;
+    std::vector<double> itemsMs, floorItemsMs;  // calibrated: as drawn, all coarsest and unlit
     std::vector<std::size_t> items, reduced;
 };
 
@@ -89,11 +95,17 @@ Series fly(const FlightScene& flight, Renderer& renderer, FrameTimer& timer, int
            const CostModel& table, FrameBudget* budget) {
     Series s;
     DrawList list;
+    const LodAlternatives alternatives(flight.scene);
     const glm::vec4 sky(0.55f, 0.68f, 0.85f, 1.0f);
     for (int f = 0; f < frames; ++f) {
         const View view = flightView(frames > 1 ? f / double(frames - 1) : 0.0, size);
         select(flight.scene, view, {.shading = Shading::Phong}, list);
-        double predicted = table.frameMs(table.itemsMs(list));
+        double floorItems = 0.0;
+        for (const DrawItem& item : list.items)
+            floorItems += table.itemMs(alternatives.levelCount(item.node) - 1u, Shading::Unlit, item.screenArea);
+        s.floorItemsMs.push_back(floorItems);
+        s.itemsMs.push_back(table.itemsMs(list));
+        double predicted = table.frameMs(s.itemsMs.back());
         double quality = 1.0;
         std::size_t reduced = 0;
         if (budget) {
@@ -128,7 +140,7 @@ int run(const Options& o) {
     const glm::ivec2 size = parseSize(o.size, "--size");
     if (o.frames < 2 || o.frames > 100000) throw InputError("--frames must lie in 2..100000");
     if (o.mountains < 1 || o.mountains > 10000) throw InputError("--mountains must lie in 1..10000");
-    if (o.targetMs < 0.0) throw InputError("--target-ms must be positive (0: 0.8 x the unmanaged 5th percentile)");
+    if (o.targetMs < 0.0) throw InputError("--target-ms must be positive (0: 1.25 x the coarsest frame along the path)");
     if (o.timer != "auto" && o.timer != "query" && o.timer != "finish")
         throw InputError("--timer '" + o.timer + "': expected auto, query or finish");
     const std::filesystem::path out(o.out);
@@ -179,19 +191,30 @@ int run(const Options& o) {
     CostModel tableOnly = table;
     tableOnly.enableRefit(false);
     const Series unmanaged = fly(flight, renderer, timer, o.frames, size, tableOnly, nullptr);
-    const double targetMs =
-        o.targetMs > 0.0 ? o.targetMs : std::max(1.0, std::round(percentile(unmanaged.ms, 5) * 0.8 * 2.0) / 2.0);
+    // The table's error on this machine now: the median of measured over
+    // predicted items time in the unmanaged run.
+    std::vector<double> tableGain;
+    for (std::size_t f = 0; f < unmanaged.ms.size(); ++f)
+        if (unmanaged.itemsMs[f] > 0.0) tableGain.push_back((unmanaged.ms[f] - table.overheadMs) / unmanaged.itemsMs[f]);
+    const double gainU = tableGain.empty() ? 1.0 : std::max(0.25, percentile(tableGain, 50));
+    double floorMs = 0.0;
+    for (double items : unmanaged.floorItemsMs) floorMs = std::max(floorMs, gainU * items + table.overheadMs);
+    const double targetMs = o.targetMs > 0.0 ? o.targetMs : std::max(1.0, std::ceil(1.25 * floorMs * 2.0) / 2.0);
 
     std::cerr << "managed run, target " << targetMs << " ms\n";
     FrameBudget budget(table, {.targetMs = targetMs});
     const Series managed = fly(flight, renderer, timer, o.frames, size, tableOnly, &budget);
 
     // Managed-run figures.
-    std::vector<double> absDev, predictionError;
+    // absDev: what a viewer sees. predictedDev: where the controller put the
+    // frame by its own model; the gap between the two is the model's error
+    // and the machine's jitter (on a shared machine, mostly the latter).
+    std::vector<double> absDev, predictedDev, predictionError;
     std::size_t over20 = 0, unmanagedOver = 0;
     double qualityArea = 0.0;
     for (std::size_t f = 0; f < managed.ms.size(); ++f) {
         absDev.push_back(100.0 * std::abs(managed.ms[f] - targetMs) / targetMs);
+        predictedDev.push_back(100.0 * std::abs(managed.predicted[f] - targetMs) / targetMs);
         predictionError.push_back(100.0 * std::abs(managed.predicted[f] - managed.ms[f]) / managed.ms[f]);
         over20 += managed.ms[f] > 1.2 * targetMs;
         unmanagedOver += unmanaged.ms[f] > targetMs;
@@ -234,12 +257,13 @@ int run(const Options& o) {
          << "\",\"size\":[" << size.x << "," << size.y << "],\"frames\":" << o.frames
          << ",\"mountains\":" << o.mountains << ",\"triangles_per_level\":[" << flight.trianglesPerLevel[0] << ","
          << flight.trianglesPerLevel[1] << "," << flight.trianglesPerLevel[2] << "],\"calibration_s\":"
-         << calibrationSeconds << ",\"target_ms\":" << targetMs
+         << calibrationSeconds << ",\"target_ms\":" << targetMs << ",\"floor_ms_max_estimate\":" << floorMs
          << ",\"unmanaged\":{" << frameStats(unmanaged.ms)
          << ",\"frames_over_target_pct\":" << 100.0 * static_cast<double>(unmanagedOver) / n
          << ",\"prediction_error_pct_median\":" << percentile(unmanagedPredictionError, 50) << "}"
          << ",\"managed\":{" << frameStats(managed.ms) << ",\"p95_abs_dev_from_target_pct\":" << p95Dev
-         << ",\"frames_over_target_by_20pct_pct\":" << over20Pct << ",\"mean_quality\":" << qualityArea / n
+         << ",\"frames_over_target_by_20pct_pct\":" << over20Pct
+         << ",\"predicted_p95_abs_dev_from_target_pct\":" << percentile(predictedDev, 95) << ",\"mean_quality\":" << qualityArea / n
          << ",\"prediction_error_pct_median\":" << predErr << ",\"apply_us_median\":" << percentile(managed.applyUs, 50)
          << ",\"final_gain\":" << budget.model().gain() << ",\"final_offset_ms\":" << budget.model().offset() << "}"
          << ",\"targets_met\":" << (met ? "true" : "false") << ",\"out\":\"" << out.string() << "\"}";
@@ -252,7 +276,7 @@ const bool registered = registerBench(
      [](CLI::App& app) {
          auto o = std::make_shared<Options>();
          app.add_option("--out", o->out, "folder for the CSV, the plots and calibration.yaml")->capture_default_str();
-         app.add_option("--target-ms", o->targetMs, "target frame time; 0: 0.8 x the unmanaged 5th percentile")
+         app.add_option("--target-ms", o->targetMs, "target frame time; 0: 1.25 x the most the coarsest unlit frame is estimated to take along the path")
              ->capture_default_str();
          app.add_option("--frames", o->frames, "frames along the path, per run")->capture_default_str();
          app.add_option("--mountains", o->mountains, "mountains in the field")->capture_default_str();

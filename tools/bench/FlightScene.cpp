@@ -38,7 +38,7 @@ Geometry mountainMesh(int cells, float ridgePhase) {
 FlightScene buildFlightScene(const FlightOptions& o) {
     FlightScene f;
     Scene& s = f.scene;
-    const int cells[3] = {48, 20, 8};
+    const int cells[3] = {72, 20, 8};
     std::array<std::uint32_t, 3> geometry{};
     for (int l = 0; l < 3; ++l) {
         Geometry g = mountainMesh(cells[l], 0.7f);
