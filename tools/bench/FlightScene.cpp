@@ -38,6 +38,10 @@ Geometry mountainMesh(int cells, float ridgePhase) {
 FlightScene buildFlightScene(const FlightOptions& o) {
     FlightScene f;
     Scene& s = f.scene;
+    // A fine level 0: the controller's room is what levels save, and the
+    // pixels of the range seen close up cost the same at every level; with a
+    // coarse level 0 that floor would lie above the open-country frames'
+    // full-detail time, and no target could be held along the whole path.
     const int cells[3] = {72, 20, 8};
     std::array<std::uint32_t, 3> geometry{};
     for (int l = 0; l < 3; ++l) {
