@@ -85,6 +85,7 @@ StationConfig loadStationConfig(const std::filesystem::path& file) {
     readCompositingConfig(root, cfg.compositing);
     readOperatorConfig(root, cfg.operation);
 
+    readBudgetConfig(root, cfg.budget);
     root.finish();
     report.throwIfAny();
     return cfg;

@@ -8,6 +8,7 @@
 #include "graph/Shading.hpp"
 #include "runtime/CompositingConfig.hpp"
 #include "runtime/OperatorConfig.hpp"
+#include "runtime/BudgetConfig.hpp"
 
 #include <glm/glm.hpp>
 
@@ -56,6 +57,7 @@ struct StationConfig {
     RenderConfig render;
     CompositingConfig compositing;  // video, matte, compositor, output
     OperatorConfig operation;
+    BudgetConfig budget;
 };
 
 StationConfig loadStationConfig(const std::filesystem::path& file);

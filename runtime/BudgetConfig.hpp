@@ -1,0 +1,39 @@
+#pragma once
+// The station config's `budget` section: the frame-time controller
+// (graph/FrameBudget.hpp) on or off, its target, what it may change and the
+// calibration it predicts from. Documented in configs/README.md.
+//
+//   budget:
+//     enabled: true
+//     target_ms: 33.3
+//     calibration: station.calibration.yaml   # from `arcomp bench calibrate`
+//
+//   BudgetConfig b;  readBudgetConfig(root, b);      // errors go to root's report
+//   if (b.enabled) FrameBudget budget(readCalibration(b.calibration), toBudgetSettings(b));
+//
+// An absent section leaves the controller off: objects are drawn as the
+// select pass chose them, as before.
+
+#include "graph/FrameBudget.hpp"
+#include "runtime/YamlMap.hpp"
+
+#include <filesystem>
+
+namespace arcomp {
+
+struct BudgetConfig {
+    bool enabled = false;
+    double targetMs = 1000.0 / 30.0;
+    bool changeLevel = true;
+    bool changeShading = true;
+    std::filesystem::path calibration;
+    bool refit = true;               // re-fit the cost model while running
+    double upgradeMarginPct = 5.0;   // hysteresis band below the target
+    int holdFrames = 4;
+    float eccentricityFloor = 0.25f; // 1: importance by screen size alone
+};
+
+void readBudgetConfig(YamlMap& root, BudgetConfig& out);
+BudgetSettings toBudgetSettings(const BudgetConfig& config);
+
+} // namespace arcomp

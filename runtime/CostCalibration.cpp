@@ -1,0 +1,141 @@
+#include "runtime/CostCalibration.hpp"
+
+#include "graph/LodAlternatives.hpp"
+#include "graph/RecursiveLeastSquares.hpp"
+#include "graph/View.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <random>
+
+namespace arcomp {
+
+namespace {
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+double timeFrame(const Scene& scene, const DrawList& list, const View& view, Renderer& renderer, FrameTimer& timer,
+                 const CalibrationOptions& o) {
+    std::vector<double> ms;
+    for (int r = 0; r < std::max(o.repeats, 1); ++r) {
+        timer.begin();
+        renderer.draw(scene, list, view, {.clearColor = o.clearColor});
+        ms.push_back(timer.end());
+    }
+    return median(std::move(ms));
+}
+
+} // namespace
+
+CostModel calibrateCosts(const Scene& scene, std::span<const NodeId> levelMeshes, Renderer& renderer,
+                         FrameTimer& timer, const CalibrationOptions& o) {
+    CostModel model(levelMeshes.size());
+    if (levelMeshes.empty()) return model;
+    const Sphere bound = scene.worldBound(levelMeshes[0]);
+    const float screen = static_cast<float>(o.viewport.x) * static_cast<float>(o.viewport.y);
+    const float fovy = 45.0f;
+    const float pixelScale = static_cast<float>(o.viewport.y) * 0.5f / std::tan(glm::radians(fovy) * 0.5f);
+
+    // Every level's geometry reaches the GPU, and every shading's program is
+    // compiled (llvmpipe compiles on first draw), before anything is timed.
+    const View overview = View::framing(bound, fovy, o.viewport);
+    for (int s = 0; s < kShadingCount; ++s) {
+        DrawList warm;
+        for (NodeId n : levelMeshes)
+            warm.items.push_back({n, scene.meshPart(n), 1.0f, 1.0f, 0, static_cast<Shading>(s)});
+        timer.begin();
+        renderer.draw(scene, warm, overview, {.clearColor = o.clearColor});
+        timer.end();
+    }
+
+    DrawList empty;
+    model.overheadMs = timeFrame(scene, empty, overview, renderer, timer, o);
+
+    for (std::size_t level = 0; level < levelMeshes.size(); ++level) {
+        const NodeId node = levelMeshes[level];
+        for (int s = 0; s < kShadingCount; ++s) {
+            const auto shading = static_cast<Shading>(s);
+            RecursiveLeastSquares fit(2, 1.0);
+            for (float fraction : o.screenFractions) {
+                // Distance at which the bounding sphere's disc covers `fraction` of the screen.
+                const float radiusPx = std::sqrt(fraction * screen / std::numbers::pi_v<float>);
+                const float distance = std::max(bound.radius * pixelScale / radiusPx, bound.radius * 1.01f);
+                const glm::vec3 eye = bound.center + o.viewDirection * distance;
+                const View view = View::lookAt(eye, bound.center, {0, 1, 0}, fovy, o.viewport,
+                                               std::max(1e-3f * distance, distance - 1.5f * bound.radius),
+                                               distance + 1.5f * bound.radius);
+                DrawList list;
+                list.items.push_back({node, scene.meshPart(node), distance, view.projectedArea(bound),
+                                      static_cast<std::uint8_t>(level), shading});
+                const double ms = timeFrame(scene, list, view, renderer, timer, o) - model.overheadMs;
+                fit.add(std::array{static_cast<double>(list.items[0].screenArea), 1.0}, ms);
+            }
+            // A negative slope or intercept is noise around zero.
+            model.set(level, shading, {std::max(0.0, fit.parameters()[0]), std::max(0.0, fit.parameters()[1])});
+        }
+    }
+    model.resetFit();
+    return model;
+}
+
+CostModel fitCostsOnFrames(const Scene& scene, std::span<const DrawList> lists, std::span<const View> views,
+                           Renderer& renderer, FrameTimer& timer, const CostModel& prior, int frames,
+                           const CalibrationOptions& o, unsigned seed) {
+    if (lists.empty() || lists.size() != views.size() || frames < 1) return prior;
+    const std::size_t levels = prior.levels();
+    constexpr auto shadings = static_cast<std::size_t>(kShadingCount);
+    // θ = (A of each shading in ms per megapixel, B of each level in ms):
+    // pixels cost what the shading makes them cost, vertices what the level
+    // has. Seven numbers are well determined by a hundred noisy frames where
+    // the 24 of a full table are not. Pixels in megapixels keep both halves
+    // of θ of similar size. The prior is the single-object table averaged
+    // over the other attribute.
+    std::vector<double> theta(shadings + levels, 0.0), variance(shadings + levels);
+    for (std::size_t l = 0; l < levels; ++l)
+        for (std::size_t s = 0; s < shadings; ++s) {
+            const CostCoefficients& c = prior.at(l, static_cast<Shading>(s));
+            theta[s] += c.msPerPixel * 1e6 / static_cast<double>(levels);
+            theta[shadings + l] += c.ms / static_cast<double>(shadings);
+        }
+    // The prior is trusted to about its own size (and at least 1 ms).
+    for (std::size_t k = 0; k < theta.size(); ++k) variance[k] = std::max(theta[k] * theta[k], 1.0);
+    RecursiveLeastSquares fit(theta.size(), 1.0, 1.0, 1e12);
+    fit.reset(theta, variance);
+    const LodAlternatives alternatives(scene);
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<std::size_t> pickList(0, lists.size() - 1);
+    std::uniform_int_distribution<int> pickLevel(0, static_cast<int>(levels) - 1), pickShading(0, kShadingCount - 1);
+    std::vector<double> x(theta.size());
+    DrawList list;
+    for (int f = 0; f < frames; ++f) {
+        const std::size_t i = pickList(rng);
+        list = lists[i];
+        std::fill(x.begin(), x.end(), 0.0);
+        for (DrawItem& item : list.items) {
+            const int levelCount = alternatives.levelCount(item.node);
+            const auto level = static_cast<std::uint8_t>(std::min(pickLevel(rng), levelCount - 1));
+            item.node = alternatives.levelNode(item.node, level);
+            item.part = scene.meshPart(item.node);
+            item.level = level;
+            item.shading = static_cast<Shading>(pickShading(rng));
+            x[static_cast<std::size_t>(item.shading)] += item.screenArea * 1e-6;
+            x[shadings + std::min<std::size_t>(item.level, levels - 1)] += 1.0;
+        }
+        const double ms = timeFrame(scene, list, views[i], renderer, timer, {.repeats = 1, .clearColor = o.clearColor});
+        fit.add(x, ms - prior.overheadMs);
+    }
+    CostModel model = prior;
+    for (std::size_t l = 0; l < levels; ++l)
+        for (std::size_t s = 0; s < shadings; ++s)
+            model.set(l, static_cast<Shading>(s),
+                      {std::max(0.0, fit.parameters()[s] * 1e-6), std::max(0.0, fit.parameters()[shadings + l])});
+    model.resetFit();
+    return model;
+}
+
+} // namespace arcomp

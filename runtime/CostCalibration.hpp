@@ -1,0 +1,55 @@
+#pragma once
+// Measures the cost model's A and B (t = A·pixels + B, paper:
+// uniform-frame-time) for every (LOD level, shading) pair of one object on
+// the machine at hand, and the per-frame overhead: the object's level meshes
+// are drawn alone, at several sizes on screen, and timed.
+//
+//   RenderTarget target({1280, 720});  target.bind();
+//   Renderer renderer;  FrameTimer timer;
+//   CostModel model = calibrateCosts(scene, levelMeshes, renderer, timer, {.viewport = {1280, 720}});
+//   writeCalibration("station.calibration.yaml", model, {glDescription(), {1280, 720}});
+//
+// `pixels` is what the select pass writes into DrawItem::screenArea (the
+// projected disc of the bounding sphere), so the fit maps that very number
+// to time. A frame's overhead is the time of a frame that draws nothing.
+
+#include "graph/CostModel.hpp"
+#include "graph/Scene.hpp"
+#include "runtime/FrameTimer.hpp"
+#include "runtime/Renderer.hpp"
+
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace arcomp {
+
+struct CalibrationOptions {
+    glm::ivec2 viewport{1280, 720};
+    // Sizes on screen: projected disc area as a fraction of the viewport.
+    std::vector<float> screenFractions{0.01f, 0.05f, 0.15f, 0.35f, 0.7f};
+    int repeats = 5;  // the median of this many frames per sample
+    // Direction the object is seen from (towards the eye); a flight looks down.
+    glm::vec3 viewDirection = glm::normalize(glm::vec3(0.0f, 0.5f, 1.0f));
+    std::optional<glm::vec4> clearColor = glm::vec4(0.5f, 0.6f, 0.8f, 1.0f);
+};
+
+// levelMeshes: the object's mesh node per level, finest first (all under the
+// same world matrix). The render target must be bound and sized
+// options.viewport. The result has levelMeshes.size() levels.
+CostModel calibrateCosts(const Scene& scene, std::span<const NodeId> levelMeshes, Renderer& renderer,
+                         FrameTimer& timer, const CalibrationOptions& options);
+
+// Sharpens a table with whole frames of the station's own scene, so that
+// objects hiding one another, overdraw and the real mix of meshes are in
+// the fit: each of `frames` samples takes one of `lists` (a select pass's
+// output, drawn from views[i]), puts every item at a random level and
+// shading, and times it; then A per shading and B per level (a pair's A is
+// its shading's, its B its level's) are fitted to all the frames at once by
+// least squares, starting from `prior` averaged over the other attribute.
+// The overhead is kept from `prior`.
+CostModel fitCostsOnFrames(const Scene& scene, std::span<const DrawList> lists, std::span<const View> views,
+                           Renderer& renderer, FrameTimer& timer, const CostModel& prior, int frames,
+                           const CalibrationOptions& options, unsigned seed = 1);
+
+} // namespace arcomp

@@ -1,0 +1,35 @@
+#include "runtime/FrameTimer.hpp"
+
+namespace arcomp {
+
+using namespace gl;
+
+FrameTimer::FrameTimer(TimerMode mode) {
+    if (mode != TimerMode::Finish && hasTimerQueries()) glGenQueries(1, &query_);
+}
+
+FrameTimer::~FrameTimer() {
+    if (query_) glDeleteQueries(1, &query_);
+}
+
+void FrameTimer::begin() {
+    if (query_) {
+        glBeginQuery(GL_TIME_ELAPSED, query_);
+        return;
+    }
+    glFinish();
+    start_ = std::chrono::steady_clock::now();
+}
+
+double FrameTimer::end() {
+    if (query_) {
+        glEndQuery(GL_TIME_ELAPSED);
+        GLuint64 ns = 0;
+        glGetQueryObjectui64v(query_, GL_QUERY_RESULT, &ns);
+        return static_cast<double>(ns) * 1e-6;
+    }
+    glFinish();
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
+}
+
+} // namespace arcomp

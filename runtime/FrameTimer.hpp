@@ -1,0 +1,44 @@
+#pragma once
+// Times the GPU work between begin() and end(), for the frame-time cost
+// model: GL_TIME_ELAPSED timer queries where the driver has them, else the
+// wall clock around glFinish (which also waits for queued work first, so
+// that the interval holds only what was issued inside it).
+//
+//   FrameTimer timer;                 // a context must be current
+//   timer.begin();  renderer.draw(...);  double ms = timer.end();
+//
+// On Mesa's llvmpipe the "GPU" is the CPU: vertex work runs inside the draw
+// calls on the calling thread and only rasterization is deferred, so a
+// timer query there can leave out part of what the frame costs. Finish mode
+// measures what a viewer waits for.
+
+#include "runtime/GlApi.hpp"
+
+#include <chrono>
+#include <string_view>
+
+namespace arcomp {
+
+enum class TimerMode { Auto, Query, Finish };
+
+class FrameTimer {
+public:
+    // Auto: queries where hasTimerQueries(), else Finish; Query where there
+    // are none falls back to Finish too.
+    explicit FrameTimer(TimerMode mode = TimerMode::Auto);
+    ~FrameTimer();
+    FrameTimer(const FrameTimer&) = delete;
+    FrameTimer& operator=(const FrameTimer&) = delete;
+
+    void begin();
+    // Waits for the work issued since begin() and gives its milliseconds.
+    double end();
+    bool usesQueries() const { return query_ != 0; }
+    std::string_view method() const { return usesQueries() ? "gl_time_elapsed" : "wall_glfinish"; }
+
+private:
+    GLuint query_ = 0;
+    std::chrono::steady_clock::time_point start_{};
+};
+
+} // namespace arcomp

@@ -1,0 +1,87 @@
+// `arcomp bench budget` end to end on a tiny flight: the JSON line has the
+// issue's fields for both runs and the CSV and plots are written. No figure
+// is checked against its target here (speed belongs in the benchmark).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace {
+
+struct Result {
+    int code;
+    std::string out;
+};
+
+Result run(const std::string& args) {
+    Result r{-1, {}};
+    FILE* p = popen((std::string(ARCOMP_BINARY) + " " + args + " 2>/dev/null").c_str(), "r");
+    if (!p) return r;
+    char buffer[4096];
+    while (std::fgets(buffer, sizeof buffer, p)) r.out += buffer;
+    const int status = pclose(p);
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+std::string lastLine(const std::string& s) {
+    const std::size_t end = s.find_last_not_of('\n');
+    if (end == std::string::npos) return {};
+    const std::size_t start = s.rfind('\n', end);
+    return s.substr(start == std::string::npos ? 0 : start + 1, end - (start == std::string::npos ? 0 : start + 1) + 1);
+}
+
+// The text of `key`'s object, `"key":{...}` without nested objects.
+std::string object(const std::string& json, const std::string& key) {
+    const std::size_t at = json.find("\"" + key + "\":{");
+    if (at == std::string::npos) return {};
+    const std::size_t open = json.find('{', at);
+    return json.substr(open, json.find('}', open) - open + 1);
+}
+
+std::size_t lines(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    std::size_t n = 0;
+    for (std::string line; std::getline(in, line);) ++n;
+    return n;
+}
+
+} // namespace
+
+TEST(BudgetBench, tinyFlightWritesJsonWithTheIssuesFieldsAndCsvAndPlots) {
+    const std::filesystem::path out = std::filesystem::path(ARCOMP_TEST_OUTPUT) / "bench-budget-tiny";
+    std::filesystem::remove_all(out);
+    const Result r = run("bench budget --frames 8 --size 160x90 --mountains 6 --scene-frames 4 --target-ms 5 --out " +
+                         out.string());
+    ASSERT_EQ(r.code, 0) << r.out;
+    const std::string json = lastLine(r.out);
+    ASSERT_EQ(json.front(), '{') << json;
+    ASSERT_EQ(json.back(), '}') << json;
+    EXPECT_NE(json.find("\"bench\":\"budget\""), std::string::npos) << json;
+    EXPECT_NE(json.find("\"target_ms\":5,"), std::string::npos) << json;
+    const std::string unmanaged = object(json, "unmanaged"), managed = object(json, "managed");
+    ASSERT_FALSE(unmanaged.empty()) << json;
+    ASSERT_FALSE(managed.empty()) << json;
+    for (const char* field : {"frame_ms_median", "frame_ms_p95", "frame_ms_max", "frame_ms_stddev"}) {
+        EXPECT_NE(unmanaged.find(std::string("\"") + field + "\":"), std::string::npos) << field << " in " << unmanaged;
+        EXPECT_NE(managed.find(std::string("\"") + field + "\":"), std::string::npos) << field << " in " << managed;
+    }
+    for (const char* field : {"p95_abs_dev_from_target_pct", "frames_over_target_by_20pct_pct", "mean_quality",
+                              "prediction_error_pct_median"})
+        EXPECT_NE(managed.find(std::string("\"") + field + "\":"), std::string::npos) << field << " in " << managed;
+    EXPECT_NE(json.find("\"targets_met\":"), std::string::npos) << json;
+
+    EXPECT_EQ(lines(out / "budget_frames.csv"), 1u + 8u);  // header and one row per frame
+    for (const char* png : {"budget_frame_time.png", "budget_prediction.png"}) {
+        ASSERT_TRUE(std::filesystem::exists(out / png)) << png;
+        EXPECT_GT(std::filesystem::file_size(out / png), 1000u) << png;
+    }
+    EXPECT_TRUE(std::filesystem::exists(out / "calibration.yaml"));
+}
+
+TEST(BudgetBench, badOptionsAreBadInput) {
+    EXPECT_EQ(run("bench budget --frames 1 --out " + std::string(ARCOMP_TEST_OUTPUT) + "/bench-budget-bad").code, 2);
+    EXPECT_EQ(run("bench budget --timer sundial --out " + std::string(ARCOMP_TEST_OUTPUT) + "/bench-budget-bad").code, 2);
+}

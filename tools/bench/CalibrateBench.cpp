@@ -1,0 +1,84 @@
+// `arcomp bench calibrate`: measures the frame-time cost model (A and B per
+// LOD level and shading, and the frame overhead; DESIGN.md §3) for the
+// flight scene's mountain on this machine and writes the calibration file a
+// station's `budget.calibration` names.
+//
+//   arcomp bench calibrate --out build/bench-budget   # writes calibration.yaml
+
+#include "runtime/CalibrationFile.hpp"
+#include "runtime/CostCalibration.hpp"
+#include "runtime/GlContext.hpp"
+#include "runtime/RenderTarget.hpp"
+#include "tools/arcomp/CliParse.hpp"
+#include "tools/arcomp/Command.hpp"
+#include "tools/bench/FlightScene.hpp"
+
+#include <chrono>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace arcomp {
+
+namespace {
+
+struct Options {
+    std::string out = "bench-budget";
+    std::string size = "1280x720";
+    std::string timer = "finish";
+    int repeats = 5;
+};
+
+int run(const Options& o) {
+    const glm::ivec2 size = parseSize(o.size, "--size");
+    if (o.repeats < 1 || o.repeats > 100) throw InputError("--repeats must lie in 1..100");
+    if (o.timer != "auto" && o.timer != "query" && o.timer != "finish")
+        throw InputError("--timer '" + o.timer + "': expected auto, query or finish");
+    const FlightScene flight = buildFlightScene({.mountains = 1});
+    auto context = HeadlessContext::create(GlRequest::Auto);
+    RenderTarget target(size);
+    target.bind();
+    Renderer renderer;
+    FrameTimer timer(o.timer == "finish" ? TimerMode::Finish : o.timer == "query" ? TimerMode::Query : TimerMode::Auto);
+    const auto t0 = std::chrono::steady_clock::now();
+    CalibrationOptions options;
+    options.viewport = size;
+    options.repeats = o.repeats;
+    const CostModel model = calibrateCosts(flight.scene, flight.mountains[0], renderer, timer, options);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const auto file = std::filesystem::path(o.out) / "calibration.yaml";
+    writeCalibration(file, model, {glDescription(), size});
+    std::cerr << "wrote " << file.string() << "\n";
+
+    std::ostringstream json;
+    json << "{\"bench\":\"calibrate\",\"device\":\"" << glDescription() << "\",\"timer\":\"" << timer.method()
+         << "\",\"size\":[" << size.x << "," << size.y << "],\"seconds\":" << seconds
+         << ",\"overhead_ms\":" << model.overheadMs << ",\"levels\":[";
+    for (std::size_t l = 0; l < model.levels(); ++l) {
+        json << (l ? "," : "") << "{\"triangles\":" << flight.trianglesPerLevel[l];
+        for (int s = 0; s < kShadingCount; ++s) {
+            const CostCoefficients& c = model.at(l, static_cast<Shading>(s));
+            json << ",\"" << toString(static_cast<Shading>(s)) << "\":[" << c.msPerPixel << "," << c.ms << "]";
+        }
+        json << "}";
+    }
+    json << "],\"file\":\"" << file.string() << "\"}";
+    std::cout << json.str() << std::endl;
+    return kExitOk;
+}
+
+const bool registered = registerBench(
+    {"calibrate", "Measure the frame-time cost model (A, B per level and shading) and write calibration.yaml",
+     [](CLI::App& app) {
+         auto o = std::make_shared<Options>();
+         app.add_option("--out", o->out, "folder for calibration.yaml")->capture_default_str();
+         app.add_option("--size", o->size, "output size WIDTHxHEIGHT")->capture_default_str();
+         app.add_option("--timer", o->timer, "finish (wall clock to glFinish), auto or query (GL_TIME_ELAPSED where available; on llvmpipe it leaves out most of the work)")
+             ->capture_default_str();
+         app.add_option("--repeats", o->repeats, "frames per sample (median)")->capture_default_str();
+         return [o] { return run(*o); };
+     }});
+
+} // namespace
+
+} // namespace arcomp
