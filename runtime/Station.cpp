@@ -2,6 +2,7 @@
 
 #include "graph/SelectPass.hpp"
 #include "graph/SilhouetteMesh.hpp"
+#include "runtime/CalibrationFile.hpp"
 #include "runtime/ImageFile.hpp"
 #include "runtime/SceneFile.hpp"
 #include "video/MatteSpec.hpp"
@@ -71,6 +72,11 @@ Station::Station(const StationConfig& cfg, StationInput input) : cfg_(cfg), inpu
         view_ = cameraView(camera);
     }
     buildHoldouts();
+
+    if (cfg_.budget.enabled) {
+        budget_.emplace(readCalibration(cfg_.budget.calibration), toBudgetSettings(cfg_.budget));
+        budget_->model().enableRefit(cfg_.budget.refit);
+    }
 
     cgRenderer_ = std::make_unique<Renderer>();
     holdoutRenderer_ = std::make_unique<Renderer>();
@@ -205,6 +211,15 @@ bool Station::frame() {
     }
     stats_.selectMs = msSince(t);
 
+    if (budget_) {
+        // The controller steers the CG render stage only: its share of the
+        // target is what the other stages left of it last frame.
+        const double others = stats_.totalMs - stats_.renderMs - stats_.budgetMs;
+        budget_->setTarget(std::max(1.0, cfg_.budget.targetMs - (stats_.frame > 0 ? others : 0.0)));
+        stats_.budget = budget_->apply(scene_, cgList_, view_);
+        stats_.budgetMs = msSince(t);
+    }
+
     const CompositorConfig& comp = cfg_.compositing.compositor;
     compositor_->begin(frame_, {.backdropVideo = comp.backdropVideo, .backdropColor = comp.backdropColor});
     glFinish();
@@ -214,6 +229,7 @@ bool Station::frame() {
     glFinish();
     stats_.cgTriangles = cgRenderer_->trianglesDrawn();
     stats_.renderMs = msSince(t);
+    if (budget_) budget_->observe(stats_.renderMs);
 
     compositor_->beginHoldout();
     holdoutRenderer_->draw(holdoutScene_, holdoutList_, view_, {.clearColor = std::nullopt});

@@ -2,7 +2,7 @@
 // One compositing station's frame, in one place: it owns the video input,
 // the person matte, the CG scene and its holdout meshes, the renderers, the
 // compositor and the file outputs. frame() runs
-//   capture -> update -> select -> render -> composite -> output
+//   capture -> update -> select -> budget -> render -> composite -> output
 // (composite being: backdrop, CG, holdout into the stencil, person layer;
 // see runtime/Compositor.hpp)
 // and records each stage's milliseconds in stats().
@@ -12,6 +12,8 @@
 //   while (station.frame()) {}                              // false at the end of the input
 //   station.finish();                                       // closes the video file
 //
+// With `budget` on, the controller (graph/FrameBudget.hpp) edits the CG draw
+// list between select and render so that the whole frame meets the target.
 // The composited frame stays in compositedFrame() after frame(): an RGBA8
 // colour texture (colorTexture(), rows bottom-up as GL keeps them) in an FBO
 // (framebuffer()); a windowed driver draws it with a textured quad or blits
@@ -20,6 +22,7 @@
 // input gives bit-identical output images on the same machine.
 
 #include "graph/DrawList.hpp"
+#include "graph/FrameBudget.hpp"
 #include "graph/Scene.hpp"
 #include "graph/SilhouetteNodes.hpp"
 #include "runtime/Compositor.hpp"
@@ -32,6 +35,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -56,6 +60,7 @@ struct FrameStats {
     double matteMs = 0;        // person layer on the CPU
     double updateMs = 0;       // transforms and bounds
     double selectMs = 0;       // culling, LOD, silhouette region, in front / behind
+    double budgetMs = 0;       // the frame-time controller (0 when it is off)
     double renderMs = 0;       // CG, all objects, shaded
     double holdoutMs = 0;      // holdout mask from the front objects' meshes
     double compositeMs = 0;    // backdrop and person uploads, person tiles drawn
@@ -66,6 +71,10 @@ struct FrameStats {
     std::size_t objectsInFront = 0;
     std::size_t objectsBehind = 0;
     std::size_t personTiles = 0;  // 32x32 tiles where the matte had any alpha
+    // The controller's view of the CG render stage, when it is on: its target
+    // (the frame target less what the other stages took last frame), its
+    // prediction, and the area-weighted quality it kept (1 = finest).
+    std::optional<BudgetStats> budget;
     bool newVideoFrame = false;  // live: false when the camera had nothing new
 };
 
@@ -118,6 +127,7 @@ private:
     std::unique_ptr<Compositor> compositor_;
     std::unique_ptr<RenderTarget> holdoutMask_;  // only for readHoldout()
     std::unique_ptr<VideoFileWriter> video_;
+    std::optional<FrameBudget> budget_;
     std::vector<std::string> warnings_;
     cv::Mat frame_, person_, bgr_;
     bool firstPending_ = false;

@@ -4,6 +4,7 @@
 // path; replay determinism.
 
 #include "graph/SelectPass.hpp"
+#include "runtime/CalibrationFile.hpp"
 #include "runtime/GlContext.hpp"
 #include "runtime/ImageFile.hpp"
 #include "runtime/ReplayInput.hpp"
@@ -180,6 +181,38 @@ StationInput pattern(glm::ivec2 size) {
 }
 
 cv::Mat holdoutMask(Station& s) { return coverageOf(s.readHoldout()).clone(); }
+
+// The controller sits between select and render: with a target no frame can
+// meet, it lowers the objects' shading; with time to spare it keeps the
+// finest; without a budget section it does nothing.
+TEST(Station, budgetLowersShadingOnlyWhenTheTargetIsTight) {
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    arcomp::test::TempDir dir;
+    CostModel model(1);
+    for (int s = 0; s < kShadingCount; ++s) model.set(0, static_cast<Shading>(s), {1e-4 * (s + 1), 2.0 * (s + 1)});
+    writeCalibration(dir.path() / "calibration.yaml", model, {"test", {320, 240}});
+    auto run = [&](std::optional<double> targetMs) {
+        StationConfig cfg = occluderConfig(HoldoutMesh::Full);
+        if (targetMs) {
+            cfg.budget.enabled = true;
+            cfg.budget.calibration = dir.path() / "calibration.yaml";
+            cfg.budget.refit = false;
+            cfg.budget.targetMs = *targetMs;
+        }
+        Station station(cfg, pattern({320, 240}));
+        for (int i = 0; i < 3; ++i) EXPECT_TRUE(station.frame());
+        return station.stats().budget;
+    };
+    const auto tight = run(1.0);
+    ASSERT_TRUE(tight);
+    EXPECT_EQ(tight->itemsReduced, 2u);
+    EXPECT_LT(tight->quality, 1.0);
+    const auto loose = run(10000.0);
+    ASSERT_TRUE(loose);
+    EXPECT_EQ(loose->itemsReduced, 0u);
+    EXPECT_DOUBLE_EQ(loose->quality, 1.0);
+    EXPECT_FALSE(run(std::nullopt));
+}
 
 TEST(Station, silhouetteHoldoutDiffersFromFullMeshOnlyAtTheOutline) {
     auto ctx = HeadlessContext::create(GlRequest::Auto);
