@@ -1,0 +1,343 @@
+#include "graph/GroupingTree.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+namespace arcomp {
+
+namespace {
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+constexpr std::uint64_t kUnbounded = ~std::uint64_t{0};
+// Reaches are bounds derived on real numbers; Ω0 is computed in float.
+constexpr float kSlack = 1.01f;
+
+} // namespace
+
+std::uint32_t GroupingTree::addNode(const GroupingItem& item) {
+    std::uint32_t n;
+    if (!freeNodes_.empty()) {
+        n = freeNodes_.back();
+        freeNodes_.pop_back();
+        item_[n] = item;
+    } else {
+        n = static_cast<std::uint32_t>(item_.size());
+        item_.push_back(item);
+        left_.push_back(kNoGroupingNode);
+        right_.push_back(kNoGroupingNode);
+        parent_.push_back(kNoGroupingNode);
+        omega0_.push_back(0.0f);
+        alive_.push_back(1);
+        rootSlot_.push_back(kNoGroupingNode);
+        cell_.push_back(kUnbounded);
+        reach_.emplace_back(0.0f);
+    }
+    left_[n] = right_[n] = parent_[n] = kNoGroupingNode;
+    omega0_[n] = 0.0f;
+    alive_[n] = 1;
+    return n;
+}
+
+void GroupingTree::makeRoot(std::uint32_t n) {
+    rootSlot_[n] = static_cast<std::uint32_t>(roots_.size());
+    roots_.push_back(n);
+    gridInsert(n);
+}
+
+void GroupingTree::dropRoot(std::uint32_t n) {
+    gridErase(n);
+    const std::uint32_t slot = rootSlot_[n];
+    roots_[slot] = roots_.back();
+    rootSlot_[roots_[slot]] = slot;
+    roots_.pop_back();
+    rootSlot_[n] = kNoGroupingNode;
+}
+
+glm::vec2 GroupingTree::reach(std::uint32_t n) const {
+    const glm::vec3 s = item_[n].box.size();
+    const float p = proximityReach_;
+    float rx = p, rz = p;
+    // The shape bound needs the pair's enclosing box to have volume, which a
+    // flat item cannot promise; its reach then comes from proximity alone.
+    if (shapeFactor_ > 0.0f && s.y > 0.0f && s.z > 0.0f) rx = std::min(p, shapeFactor_ * s.x * kSlack);
+    if (shapeFactor_ > 0.0f && s.y > 0.0f && s.x > 0.0f) rz = std::min(p, shapeFactor_ * s.z * kSlack);
+    return {rx, rz};
+}
+
+int GroupingTree::levelFor(std::uint32_t n) const {
+    const glm::vec2 r = reach_[n];
+    const float need = 2.0f * std::max(r.x, r.y);
+    if (!std::isfinite(need)) return -1;
+    float c = cellSize_;
+    for (int level = 0; level < kLevels; ++level, c *= 2.0f)
+        if (c >= need) return level;
+    return -1;
+}
+
+std::uint64_t GroupingTree::cellKey(int level, float x, float z) const {
+    const double c = double(cellSize_) * std::ldexp(1.0, level);
+    const auto ix = static_cast<std::int64_t>(std::floor(double(x) / c));
+    const auto iz = static_cast<std::int64_t>(std::floor(double(z) / c));
+    constexpr std::uint64_t mask = (std::uint64_t{1} << 29) - 1;
+    // Far-apart cells may share a key; that only offers extra candidates.
+    return (std::uint64_t(level) << 58) | ((std::uint64_t(ix) & mask) << 29) | (std::uint64_t(iz) & mask);
+}
+
+void GroupingTree::gridInsert(std::uint32_t n) {
+    reach_[n] = reach(n);
+    const int level = levelFor(n);
+    if (level < 0) {
+        cell_[n] = kUnbounded;
+        unbounded_.push_back(n);
+        return;
+    }
+    const glm::vec3 c = item_[n].box.center();
+    const std::uint64_t key = cellKey(level, c.x, c.z);
+    cell_[n] = key;
+    grid_[key].push_back(n);
+    ++levelCount_[static_cast<std::size_t>(level)];
+}
+
+void GroupingTree::gridErase(std::uint32_t n) {
+    std::vector<std::uint32_t>* list = &unbounded_;
+    if (cell_[n] != kUnbounded) {
+        list = &grid_[cell_[n]];
+        --levelCount_[static_cast<std::size_t>(cell_[n] >> 58)];
+    }
+    const auto it = std::find(list->begin(), list->end(), n);
+    if (it == list->end()) std::abort();  // roots are always in the grid
+    *it = list->back();
+    list->pop_back();
+    if (list->empty() && cell_[n] != kUnbounded) grid_.erase(cell_[n]);
+    cell_[n] = kUnbounded;
+}
+
+void GroupingTree::pushCandidate(std::uint32_t a, std::uint32_t b, float omega) {
+    heap_.push_back({omega, std::min(a, b), std::max(a, b)});
+    std::push_heap(heap_.begin(), heap_.end(), std::greater<>{});
+}
+
+void GroupingTree::consider(std::uint32_t n, std::uint32_t other, bool onlyLater) {
+    if (other == n || (onlyLater && other < n)) return;
+    const glm::vec3 d = item_[n].box.center() - item_[other].box.center();
+    const glm::vec2 r = reach_[n] + reach_[other];
+    if (std::abs(d.x) > r.x || std::abs(d.z) > r.y) return;
+    const std::uint32_t a = std::min(n, other), b = std::max(n, other);
+    const float w = omega0(item_[a], item_[b], params_);
+    if (double(w) < lastThreshold_) pushCandidate(a, b, w);
+}
+
+void GroupingTree::offerPairs(std::uint32_t n, bool onlyLater) {
+    const glm::vec2 r = reach_[n];
+    const glm::vec3 c = item_[n].box.center();
+    const bool everywhere = cell_[n] == kUnbounded;
+    double cells = 0.0;
+    if (!everywhere)
+        for (int level = 0; level < kLevels; ++level) {
+            if (levelCount_[static_cast<std::size_t>(level)] == 0) continue;
+            const double size = double(cellSize_) * std::ldexp(1.0, level);
+            cells += (2.0 * r.x / size + 2.0) * (2.0 * r.y / size + 2.0);
+        }
+    // A reach wider than the grid is cheaper served by the list of roots.
+    if (everywhere || cells > double(roots_.size())) {
+        for (std::uint32_t other : roots_) consider(n, other, onlyLater);
+        return;
+    }
+    for (int level = 0; level < kLevels; ++level) {
+        if (levelCount_[static_cast<std::size_t>(level)] == 0) continue;
+        const double size = double(cellSize_) * std::ldexp(1.0, level);
+        // Roots at this level reach at most half a cell.
+        const double mx = double(r.x) + size * 0.5, mz = double(r.y) + size * 0.5;
+        const auto x0 = static_cast<std::int64_t>(std::floor((double(c.x) - mx) / size));
+        const auto x1 = static_cast<std::int64_t>(std::floor((double(c.x) + mx) / size));
+        const auto z0 = static_cast<std::int64_t>(std::floor((double(c.z) - mz) / size));
+        const auto z1 = static_cast<std::int64_t>(std::floor((double(c.z) + mz) / size));
+        for (std::int64_t ix = x0; ix <= x1; ++ix)
+            for (std::int64_t iz = z0; iz <= z1; ++iz) {
+                const auto it = grid_.find(cellKey(level, float((double(ix) + 0.5) * size), float((double(iz) + 0.5) * size)));
+                if (it == grid_.end()) continue;
+                for (std::uint32_t other : it->second) consider(n, other, onlyLater);
+            }
+    }
+    for (std::uint32_t other : unbounded_) consider(n, other, onlyLater);
+}
+
+void GroupingTree::agglomerate(GroupingRebuildStats* stats) {
+    while (!heap_.empty()) {
+        std::pop_heap(heap_.begin(), heap_.end(), std::greater<>{});
+        const Candidate top = heap_.back();
+        heap_.pop_back();
+        if (rootSlot_[top.a] == kNoGroupingNode || rootSlot_[top.b] == kNoGroupingNode) continue;
+        // Every live pair below the last Ωt is in the heap, so the smallest
+        // left decides: nothing more groups.
+        if (!(double(top.omega) < lastThreshold_)) break;
+        const GroupingItem merged = mergedItem(item_[top.a], item_[top.b]);
+        dropRoot(top.a);
+        dropRoot(top.b);
+        const std::uint32_t g = addNode(merged);
+        left_[g] = top.a;
+        right_[g] = top.b;
+        omega0_[g] = top.omega;
+        parent_[top.a] = parent_[top.b] = g;
+        makeRoot(g);
+        offerPairs(g, false);
+        if (stats) ++stats->merged;
+    }
+    heap_.clear();
+}
+
+void GroupingTree::build(std::span<const GroupingItem> objects, const GroupingParams& params) {
+    params_ = params;
+    lastThreshold_ = params.lastThreshold();
+    objectCount_ = objects.size();
+    item_.clear();
+    left_.clear();
+    right_.clear();
+    parent_.clear();
+    omega0_.clear();
+    alive_.clear();
+    roots_.clear();
+    rootSlot_.clear();
+    cell_.clear();
+    reach_.clear();
+    unbounded_.clear();
+    freeNodes_.clear();
+    heap_.clear();
+    grid_.clear();
+    levelCount_.fill(0);
+    movedObjects_.clear();
+    moved_.assign(objects.size(), 0);
+
+    const double limit = lastThreshold_ * double(params.l0);
+    proximityReach_ = params.alphaP > 0.0f ? float(limit / double(params.alphaP)) * kSlack : kInf;
+    // Ms < q = Ωt·L0/αs caps the enclosing box at (V1 + V2)/(1 - q), which
+    // caps the centres' distance per axis at (1/(1 - q) - 1/2) times the
+    // sum of the two extents.
+    const double q = params.alphaS > 0.0f ? limit / double(params.alphaS) : 1.0;
+    shapeFactor_ = q < 1.0 ? float(1.0 / (1.0 - q) - 0.5) : 0.0f;
+
+    for (const GroupingItem& o : objects) addNode(o);
+    std::vector<float> reaches;
+    reaches.reserve(objects.size());
+    for (std::uint32_t n = 0; n < objects.size(); ++n) {
+        const glm::vec2 r = reach(n);
+        const float m = 2.0f * std::max(r.x, r.y);
+        if (std::isfinite(m) && m > 0.0f) reaches.push_back(m);
+    }
+    cellSize_ = 1.0f;
+    if (!reaches.empty()) {
+        std::nth_element(reaches.begin(), reaches.begin() + std::ptrdiff_t(reaches.size() / 2), reaches.end());
+        cellSize_ = reaches[reaches.size() / 2];
+    }
+    for (std::uint32_t n = 0; n < objects.size(); ++n) makeRoot(n);
+    for (std::uint32_t n = 0; n < objects.size(); ++n) offerPairs(n, true);
+    agglomerate(nullptr);
+}
+
+std::size_t GroupingTree::depth() const {
+    std::size_t best = 0;
+    std::vector<std::pair<std::uint32_t, std::size_t>> stack;
+    for (std::uint32_t r : roots_) stack.push_back({r, 1});
+    while (!stack.empty()) {
+        const auto [n, d] = stack.back();
+        stack.pop_back();
+        best = std::max(best, d);
+        if (!isLeaf(n)) {
+            stack.push_back({left_[n], d + 1});
+            stack.push_back({right_[n], d + 1});
+        }
+    }
+    return best;
+}
+
+std::vector<std::uint32_t> GroupingTree::objectsUnder(std::uint32_t n) const {
+    std::vector<std::uint32_t> out, stack{n};
+    while (!stack.empty()) {
+        const std::uint32_t m = stack.back();
+        stack.pop_back();
+        if (isLeaf(m)) out.push_back(m);
+        else {
+            stack.push_back(left_[m]);
+            stack.push_back(right_[m]);
+        }
+    }
+    return out;
+}
+
+void GroupingTree::moveObject(std::uint32_t object, const Box& box, const glm::vec3& velocity) {
+    if (object >= objectCount_) std::abort();
+    item_[object] = groupingItem(box, item_[object].color, velocity);
+    if (!moved_[object]) {
+        moved_[object] = 1;
+        movedObjects_.push_back(object);
+    }
+}
+
+GroupingRebuildStats GroupingTree::rebuildMoved() {
+    GroupingRebuildStats stats;
+    if (movedObjects_.empty()) return stats;
+    // Refit each moved object's chain of groups, leaf to top. A group shared
+    // by several chains is last refitted by the last chain through it, after
+    // both its children are current.
+    std::vector<std::uint32_t> tops;
+    for (std::uint32_t o : movedObjects_) {
+        std::uint32_t top = o;
+        for (std::uint32_t g = parent_[o]; g != kNoGroupingNode; g = parent_[g]) {
+            item_[g] = mergedItem(item_[left_[g]], item_[right_[g]]);
+            omega0_[g] = omega0(item_[left_[g]], item_[right_[g]], params_);
+            ++stats.refitted;
+            top = g;
+        }
+        tops.push_back(top);
+    }
+    // A group whose pair no longer passes the last Ωt is dissolved, and so is
+    // every group above it: their other children become top-level again.
+    std::vector<std::uint32_t> dissolve;
+    for (std::uint32_t o : movedObjects_) {
+        std::uint32_t g = parent_[o];
+        while (g != kNoGroupingNode && double(omega0_[g]) < lastThreshold_) g = parent_[g];
+        for (; g != kNoGroupingNode; g = parent_[g]) {
+            if (alive_[g] == 2) break;  // this chain above was already taken
+            alive_[g] = 2;
+            dissolve.push_back(g);
+        }
+    }
+    std::vector<std::uint32_t> freed;
+    for (std::uint32_t g : dissolve) {
+        for (std::uint32_t c : {left_[g], right_[g]})
+            if (alive_[c] != 2) {
+                parent_[c] = kNoGroupingNode;
+                freed.push_back(c);
+            }
+    }
+    for (std::uint32_t g : dissolve) {
+        if (rootSlot_[g] != kNoGroupingNode) dropRoot(g);
+        alive_[g] = 0;
+        left_[g] = right_[g] = parent_[g] = kNoGroupingNode;
+        freeNodes_.push_back(g);
+        ++stats.dissolved;
+    }
+    // Top-level items that moved (kept or freed) are placed in the grid
+    // again and offered to their neighbours; then grouping goes on as at
+    // build time, from where it stopped.
+    std::vector<std::uint32_t> touched;
+    for (std::uint32_t t : tops)
+        if (alive_[t] == 1 && rootSlot_[t] != kNoGroupingNode) {
+            dropRoot(t);
+            touched.push_back(t);
+        }
+    for (std::uint32_t c : freed) touched.push_back(c);
+    std::sort(touched.begin(), touched.end());
+    touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+    for (std::uint32_t t : touched) makeRoot(t);
+    for (std::uint32_t t : touched) offerPairs(t, false);
+    agglomerate(&stats);
+
+    for (std::uint32_t o : movedObjects_) moved_[o] = 0;
+    movedObjects_.clear();
+    return stats;
+}
+
+} // namespace arcomp
