@@ -1,0 +1,73 @@
+#pragma once
+// The side table behind NodeKind::Grouping nodes. A grouping node's
+// children are its objects (each a whole subtree: transforms, LOD nodes,
+// meshes); the grouping tree over them lives here, not in the scene, so that
+// regrouping never touches the scene's structure. The select pass walks the
+// tree (the paper's NodeChoice): a group whose Ω at the current eye
+// distance is below Ωt is drawn as its proxy, otherwise its children are
+// tried; an object reached on its own is visited as a normal subtree, so
+// its LOD node picks its level.
+//
+//   GroupingNodes table;
+//   NodeId g = addGroupingNode(scene, scene.root(), table);
+//   ... add each object's subtree under g ...
+//   scene.update();
+//   buildGrouping(scene, g, table, params);        // at load time
+//   select(scene, view, {.grouping = &table}, list);
+//
+// Proxies (selectable per node): the paper's box in the group's mean colour,
+// alpha-blended, or a camera-facing billboard with an image of the members
+// baked at load time (runtime/ImpostorBaker.hpp); a group with no baked
+// image falls back to the box.
+
+#include "graph/GroupingTree.hpp"
+#include "graph/Scene.hpp"
+
+#include <string>
+#include <vector>
+
+namespace arcomp {
+
+enum class GroupingProxy : std::uint8_t { Box, Impostor };
+
+struct GroupingNode {
+    GroupingTree tree;
+    std::vector<NodeId> objects;  // object i's subtree root: the node's i-th child
+    float omegaT = 0.011f;        // the threshold the per-frame choice uses
+    GroupingProxy proxy = GroupingProxy::Box;
+    float proxyAlpha = 0.7f;
+    MeshPart boxPart{};        // a unit box with a white blended material; tinted per group
+    std::uint32_t quadGeometry = 0;  // a unit quad in XY facing +Z, for impostors
+    // Per tree node: the baked impostor's material, or kNoImpostor.
+    static constexpr std::uint32_t kNoImpostor = ~std::uint32_t{0};
+    std::vector<std::uint32_t> impostorMaterial;
+
+    // Per tree node, written by the select pass: the proxy's model matrix
+    // (draw items point at it until the next select).
+    std::vector<glm::mat4> proxyModel;
+    // Position of object i's subtree in scene.order(); refreshed by the
+    // select pass when the scene's order changed.
+    std::vector<std::uint32_t> objectPosition;
+};
+
+struct GroupingNodes {
+    std::vector<GroupingNode> nodes;
+};
+
+NodeId addGroupingNode(Scene& scene, NodeId parent, GroupingNodes& table, std::string name = {});
+
+// The object a subtree is, for the measure: the box of its meshes in world
+// space and their base colour, averaged by surface area.
+GroupingItem groupingItemOf(const Scene& scene, NodeId subtree);
+
+// Builds the grouping tree over the grouping node's children (call after
+// scene.update()); sets the node's Ωt to params.omegaT.
+void buildGrouping(Scene& scene, NodeId groupingNode, GroupingNodes& table, const GroupingParams& params);
+
+// A proxy's model matrix: the unit box scaled to the group's box, or the
+// unit quad turned about +Y to face the eye and scaled to the group's
+// width and height.
+glm::mat4 boxProxyModel(const Box& box);
+glm::mat4 billboardModel(const Box& box, const glm::vec3& eye);
+
+} // namespace arcomp

@@ -1,0 +1,85 @@
+#include "graph/ForestExperiment.hpp"
+
+#include <gtest/gtest.h>
+
+namespace arcomp {
+namespace {
+
+std::vector<float> paperThresholds() {
+    const GroupingParams p;
+    std::vector<float> out;
+    for (int k = 0; k < p.stepCount(); ++k) out.push_back(float(p.thresholdAt(k)));
+    return out;
+}
+
+TEST(ForestExperiment, treesHaveThePapersPolygonCounts) {
+    EXPECT_EQ(makeTreeCrown(false).triangleCount() + makeTreeTrunk(false).triangleCount(), kTreeTriangles);
+    EXPECT_EQ(makeTreeCrown(true).triangleCount() + makeTreeTrunk(true).triangleCount(), kSimplifiedTreeTriangles);
+    ForestExperiment f(ForestColouring::Mixed);
+    EXPECT_EQ(f.forest.trees.size(), kForestTrees);
+    EXPECT_EQ(f.triangles(ForestMode::Full, 0.05f), 3360u);  // the paper's 32 × 105
+}
+
+TEST(ForestExperiment, redTreesNeverGroupWithGreenOnes) {
+    ForestExperiment f(ForestColouring::Mixed);
+    const GroupingTree& tree = f.grouping.nodes[f.scene.payload(f.forest.grouping)].tree;
+    std::size_t greenGroups = 0;
+    for (std::uint32_t n = 0; n < tree.nodeCount(); ++n) {
+        if (!tree.alive(n) || tree.isLeaf(n)) continue;
+        std::size_t red = 0;
+        const auto members = tree.objectsUnder(n);
+        for (std::uint32_t o : members) red += f.forest.red[o];
+        EXPECT_TRUE(red == 0 || red == members.size()) << "group " << n << " mixes red and green";
+        greenGroups += red == 0;
+    }
+    EXPECT_GT(greenGroups, 0u) << "green trees group with each other";
+    // And at every Ωt, each drawn proxy stands for one colour only: the
+    // structure above guarantees it; check the drawn cut sees green proxies.
+    std::size_t thresholdsWithGreenProxies = 0;
+    for (float t : paperThresholds()) {
+        const DrawList& list = f.select(ForestMode::Grouped, t);
+        for (const DrawItem& item : list.items)
+            if (item.model && item.tint.g > item.tint.r) {
+                ++thresholdsWithGreenProxies;
+                break;
+            }
+    }
+    EXPECT_GT(thresholdsWithGreenProxies, 50u);
+}
+
+TEST(ForestExperiment, allGreenForestDrawsNoMoreThanTheMixedOneAtEveryThreshold) {
+    ForestExperiment mixed(ForestColouring::Mixed), green(ForestColouring::Green);
+    bool fewerSomewhere = false;
+    for (float t : paperThresholds()) {
+        const std::size_t m = mixed.triangles(ForestMode::Grouped, t), g = green.triangles(ForestMode::Grouped, t);
+        EXPECT_LE(g, m) << "Ωt = " << t;
+        fewerSomewhere = fewerSomewhere || g < m;
+    }
+    EXPECT_TRUE(fewerSomewhere);
+}
+
+TEST(ForestExperiment, groupingBeatsSimplificationAloneFromSomeThresholdAtMost002) {
+    for (ForestColouring c : {ForestColouring::Mixed, ForestColouring::Green}) {
+        ForestExperiment f(c);
+        float firstBetter = -1.0f;
+        for (float t : paperThresholds()) {
+            const std::size_t grouped = f.triangles(ForestMode::Grouped, t);
+            const std::size_t simplified = f.triangles(ForestMode::Simplified, t);
+            EXPECT_LE(grouped, simplified) << "Ωt = " << t;
+            if (grouped < simplified && firstBetter < 0.0f) firstBetter = t;
+            if (firstBetter >= 0.0f) {
+                EXPECT_LT(grouped, simplified) << "from Ωt = " << firstBetter << " on, at " << t;
+            }
+        }
+        EXPECT_GE(firstBetter, 0.0f);
+        EXPECT_LE(firstBetter, 0.02f + 1e-6f);
+    }
+}
+
+TEST(ForestExperiment, simplificationAloneDrawsFewerThanFullDetail) {
+    ForestExperiment f(ForestColouring::Green);
+    EXPECT_LT(f.triangles(ForestMode::Simplified, 0.01f), f.triangles(ForestMode::Full, 0.01f));
+}
+
+} // namespace
+} // namespace arcomp
