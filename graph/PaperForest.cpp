@@ -104,7 +104,7 @@ PaperForest addPaperForest(Scene& scene, NodeId parent, GroupingNodes& grouping,
 }
 
 View paperForestView(glm::ivec2 viewport) {
-    return View::lookAt({300.0f, 400.0f, 4300.0f}, {0.0f, 150.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 30.0f, viewport, 100.0f,
+    return View::lookAt({300.0f, 1500.0f, 4300.0f}, {0.0f, 150.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 16.0f, viewport, 100.0f,
                         20000.0f);
 }
 
