@@ -275,60 +275,94 @@ void GroupingTree::moveObject(std::uint32_t object, const Box& box, const glm::v
     }
 }
 
+bool GroupingTree::refitNode(std::uint32_t g) {
+    const GroupingItem fresh = mergedItem(item_[left_[g]], item_[right_[g]]);
+    const float w = omega0(item_[left_[g]], item_[right_[g]], params_);
+    const GroupingItem& old = item_[g];
+    // Above a moved object, a group's box usually stays as it was and its
+    // mean velocity and colour change by a member's share; once that moves
+    // Ω0 by less than a hundredth of an Ωt step, the groups above would
+    // not change their choice either, and the refit stops here.
+    const float tolerance = 0.01f * params_.omegaStep;
+    const bool same = fresh.box.min == old.box.min && fresh.box.max == old.box.max &&
+                      params_.alphaF * glm::length(fresh.velocity - old.velocity) / params_.l0 < tolerance &&
+                      params_.alphaC * glm::length(fresh.color - old.color) / params_.l0 < tolerance &&
+                      std::abs(w - omega0_[g]) < tolerance;
+    if (same) return false;
+    item_[g] = fresh;
+    omega0_[g] = w;
+    return true;
+}
+
+void GroupingTree::refitUp(std::uint32_t g, std::vector<std::uint32_t>& tops, GroupingRebuildStats& stats) {
+    for (; g != kNoGroupingNode; g = parent_[g]) {
+        ++stats.refitted;
+        if (!refitNode(g)) return;
+        if (parent_[g] == kNoGroupingNode) tops.push_back(g);
+    }
+}
+
+// Group g's pair no longer passes the last Ωt: g goes. Its child with the
+// larger volume takes its place under g's parent; the other becomes
+// top-level and groups again with what is near it.
+void GroupingTree::cut(std::uint32_t g, std::vector<std::uint32_t>& freed, std::vector<std::uint32_t>& tops,
+                       GroupingRebuildStats& stats) {
+    const std::uint32_t a = left_[g], b = right_[g], p = parent_[g];
+    ++stats.dissolved;
+    if (p == kNoGroupingNode) {
+        dropRoot(g);
+        parent_[a] = parent_[b] = kNoGroupingNode;
+        freed.push_back(a);
+        freed.push_back(b);
+    } else {
+        const bool keepA = item_[a].volume >= item_[b].volume;
+        const std::uint32_t keep = keepA ? a : b, loose = keepA ? b : a;
+        (left_[p] == g ? left_[p] : right_[p]) = keep;
+        parent_[keep] = p;
+        parent_[loose] = kNoGroupingNode;
+        freed.push_back(loose);
+    }
+    alive_[g] = 0;
+    left_[g] = right_[g] = parent_[g] = kNoGroupingNode;
+    freeNodes_.push_back(g);
+    if (p != kNoGroupingNode) refitUp(p, tops, stats);
+}
+
 GroupingRebuildStats GroupingTree::rebuildMoved() {
     GroupingRebuildStats stats;
     if (movedObjects_.empty()) return stats;
-    // Refit each moved object's chain of groups, leaf to top. A group shared
-    // by several chains is last refitted by the last chain through it, after
-    // both its children are current.
-    std::vector<std::uint32_t> tops;
+    std::vector<std::uint32_t> tops, freed;
+    // Refit each moved object's chain of groups, leaf to top, until a group
+    // no longer changes.
     for (std::uint32_t o : movedObjects_) {
-        std::uint32_t top = o;
-        for (std::uint32_t g = parent_[o]; g != kNoGroupingNode; g = parent_[g]) {
-            item_[g] = mergedItem(item_[left_[g]], item_[right_[g]]);
-            omega0_[g] = omega0(item_[left_[g]], item_[right_[g]], params_);
-            ++stats.refitted;
-            top = g;
-        }
-        tops.push_back(top);
+        if (parent_[o] == kNoGroupingNode) tops.push_back(o);
+        else refitUp(parent_[o], tops, stats);
     }
-    // A group whose pair no longer passes the last Ωt is dissolved, and so is
-    // every group above it: their other children become top-level again.
-    std::vector<std::uint32_t> dissolve;
-    for (std::uint32_t o : movedObjects_) {
-        std::uint32_t g = parent_[o];
-        while (g != kNoGroupingNode && double(omega0_[g]) < lastThreshold_) g = parent_[g];
+    // Walk each chain again and cut the groups that broke; a cut refits the
+    // chain above it, so that chain is walked next.
+    std::vector<std::uint32_t> check;
+    for (std::uint32_t o : movedObjects_) check.push_back(parent_[o]);
+    while (!check.empty()) {
+        std::uint32_t g = check.back();
+        check.pop_back();
         for (; g != kNoGroupingNode; g = parent_[g]) {
-            if (alive_[g] == 2) break;  // this chain above was already taken
-            alive_[g] = 2;
-            dissolve.push_back(g);
+            if (!alive_[g] || double(omega0_[g]) < lastThreshold_) continue;
+            const std::uint32_t p = parent_[g];
+            cut(g, freed, tops, stats);
+            check.push_back(p);
+            break;
         }
     }
-    std::vector<std::uint32_t> freed;
-    for (std::uint32_t g : dissolve) {
-        for (std::uint32_t c : {left_[g], right_[g]})
-            if (alive_[c] != 2) {
-                parent_[c] = kNoGroupingNode;
-                freed.push_back(c);
-            }
-    }
-    for (std::uint32_t g : dissolve) {
-        if (rootSlot_[g] != kNoGroupingNode) dropRoot(g);
-        alive_[g] = 0;
-        left_[g] = right_[g] = parent_[g] = kNoGroupingNode;
-        freeNodes_.push_back(g);
-        ++stats.dissolved;
-    }
-    // Top-level items that moved (kept or freed) are placed in the grid
-    // again and offered to their neighbours; then grouping goes on as at
-    // build time, from where it stopped.
+    // Top-level items that changed are placed in the grid again and offered
+    // to their neighbours; then grouping goes on as at build time.
     std::vector<std::uint32_t> touched;
     for (std::uint32_t t : tops)
-        if (alive_[t] == 1 && rootSlot_[t] != kNoGroupingNode) {
+        if (alive_[t] && parent_[t] == kNoGroupingNode && rootSlot_[t] != kNoGroupingNode) {
             dropRoot(t);
             touched.push_back(t);
         }
-    for (std::uint32_t c : freed) touched.push_back(c);
+    for (std::uint32_t c : freed)
+        if (alive_[c] && parent_[c] == kNoGroupingNode && rootSlot_[c] == kNoGroupingNode) touched.push_back(c);
     std::sort(touched.begin(), touched.end());
     touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
     for (std::uint32_t t : touched) makeRoot(t);

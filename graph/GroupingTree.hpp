@@ -33,7 +33,7 @@ inline constexpr std::uint32_t kNoGroupingNode = ~std::uint32_t{0};
 
 struct GroupingRebuildStats {
     std::size_t refitted = 0;    // groups whose box and Ω0 were recomputed
-    std::size_t dissolved = 0;   // groups that no longer passed the last Ωt
+    std::size_t dissolved = 0;   // groups cut: their pair no longer passed the last Ωt
     std::size_t merged = 0;      // groups made anew
 };
 
@@ -62,10 +62,11 @@ public:
     // Records an object's new box and velocity; the tree changes at
     // rebuildMoved().
     void moveObject(std::uint32_t object, const Box& box, const glm::vec3& velocity);
-    // Refits the groups above moved objects; dissolves those whose pair no
-    // longer passes the last Ωt (and the groups above them), then lets the
-    // freed items group again with what is near them. Untouched branches
-    // stay as they are.
+    // Refits the groups above moved objects (up to where nothing changes
+    // any more); cuts each group whose pair no longer passes the last Ωt,
+    // its larger child taking its place and the other set free; then lets
+    // the freed and changed top-level items group again with what is near
+    // them. Branches no moved object belongs to stay as they are.
     GroupingRebuildStats rebuildMoved();
 
 private:
@@ -93,6 +94,10 @@ private:
     void offerPairs(std::uint32_t n, bool onlyLater);
     void consider(std::uint32_t n, std::uint32_t other, bool onlyLater);
     void agglomerate(GroupingRebuildStats* stats);
+    bool refitNode(std::uint32_t g);  // false when g did not change enough to matter
+    void refitUp(std::uint32_t g, std::vector<std::uint32_t>& tops, GroupingRebuildStats& stats);
+    void cut(std::uint32_t g, std::vector<std::uint32_t>& freed, std::vector<std::uint32_t>& tops,
+             GroupingRebuildStats& stats);
     void pushCandidate(std::uint32_t a, std::uint32_t b, float omega);
 
     GroupingParams params_;
