@@ -36,6 +36,7 @@ struct GroupingNode {
     float omegaT = 0.011f;        // the threshold the per-frame choice uses
     GroupingProxy proxy = GroupingProxy::Box;
     float proxyAlpha = 0.7f;
+    float impostorPixelsPerUnit = 0.5f;  // for bakers: image pixels per scene unit
     MeshPart boxPart{};        // a unit box with a white blended material; tinted per group
     std::uint32_t quadGeometry = 0;  // a unit quad in XY facing +Z, for impostors
     // Per tree node: the baked impostor's material, or kNoImpostor.

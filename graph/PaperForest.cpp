@@ -66,8 +66,12 @@ Geometry makeTreeTrunk(bool simplified) { return makePrism(3, kTrunkRadius, kTru
 
 PaperForest addPaperForest(Scene& scene, NodeId parent, GroupingNodes& grouping, LodTable& lods,
                            ForestColouring colouring) {
+    return addPaperForestTo(scene, addGroupingNode(scene, parent, grouping, "forest"), lods, colouring);
+}
+
+PaperForest addPaperForestTo(Scene& scene, NodeId groupingNode, LodTable& lods, ForestColouring colouring) {
     PaperForest f;
-    f.grouping = addGroupingNode(scene, parent, grouping, "forest");
+    f.grouping = groupingNode;
     const Geometry crown = makeTreeCrown(false);
     const std::uint32_t crowns[2] = {scene.addGeometry(crown), scene.addGeometry(makeTreeCrown(true))};
     const std::uint32_t trunks[2] = {scene.addGeometry(makeTreeTrunk(false)), scene.addGeometry(makeTreeTrunk(true))};

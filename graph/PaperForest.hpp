@@ -38,6 +38,8 @@ Geometry makeTreeTrunk(bool simplified);
 
 PaperForest addPaperForest(Scene& scene, NodeId parent, GroupingNodes& grouping, LodTable& lods,
                            ForestColouring colouring);
+// The same trees under an existing grouping node (after whatever else it holds).
+PaperForest addPaperForestTo(Scene& scene, NodeId groupingNode, LodTable& lods, ForestColouring colouring);
 // The fixed viewpoint of the experiment: in front of the block, at eye
 // height, about L0 away.
 View paperForestView(glm::ivec2 viewport);

@@ -88,4 +88,15 @@ std::size_t bakeImpostors(Scene& scene, NodeId groupingNode, GroupingNodes& tabl
     return baked;
 }
 
+std::size_t bakeImpostors(Scene& scene, GroupingNodes& table) {
+    std::size_t baked = 0;
+    for (NodeId n = 0; n < scene.nodeCount(); ++n) {
+        if (scene.kind(n) != NodeKind::Grouping || scene.payload(n) >= table.nodes.size()) continue;
+        const GroupingNode& g = table.nodes[scene.payload(n)];
+        if (g.proxy == GroupingProxy::Impostor)
+            baked += bakeImpostors(scene, n, table, {.pixelsPerUnit = g.impostorPixelsPerUnit});
+    }
+    return baked;
+}
+
 } // namespace arcomp

@@ -24,5 +24,8 @@ struct ImpostorBakeSettings {
 
 // Bakes every group of the node's tree; returns how many.
 std::size_t bakeImpostors(Scene& scene, NodeId groupingNode, GroupingNodes& table, const ImpostorBakeSettings& settings);
+// Bakes every grouping node of the scene whose proxy is Impostor, at its
+// own pixels per unit.
+std::size_t bakeImpostors(Scene& scene, GroupingNodes& table);
 
 } // namespace arcomp

@@ -82,6 +82,7 @@ StationConfig loadStationConfig(const std::filesystem::path& file) {
     render.vec4("background", cfg.render.background);
     render.finish();
 
+    readGroupingConfig(root, cfg.grouping);
     root.finish();
     report.throwIfAny();
     return cfg;

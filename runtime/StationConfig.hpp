@@ -6,6 +6,7 @@
 //   StationConfig cfg = loadStationConfig("configs/demo-replay.yaml");
 
 #include "graph/Shading.hpp"
+#include "runtime/GroupingConfig.hpp"
 
 #include <glm/glm.hpp>
 
@@ -52,6 +53,7 @@ struct StationConfig {
     std::vector<ObjectConfig> objects;
     CameraConfig camera;
     RenderConfig render;
+    GroupingConfig grouping;
 };
 
 StationConfig loadStationConfig(const std::filesystem::path& file);
