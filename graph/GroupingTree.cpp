@@ -33,6 +33,7 @@ std::uint32_t GroupingTree::addNode(const GroupingItem& item) {
         rootSlot_.push_back(kNoGroupingNode);
         cell_.push_back(kUnbounded);
         reach_.emplace_back(0.0f);
+        levelSlot_.push_back(kNoGroupingNode);
     }
     left_[n] = right_[n] = parent_[n] = kNoGroupingNode;
     omega0_[n] = 0.0f;
@@ -76,10 +77,11 @@ int GroupingTree::levelFor(std::uint32_t n) const {
     return -1;
 }
 
-std::uint64_t GroupingTree::cellKey(int level, float x, float z) const {
-    const double c = double(cellSize_) * std::ldexp(1.0, level);
-    const auto ix = static_cast<std::int64_t>(std::floor(double(x) / c));
-    const auto iz = static_cast<std::int64_t>(std::floor(double(z) / c));
+std::int64_t GroupingTree::cellIndex(int level, float x) const {
+    return static_cast<std::int64_t>(std::floor(double(x) / levelCell_[static_cast<std::size_t>(level)]));
+}
+
+std::uint64_t GroupingTree::cellKey(int level, std::int64_t ix, std::int64_t iz) {
     constexpr std::uint64_t mask = (std::uint64_t{1} << 29) - 1;
     // Far-apart cells may share a key; that only offers extra candidates.
     return (std::uint64_t(level) << 58) | ((std::uint64_t(ix) & mask) << 29) | (std::uint64_t(iz) & mask);
@@ -94,17 +96,23 @@ void GroupingTree::gridInsert(std::uint32_t n) {
         return;
     }
     const glm::vec3 c = item_[n].box.center();
-    const std::uint64_t key = cellKey(level, c.x, c.z);
+    const std::uint64_t key = cellKey(level, cellIndex(level, c.x), cellIndex(level, c.z));
     cell_[n] = key;
     grid_[key].push_back(n);
-    ++levelCount_[static_cast<std::size_t>(level)];
+    auto& items = levelItems_[static_cast<std::size_t>(level)];
+    levelSlot_[n] = static_cast<std::uint32_t>(items.size());
+    items.push_back(n);
 }
 
 void GroupingTree::gridErase(std::uint32_t n) {
     std::vector<std::uint32_t>* list = &unbounded_;
     if (cell_[n] != kUnbounded) {
         list = &grid_[cell_[n]];
-        --levelCount_[static_cast<std::size_t>(cell_[n] >> 58)];
+        auto& items = levelItems_[static_cast<std::size_t>(cell_[n] >> 58)];
+        const std::uint32_t slot = levelSlot_[n];
+        items[slot] = items.back();
+        levelSlot_[items[slot]] = slot;
+        items.pop_back();
     }
     const auto it = std::find(list->begin(), list->end(), n);
     if (it == list->end()) std::abort();  // roots are always in the grid
@@ -132,31 +140,29 @@ void GroupingTree::consider(std::uint32_t n, std::uint32_t other, bool onlyLater
 void GroupingTree::offerPairs(std::uint32_t n, bool onlyLater) {
     const glm::vec2 r = reach_[n];
     const glm::vec3 c = item_[n].box.center();
-    const bool everywhere = cell_[n] == kUnbounded;
-    double cells = 0.0;
-    if (!everywhere)
-        for (int level = 0; level < kLevels; ++level) {
-            if (levelCount_[static_cast<std::size_t>(level)] == 0) continue;
-            const double size = double(cellSize_) * std::ldexp(1.0, level);
-            cells += (2.0 * r.x / size + 2.0) * (2.0 * r.y / size + 2.0);
-        }
-    // A reach wider than the grid is cheaper served by the list of roots.
-    if (everywhere || cells > double(roots_.size())) {
+    if (cell_[n] == kUnbounded) {
         for (std::uint32_t other : roots_) consider(n, other, onlyLater);
         return;
     }
     for (int level = 0; level < kLevels; ++level) {
-        if (levelCount_[static_cast<std::size_t>(level)] == 0) continue;
-        const double size = double(cellSize_) * std::ldexp(1.0, level);
+        const auto& items = levelItems_[static_cast<std::size_t>(level)];
+        if (items.empty()) continue;
+        const double size = levelCell_[static_cast<std::size_t>(level)];
         // Roots at this level reach at most half a cell.
         const double mx = double(r.x) + size * 0.5, mz = double(r.y) + size * 0.5;
         const auto x0 = static_cast<std::int64_t>(std::floor((double(c.x) - mx) / size));
         const auto x1 = static_cast<std::int64_t>(std::floor((double(c.x) + mx) / size));
         const auto z0 = static_cast<std::int64_t>(std::floor((double(c.z) - mz) / size));
         const auto z1 = static_cast<std::int64_t>(std::floor((double(c.z) + mz) / size));
+        // A cell costs a hash lookup, a root a few comparisons: a wide reach
+        // over a sparse level is cheaper served by the level's list.
+        if (double(x1 - x0 + 1) * double(z1 - z0 + 1) * 4.0 > double(items.size())) {
+            for (std::uint32_t other : items) consider(n, other, onlyLater);
+            continue;
+        }
         for (std::int64_t ix = x0; ix <= x1; ++ix)
             for (std::int64_t iz = z0; iz <= z1; ++iz) {
-                const auto it = grid_.find(cellKey(level, float((double(ix) + 0.5) * size), float((double(iz) + 0.5) * size)));
+                const auto it = grid_.find(cellKey(level, ix, iz));
                 if (it == grid_.end()) continue;
                 for (std::uint32_t other : it->second) consider(n, other, onlyLater);
             }
@@ -206,7 +212,8 @@ void GroupingTree::build(std::span<const GroupingItem> objects, const GroupingPa
     freeNodes_.clear();
     heap_.clear();
     grid_.clear();
-    levelCount_.fill(0);
+    for (auto& items : levelItems_) items.clear();
+    levelSlot_.clear();
     movedObjects_.clear();
     moved_.assign(objects.size(), 0);
 
@@ -231,6 +238,7 @@ void GroupingTree::build(std::span<const GroupingItem> objects, const GroupingPa
         std::nth_element(reaches.begin(), reaches.begin() + std::ptrdiff_t(reaches.size() / 2), reaches.end());
         cellSize_ = reaches[reaches.size() / 2];
     }
+    for (int level = 0; level < kLevels; ++level) levelCell_[static_cast<std::size_t>(level)] = double(cellSize_) * std::ldexp(1.0, level);
     for (std::uint32_t n = 0; n < objects.size(); ++n) makeRoot(n);
     for (std::uint32_t n = 0; n < objects.size(); ++n) offerPairs(n, true);
     agglomerate(nullptr);

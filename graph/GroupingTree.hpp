@@ -87,7 +87,8 @@ private:
     // the partner's own reach, for the pair to possibly pass the last Ωt.
     glm::vec2 reach(std::uint32_t n) const;
     int levelFor(std::uint32_t n) const;
-    std::uint64_t cellKey(int level, float x, float z) const;
+    std::int64_t cellIndex(int level, float x) const;
+    static std::uint64_t cellKey(int level, std::int64_t ix, std::int64_t iz);
     void gridInsert(std::uint32_t n);
     void gridErase(std::uint32_t n);
     // Pushes every pair of n with another root whose Ω0 is below the last Ωt.
@@ -122,7 +123,9 @@ private:
     float cellSize_ = 1.0f;
     float proximityReach_ = 0.0f;  // the L2 bound, from the proximity term
     float shapeFactor_ = 0.0f;     // reach per unit of extent, from the shape term; 0: none
-    std::array<std::size_t, kLevels> levelCount_{};
+    std::array<std::vector<std::uint32_t>, kLevels> levelItems_{};  // the roots at each level
+    std::array<double, kLevels> levelCell_{};
+    std::vector<std::uint32_t> levelSlot_;  // a root's position in its level's list
     std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> grid_;
 
     std::vector<std::uint32_t> movedObjects_;
