@@ -49,6 +49,8 @@ struct GroupingNode {
     // Position of object i's subtree in scene.order(); refreshed by the
     // select pass when the scene's order changed.
     std::vector<std::uint32_t> objectPosition;
+    // The select pass's work list: tree nodes to choose, and whether inside the frustum.
+    std::vector<std::pair<std::uint32_t, bool>> pending;
 };
 
 struct GroupingNodes {

@@ -22,21 +22,20 @@ std::uint32_t GroupingTree::addNode(const GroupingItem& item) {
         n = freeNodes_.back();
         freeNodes_.pop_back();
         item_[n] = item;
+        hot_[n].bound = sphereAround(item.box);
     } else {
         n = static_cast<std::uint32_t>(item_.size());
         item_.push_back(item);
-        left_.push_back(kNoGroupingNode);
-        right_.push_back(kNoGroupingNode);
+        hot_.push_back({sphereAround(item.box), 0.0f, kNoGroupingNode, kNoGroupingNode});
         parent_.push_back(kNoGroupingNode);
-        omega0_.push_back(0.0f);
         alive_.push_back(1);
         rootSlot_.push_back(kNoGroupingNode);
         cell_.push_back(kUnbounded);
         reach_.emplace_back(0.0f);
         levelSlot_.push_back(kNoGroupingNode);
     }
-    left_[n] = right_[n] = parent_[n] = kNoGroupingNode;
-    omega0_[n] = 0.0f;
+    hot_[n].left = hot_[n].right = parent_[n] = kNoGroupingNode;
+    hot_[n].omega0 = 0.0f;
     alive_[n] = 1;
     return n;
 }
@@ -183,9 +182,9 @@ void GroupingTree::agglomerate(GroupingRebuildStats* stats) {
         dropRoot(top.a);
         dropRoot(top.b);
         const std::uint32_t g = addNode(merged);
-        left_[g] = top.a;
-        right_[g] = top.b;
-        omega0_[g] = top.omega;
+        hot_[g].left = top.a;
+        hot_[g].right = top.b;
+        hot_[g].omega0 = top.omega;
         parent_[top.a] = parent_[top.b] = g;
         makeRoot(g);
         offerPairs(g, false);
@@ -199,10 +198,8 @@ void GroupingTree::build(std::span<const GroupingItem> objects, const GroupingPa
     lastThreshold_ = params.lastThreshold();
     objectCount_ = objects.size();
     item_.clear();
-    left_.clear();
-    right_.clear();
+    hot_.clear();
     parent_.clear();
-    omega0_.clear();
     alive_.clear();
     roots_.clear();
     rootSlot_.clear();
@@ -253,8 +250,8 @@ std::size_t GroupingTree::depth() const {
         stack.pop_back();
         best = std::max(best, d);
         if (!isLeaf(n)) {
-            stack.push_back({left_[n], d + 1});
-            stack.push_back({right_[n], d + 1});
+            stack.push_back({hot_[n].left, d + 1});
+            stack.push_back({hot_[n].right, d + 1});
         }
     }
     return best;
@@ -267,8 +264,8 @@ std::vector<std::uint32_t> GroupingTree::objectsUnder(std::uint32_t n) const {
         stack.pop_back();
         if (isLeaf(m)) out.push_back(m);
         else {
-            stack.push_back(left_[m]);
-            stack.push_back(right_[m]);
+            stack.push_back(hot_[m].left);
+            stack.push_back(hot_[m].right);
         }
     }
     return out;
@@ -277,6 +274,7 @@ std::vector<std::uint32_t> GroupingTree::objectsUnder(std::uint32_t n) const {
 void GroupingTree::moveObject(std::uint32_t object, const Box& box, const glm::vec3& velocity) {
     if (object >= objectCount_) std::abort();
     item_[object] = groupingItem(box, item_[object].color, velocity);
+    hot_[object].bound = sphereAround(box);
     if (!moved_[object]) {
         moved_[object] = 1;
         movedObjects_.push_back(object);
@@ -284,8 +282,8 @@ void GroupingTree::moveObject(std::uint32_t object, const Box& box, const glm::v
 }
 
 bool GroupingTree::refitNode(std::uint32_t g) {
-    const GroupingItem fresh = mergedItem(item_[left_[g]], item_[right_[g]]);
-    const float w = omega0(item_[left_[g]], item_[right_[g]], params_);
+    const GroupingItem fresh = mergedItem(item_[hot_[g].left], item_[hot_[g].right]);
+    const float w = omega0(item_[hot_[g].left], item_[hot_[g].right], params_);
     const GroupingItem& old = item_[g];
     // Above a moved object, a group's box usually stays as it was and its
     // mean velocity and colour change by a member's share; once that moves
@@ -295,10 +293,11 @@ bool GroupingTree::refitNode(std::uint32_t g) {
     const bool same = fresh.box.min == old.box.min && fresh.box.max == old.box.max &&
                       params_.alphaF * glm::length(fresh.velocity - old.velocity) / params_.l0 < tolerance &&
                       params_.alphaC * glm::length(fresh.color - old.color) / params_.l0 < tolerance &&
-                      std::abs(w - omega0_[g]) < tolerance;
+                      std::abs(w - hot_[g].omega0) < tolerance;
     if (same) return false;
     item_[g] = fresh;
-    omega0_[g] = w;
+    hot_[g].bound = sphereAround(fresh.box);
+    hot_[g].omega0 = w;
     return true;
 }
 
@@ -315,7 +314,7 @@ void GroupingTree::refitUp(std::uint32_t g, std::vector<std::uint32_t>& tops, Gr
 // top-level and groups again with what is near it.
 void GroupingTree::cut(std::uint32_t g, std::vector<std::uint32_t>& freed, std::vector<std::uint32_t>& tops,
                        GroupingRebuildStats& stats) {
-    const std::uint32_t a = left_[g], b = right_[g], p = parent_[g];
+    const std::uint32_t a = hot_[g].left, b = hot_[g].right, p = parent_[g];
     ++stats.dissolved;
     if (p == kNoGroupingNode) {
         dropRoot(g);
@@ -325,13 +324,13 @@ void GroupingTree::cut(std::uint32_t g, std::vector<std::uint32_t>& freed, std::
     } else {
         const bool keepA = item_[a].volume >= item_[b].volume;
         const std::uint32_t keep = keepA ? a : b, loose = keepA ? b : a;
-        (left_[p] == g ? left_[p] : right_[p]) = keep;
+        (hot_[p].left == g ? hot_[p].left : hot_[p].right) = keep;
         parent_[keep] = p;
         parent_[loose] = kNoGroupingNode;
         freed.push_back(loose);
     }
     alive_[g] = 0;
-    left_[g] = right_[g] = parent_[g] = kNoGroupingNode;
+    hot_[g].left = hot_[g].right = parent_[g] = kNoGroupingNode;
     freeNodes_.push_back(g);
     if (p != kNoGroupingNode) refitUp(p, tops, stats);
 }
@@ -354,7 +353,7 @@ GroupingRebuildStats GroupingTree::rebuildMoved() {
         std::uint32_t g = check.back();
         check.pop_back();
         for (; g != kNoGroupingNode; g = parent_[g]) {
-            if (!alive_[g] || double(omega0_[g]) < lastThreshold_) continue;
+            if (!alive_[g] || double(hot_[g].omega0) < lastThreshold_) continue;
             const std::uint32_t p = parent_[g];
             cut(g, freed, tops, stats);
             check.push_back(p);

@@ -44,14 +44,16 @@ public:
     const GroupingParams& params() const { return params_; }
     std::size_t objectCount() const { return objectCount_; }
     std::size_t nodeCount() const { return item_.size(); }
-    bool isLeaf(std::uint32_t n) const { return left_[n] == kNoGroupingNode; }
+    bool isLeaf(std::uint32_t n) const { return hot_[n].left == kNoGroupingNode; }
     bool alive(std::uint32_t n) const { return alive_[n] != 0; }
     const GroupingItem& item(std::uint32_t n) const { return item_[n]; }
-    std::uint32_t left(std::uint32_t n) const { return left_[n]; }
-    std::uint32_t right(std::uint32_t n) const { return right_[n]; }
+    // The sphere around node n's box, for culling.
+    const Sphere& bound(std::uint32_t n) const { return hot_[n].bound; }
+    std::uint32_t left(std::uint32_t n) const { return hot_[n].left; }
+    std::uint32_t right(std::uint32_t n) const { return hot_[n].right; }
     std::uint32_t parent(std::uint32_t n) const { return parent_[n]; }
     // Ω0 of the pair this group was made from (now, after any refit).
-    float mergeOmega0(std::uint32_t n) const { return omega0_[n]; }
+    float mergeOmega0(std::uint32_t n) const { return hot_[n].omega0; }
     // Top-level nodes: groups with no parent and objects in no group.
     std::span<const std::uint32_t> roots() const { return roots_; }
     // Longest root-to-leaf path in nodes (a lone object counts 1).
@@ -105,9 +107,15 @@ private:
     double lastThreshold_ = 0.0;
     std::size_t objectCount_ = 0;
 
+    // What the select pass reads of a node, together in one cache line.
+    struct Hot {
+        Sphere bound;
+        float omega0;
+        std::uint32_t left, right;
+    };
+    std::vector<Hot> hot_;
     std::vector<GroupingItem> item_;
-    std::vector<std::uint32_t> left_, right_, parent_;
-    std::vector<float> omega0_;
+    std::vector<std::uint32_t> parent_;
     std::vector<std::uint8_t> alive_;
     std::vector<std::uint32_t> roots_;
     std::vector<std::uint32_t> rootSlot_;  // position in roots_, or kNoGroupingNode

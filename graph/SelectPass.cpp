@@ -94,7 +94,8 @@ struct SelectPass {
         refreshObjectPositions(pos, g);
         if (g.proxyModel.size() < tree.nodeCount()) g.proxyModel.resize(tree.nodeCount());
         const GroupingParams& params = tree.params();
-        std::vector<std::pair<std::uint32_t, bool>> stack;  // tree nodes to choose, and whether inside
+        auto& stack = g.pending;
+        stack.clear();
         for (std::uint32_t r : tree.roots()) stack.push_back({r, inside});
         while (!stack.empty()) {
             auto [t, in] = stack.back();
@@ -105,7 +106,7 @@ struct SelectPass {
             }
             ++out.nodesVisited;
             const Box& box = tree.item(t).box;
-            const Sphere s = sphereAround(box);
+            const Sphere& s = tree.bound(t);
             if (!in) {
                 const Containment c = frustum.classify(s);
                 if (c == Containment::Outside) {
@@ -114,7 +115,7 @@ struct SelectPass {
                 }
                 in = c == Containment::Inside;
             }
-            const float leye = glm::length(box.center() - view.eye);
+            const float leye = glm::length(s.center - view.eye);
             if (omegaAt(tree.mergeOmega0(t), leye, params) >= g.omegaT) {
                 stack.push_back({tree.right(t), in});
                 stack.push_back({tree.left(t), in});

@@ -90,13 +90,14 @@ int run(const Options& o) {
     };
     DrawList list;
     double selectMs = 0.0, ungroupedMs = 0.0;
-    std::size_t drawn = 0, drawnUngrouped = 0;
+    std::size_t drawn = 0, drawnUngrouped = 0, visited = 0;
     for (int f = 0; f < o.frames; ++f) {
         const View v = viewAt(f);
         auto t = Clock::now();
         select(scene, v, {.grouping = &table}, list);
         selectMs += msSince(t);
         drawn += list.items.size();
+        visited += list.nodesVisited;
         t = Clock::now();
         select(scene, v, {}, list);
         ungroupedMs += msSince(t);
@@ -143,6 +144,7 @@ int run(const Options& o) {
               << ",\"tree_depth\":" << tree.depth() << ",\"groups\":" << groups << ",\"top_level\":" << tree.roots().size()
               << ",\"frames\":" << o.frames << ",\"select_ms_per_frame\":" << selectMs / frames
               << ",\"drawn_items_per_frame\":" << double(drawn) / frames
+              << ",\"visited_nodes_per_frame\":" << double(visited) / frames
               << ",\"baseline_ungrouped_select_ms_per_frame\":" << ungroupedMs / frames
               << ",\"baseline_ungrouped_items_per_frame\":" << double(drawnUngrouped) / frames
               << ",\"moving_per_frame\":" << moving << ",\"rebuild_ms_per_frame\":" << rebuildMs / frames
