@@ -81,13 +81,18 @@ glm::mat4 boxProxyModel(const Box& box) {
     return glm::scale(t, glm::max(box.size(), glm::vec3(1e-6f)));
 }
 
-glm::mat4 billboardModel(const Box& box, const glm::vec3& eye) {
-    const glm::vec3 c = box.center();
-    const glm::vec3 s = box.size();
-    const float yaw = std::atan2(eye.x - c.x, eye.z - c.z);
-    glm::mat4 m = glm::translate(glm::mat4(1.0f), c);
-    m = glm::rotate(m, yaw, {0.0f, 1.0f, 0.0f});
-    return glm::scale(m, glm::vec3(std::max(std::max(s.x, s.z), 1e-6f), std::max(s.y, 1e-6f), 1.0f));
+glm::mat3 billboardFrame(const glm::vec3& towardsEye) {
+    const float len = glm::length(towardsEye);
+    const glm::vec3 z = len > 0.0f ? towardsEye / len : glm::vec3(0.0f, 0.0f, 1.0f);
+    glm::vec3 x = glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), z);
+    x = glm::length(x) > 1e-6f ? glm::normalize(x) : glm::vec3(1.0f, 0.0f, 0.0f);
+    return {x, glm::cross(z, x), z};
+}
+
+glm::mat4 billboardModel(const Sphere& bound, const glm::vec3& eye) {
+    const glm::mat3 f = billboardFrame(eye - bound.center);
+    const float d = std::max(2.0f * bound.radius, 1e-6f);
+    return {glm::vec4(f[0] * d, 0.0f), glm::vec4(f[1] * d, 0.0f), glm::vec4(f[2], 0.0f), glm::vec4(bound.center, 1.0f)};
 }
 
 } // namespace arcomp

@@ -68,9 +68,12 @@ GroupingItem groupingItemOf(const Scene& scene, NodeId subtree);
 void buildGrouping(Scene& scene, NodeId groupingNode, GroupingNodes& table, const GroupingParams& params);
 
 // A proxy's model matrix: the unit box scaled to the group's box, or the
-// unit quad turned about +Y to face the eye and scaled to the group's
-// width and height.
+// unit quad facing the eye, spanning the diameter of the group's sphere
+// (its image was baked orthographically around that sphere).
 glm::mat4 boxProxyModel(const Box& box);
-glm::mat4 billboardModel(const Box& box, const glm::vec3& eye);
+glm::mat4 billboardModel(const Sphere& bound, const glm::vec3& eye);
+// The quad's frame for an eye direction: +Z towards the eye, +Y as near
+// world up as it can be; bakers render with the same frame.
+glm::mat3 billboardFrame(const glm::vec3& towardsEye);
 
 } // namespace arcomp

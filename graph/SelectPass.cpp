@@ -126,7 +126,7 @@ struct SelectPass {
                                   g.impostorMaterial[t] != GroupingNode::kNoImpostor;
             if (impostor) {
                 item.part = {g.quadGeometry, g.impostorMaterial[t]};
-                g.proxyModel[t] = billboardModel(box, view.eye);
+                g.proxyModel[t] = billboardModel(s, view.eye);
             } else {
                 g.proxyModel[t] = boxProxyModel(box);
                 item.tint = glm::vec4(tree.item(t).color, g.proxyAlpha);

@@ -24,17 +24,17 @@ void finestMeshes(const Scene& scene, NodeId n, std::vector<NodeId>& out) {
     for (NodeId c : children) finestMeshes(scene, c, out);
 }
 
-View frontView(const Box& box, glm::ivec2 pixels) {
-    const glm::vec3 c = box.center(), s = box.size();
-    const float w = std::max(s.x, s.z), h = s.y;
-    const float depth = std::max(s.z, s.x) + 1.0f;
+// Orthographic around the sphere, in the frame the billboard will have.
+View bakeView(const Sphere& bound, const glm::vec3& towardsEye, glm::ivec2 pixels) {
+    const glm::mat3 f = billboardFrame(towardsEye);
+    const float r = std::max(bound.radius, 1e-6f);
     View v;
-    v.eye = c + glm::vec3(0.0f, 0.0f, depth);
-    v.forward = {0.0f, 0.0f, -1.0f};
-    v.view = glm::lookAt(v.eye, c, {0.0f, 1.0f, 0.0f});
-    v.near = 0.01f;
-    v.far = 2.0f * depth;
-    v.projection = glm::ortho(-0.5f * w, 0.5f * w, -0.5f * h, 0.5f * h, v.near, v.far);
+    v.eye = bound.center + f[2] * (r + 1.0f);
+    v.forward = -f[2];
+    v.view = glm::lookAt(v.eye, bound.center, f[1]);
+    v.near = 0.5f;
+    v.far = 2.0f * r + 1.5f;
+    v.projection = glm::ortho(-r, r, -r, r, v.near, v.far);
     v.viewport = pixels;
     return v;
 }
@@ -58,20 +58,18 @@ std::size_t bakeImpostors(Scene& scene, NodeId groupingNode, GroupingNodes& tabl
     Renderer renderer;
     for (std::uint32_t t = 0; t < tree.nodeCount(); ++t) {
         if (!tree.alive(t) || tree.isLeaf(t)) continue;
-        const Box& box = tree.item(t).box;
-        const glm::vec3 s = box.size();
-        const auto side = [&](float units) {
-            return std::clamp(int(std::lround(units * settings.pixelsPerUnit)), settings.minPixels, settings.maxPixels);
-        };
-        const glm::ivec2 pixels{side(std::max(s.x, s.z)), side(s.y)};
-        const View view = frontView(box, pixels);
+        const Sphere& bound = tree.bound(t);
+        const int side = std::clamp(int(std::lround(2.0f * bound.radius * settings.pixelsPerUnit)), settings.minPixels,
+                                    settings.maxPixels);
+        const glm::vec3 towardsEye = settings.eye ? *settings.eye - bound.center : glm::vec3(0.0f, 0.0f, 1.0f);
+        const View view = bakeView(bound, towardsEye, {side, side});
         DrawList list;
         std::vector<NodeId> meshes;
         for (std::uint32_t o : tree.objectsUnder(t)) finestMeshes(scene, g.objects[o], meshes);
         for (NodeId m : meshes)
             list.items.push_back({m, scene.meshPart(m), glm::length(scene.worldBound(m).center - view.eye), 0.0f, 0,
                                   Shading::Phong});
-        RenderTarget target(pixels);
+        RenderTarget target({side, side});
         target.bind();
         renderer.draw(scene, list, view, {.clearColor = glm::vec4(0.0f)});
         Image img = target.read();
@@ -88,13 +86,13 @@ std::size_t bakeImpostors(Scene& scene, NodeId groupingNode, GroupingNodes& tabl
     return baked;
 }
 
-std::size_t bakeImpostors(Scene& scene, GroupingNodes& table) {
+std::size_t bakeImpostors(Scene& scene, GroupingNodes& table, const glm::vec3& eye) {
     std::size_t baked = 0;
     for (NodeId n = 0; n < scene.nodeCount(); ++n) {
         if (scene.kind(n) != NodeKind::Grouping || scene.payload(n) >= table.nodes.size()) continue;
         const GroupingNode& g = table.nodes[scene.payload(n)];
         if (g.proxy == GroupingProxy::Impostor)
-            baked += bakeImpostors(scene, n, table, {.pixelsPerUnit = g.impostorPixelsPerUnit});
+            baked += bakeImpostors(scene, n, table, {.pixelsPerUnit = g.impostorPixelsPerUnit, .eye = eye});
     }
     return baked;
 }

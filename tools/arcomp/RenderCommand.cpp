@@ -48,7 +48,7 @@ int render(const RenderOptions& o) {
     }
 
     auto context = HeadlessContext::create(request);
-    bakeImpostors(scene, file.grouping);  // for grouping nodes that use them; needs the context
+    bakeImpostors(scene, file.grouping, view.eye);  // for grouping nodes that use them; needs the context
     RenderTarget target(size);
     target.bind();
     Renderer renderer;

@@ -101,7 +101,7 @@ int run(const Options& o) {
     const char* names[2] = {"mixed", "green"};
     for (int f = 0; f < 2; ++f) {
         ForestExperiment& e = *forests[f];
-        const std::size_t baked = bakeImpostors(e.scene, e.forest.grouping, e.grouping, {.pixelsPerUnit = 0.6f});
+        const std::size_t baked = bakeImpostors(e.scene, e.forest.grouping, e.grouping, {.pixelsPerUnit = 0.6f, .eye = e.view.eye});
         std::cerr << names[f] << ": " << baked << " impostors baked\n";
         Renderer renderer;
         const auto shot = [&](ForestMode mode, GroupingProxy proxy, const char* label) {
