@@ -76,6 +76,16 @@ void buildGrouping(Scene& scene, NodeId groupingNode, GroupingNodes& table, cons
     g.impostorMaterial.clear();
 }
 
+GroupingRebuildStats regroupMoved(const Scene& scene, NodeId groupingNode, GroupingNodes& table,
+                                  std::span<const MovedObject> moved) {
+    GroupingNode& g = table.nodes[scene.payload(groupingNode)];
+    for (const MovedObject& m : moved) {
+        if (m.object >= g.objects.size()) std::abort();
+        g.tree.moveObject(m.object, groupingItemOf(scene, g.objects[m.object]).box, m.velocity);
+    }
+    return g.tree.rebuildMoved();
+}
+
 glm::mat4 boxProxyModel(const Box& box) {
     const glm::mat4 t = glm::translate(glm::mat4(1.0f), box.center());
     return glm::scale(t, glm::max(box.size(), glm::vec3(1e-6f)));

@@ -23,6 +23,7 @@
 #include "graph/GroupingTree.hpp"
 #include "graph/Scene.hpp"
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,19 @@ GroupingItem groupingItemOf(const Scene& scene, NodeId subtree);
 // Builds the grouping tree over the grouping node's children (call after
 // scene.update()); sets the node's Ωt to params.omegaT.
 void buildGrouping(Scene& scene, NodeId groupingNode, GroupingNodes& table, const GroupingParams& params);
+
+// After objects of a grouping node moved (their transforms set and
+// scene.update() run): takes their new boxes and velocities (scene units
+// per second) into the tree and rebuilds only the branches they are in.
+//
+//   scene.setLocal(f.trees[3], m); scene.update();
+//   regroupMoved(scene, f.grouping, table, {{3, velocity}});
+struct MovedObject {
+    std::uint32_t object;
+    glm::vec3 velocity{0.0f};
+};
+GroupingRebuildStats regroupMoved(const Scene& scene, NodeId groupingNode, GroupingNodes& table,
+                                  std::span<const MovedObject> moved);
 
 // A proxy's model matrix: the unit box scaled to the group's box, or the
 // unit quad facing the eye, spanning the diameter of the group's sphere

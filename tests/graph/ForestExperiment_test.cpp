@@ -1,5 +1,6 @@
 #include "graph/ForestExperiment.hpp"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 namespace arcomp {
@@ -79,6 +80,51 @@ TEST(ForestExperiment, groupingBeatsSimplificationAloneFromSomeThresholdAtMost00
 TEST(ForestExperiment, simplificationAloneDrawsFewerThanFullDetail) {
     ForestExperiment f(ForestColouring::Green);
     EXPECT_LT(f.triangles(ForestMode::Simplified, 0.01f), f.triangles(ForestMode::Full, 0.01f));
+}
+
+} // namespace
+} // namespace arcomp
+
+namespace arcomp {
+namespace {
+
+std::uint32_t topOf(const GroupingTree& t, std::uint32_t n) {
+    while (t.parent(n) != kNoGroupingNode) n = t.parent(n);
+    return n;
+}
+
+TEST(ForestExperiment, aTreeCarriedAwayLeavesItsGroupAndIsDrawnOnItsOwn) {
+    ForestExperiment f(ForestColouring::Green);
+    const GroupingTree& tree = f.grouping.nodes[f.scene.payload(f.forest.grouping)].tree;
+    ASSERT_EQ(tree.roots().size(), 1u);
+    const std::size_t before = f.triangles(ForestMode::Grouped, 0.1f);
+    EXPECT_EQ(before, 12u) << "one box";
+    // Tree 0 is carried 10 m towards the viewer at 2 m/s.
+    f.scene.setLocal(f.forest.trees[0], glm::translate(f.scene.local(f.forest.trees[0]), {0.0f, 0.0f, 1000.0f}));
+    f.scene.update();
+    const MovedObject moved[] = {{0, {0.0f, 0.0f, 200.0f}}};
+    const GroupingRebuildStats s = regroupMoved(f.scene, f.forest.grouping, f.grouping, moved);
+    EXPECT_GT(s.dissolved, 0u);
+    EXPECT_EQ(tree.parent(0), kNoGroupingNode);
+    EXPECT_EQ(tree.objectsUnder(topOf(tree, 1)).size(), kForestTrees - 1) << "the others stay one group";
+    const std::size_t after = f.triangles(ForestMode::Grouped, 0.1f);
+    EXPECT_EQ(after, 12u + kTreeTriangles) << "the box of 31 trees and the lone tree, near enough for full detail";
+}
+
+TEST(ForestExperiment, treesCarriedTogetherStayGrouped) {
+    ForestExperiment f(ForestColouring::Green);
+    const GroupingTree& tree = f.grouping.nodes[f.scene.payload(f.forest.grouping)].tree;
+    const std::uint32_t root = tree.roots()[0];
+    std::vector<MovedObject> moved;
+    for (std::uint32_t i = 0; i < kForestTrees; ++i) {
+        f.scene.setLocal(f.forest.trees[i], glm::translate(f.scene.local(f.forest.trees[i]), {50.0f, 0.0f, 0.0f}));
+        moved.push_back({i, {150.0f, 0.0f, 0.0f}});
+    }
+    f.scene.update();
+    const GroupingRebuildStats s = regroupMoved(f.scene, f.forest.grouping, f.grouping, moved);
+    EXPECT_EQ(s.dissolved, 0u) << "common motion: Ff = 0";
+    ASSERT_EQ(tree.roots().size(), 1u);
+    EXPECT_EQ(tree.roots()[0], root);
 }
 
 } // namespace
