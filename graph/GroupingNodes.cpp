@@ -74,6 +74,15 @@ void buildGrouping(Scene& scene, NodeId groupingNode, GroupingNodes& table, cons
     g.omegaT = params.omegaT;
     g.objectPosition.clear();
     g.impostorMaterial.clear();
+    g.impostorBound.clear();
+}
+
+bool GroupingNode::impostorFits(std::uint32_t t) const {
+    if (t >= impostorMaterial.size() || t >= impostorBound.size() || impostorMaterial[t] == kNoImpostor) return false;
+    const Sphere& now = tree.bound(t);
+    const Sphere& then = impostorBound[t];
+    const float slack = 0.02f * then.radius;
+    return glm::length(now.center - then.center) <= slack && std::abs(now.radius - then.radius) <= slack;
 }
 
 GroupingRebuildStats regroupMoved(const Scene& scene, NodeId groupingNode, GroupingNodes& table,

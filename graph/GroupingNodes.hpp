@@ -40,9 +40,13 @@ struct GroupingNode {
     float impostorPixelsPerUnit = 0.5f;  // for bakers: image pixels per scene unit
     MeshPart boxPart{};        // a unit box with a white blended material; tinted per group
     std::uint32_t quadGeometry = 0;  // a unit quad in XY facing +Z, for impostors
-    // Per tree node: the baked impostor's material, or kNoImpostor.
+    // Per tree node: the baked impostor's material, or kNoImpostor, and the
+    // sphere it was baked around. A group that moved or was remade since
+    // (its slot reused) no longer matches that sphere and shows its box.
     static constexpr std::uint32_t kNoImpostor = ~std::uint32_t{0};
     std::vector<std::uint32_t> impostorMaterial;
+    std::vector<Sphere> impostorBound;
+    bool impostorFits(std::uint32_t t) const;
 
     // Per tree node, written by the select pass: the proxy's model matrix
     // (draw items point at it until the next select).

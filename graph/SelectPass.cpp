@@ -122,9 +122,7 @@ struct SelectPass {
                 continue;
             }
             DrawItem item{node, g.boxPart, leye, view.projectedArea(s), level, settings.shading, fade};
-            const bool impostor = g.proxy == GroupingProxy::Impostor && t < g.impostorMaterial.size() &&
-                                  g.impostorMaterial[t] != GroupingNode::kNoImpostor;
-            if (impostor) {
+            if (g.proxy == GroupingProxy::Impostor && g.impostorFits(t)) {
                 item.part = {g.quadGeometry, g.impostorMaterial[t]};
                 g.proxyModel[t] = billboardModel(s, view.eye);
             } else {

@@ -54,6 +54,7 @@ std::size_t bakeImpostors(Scene& scene, NodeId groupingNode, GroupingNodes& tabl
     GroupingNode& g = table.nodes[scene.payload(groupingNode)];
     const GroupingTree& tree = g.tree;
     g.impostorMaterial.assign(tree.nodeCount(), GroupingNode::kNoImpostor);
+    g.impostorBound.assign(tree.nodeCount(), Sphere{});
     std::size_t baked = 0;
     Renderer renderer;
     for (std::uint32_t t = 0; t < tree.nodeCount(); ++t) {
@@ -81,6 +82,7 @@ std::size_t bakeImpostors(Scene& scene, NodeId groupingNode, GroupingNodes& tabl
         m.unlit = true;
         m.doubleSided = true;
         g.impostorMaterial[t] = scene.addMaterial(std::move(m));
+        g.impostorBound[t] = bound;
         ++baked;
     }
     return baked;

@@ -129,3 +129,34 @@ TEST(ForestExperiment, treesCarriedTogetherStayGrouped) {
 
 } // namespace
 } // namespace arcomp
+
+namespace arcomp {
+namespace {
+
+TEST(ForestExperiment, anImpostorIsUsedOnlyWhileItsGroupStaysWhereItWasBaked) {
+    ForestExperiment f(ForestColouring::Green);
+    GroupingNode& g = f.grouping.nodes[f.scene.payload(f.forest.grouping)];
+    const std::uint32_t root = g.tree.roots()[0];
+    // As a baker would leave it: a material and the sphere it was made around.
+    g.impostorMaterial.assign(g.tree.nodeCount(), GroupingNode::kNoImpostor);
+    g.impostorBound.assign(g.tree.nodeCount(), Sphere{});
+    g.impostorMaterial[root] = 0;
+    g.impostorBound[root] = g.tree.bound(root);
+    const auto proxyGeometry = [&] {
+        const DrawList& list = f.select(ForestMode::Grouped, 0.1f, GroupingProxy::Impostor);
+        EXPECT_EQ(list.items.size(), 1u);
+        return list.items.empty() ? ~0u : list.items[0].part.geometry;
+    };
+    EXPECT_EQ(proxyGeometry(), g.quadGeometry);
+    std::vector<MovedObject> moved;
+    for (std::uint32_t i = 0; i < kForestTrees; ++i) {
+        f.scene.setLocal(f.forest.trees[i], glm::translate(f.scene.local(f.forest.trees[i]), {400.0f, 0.0f, 0.0f}));
+        moved.push_back({i, {100.0f, 0.0f, 0.0f}});
+    }
+    f.scene.update();
+    regroupMoved(f.scene, f.forest.grouping, f.grouping, moved);
+    EXPECT_EQ(proxyGeometry(), g.boxPart.geometry) << "moved since baking: the box stands in";
+}
+
+} // namespace
+} // namespace arcomp
