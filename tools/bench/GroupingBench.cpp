@@ -15,7 +15,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <chrono>
-#include <cstdlib>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -130,7 +129,6 @@ int run(const Options& o) {
         const auto t = Clock::now();
         const GroupingRebuildStats s = tree.rebuildMoved();
         rebuildMs += msSince(t);
-        if (std::getenv("ARCOMP_GROUPING_TRACE")) std::cerr << "frame " << f << " rebuild " << msSince(t) << " ms, refit " << s.refitted << " cut " << s.dissolved << " merged " << s.merged << "\n";
         total.refitted += s.refitted;
         total.dissolved += s.dissolved;
         total.merged += s.merged;
