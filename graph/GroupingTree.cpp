@@ -317,7 +317,9 @@ void GroupingTree::cut(std::uint32_t g, std::vector<std::uint32_t>& freed, std::
     const std::uint32_t a = hot_[g].left, b = hot_[g].right, p = parent_[g];
     ++stats.dissolved;
     if (p == kNoGroupingNode) {
-        dropRoot(g);
+        // A top-level group, or one set free by an earlier cut in this
+        // rebuild (not yet back in the grid).
+        if (rootSlot_[g] != kNoGroupingNode) dropRoot(g);
         parent_[a] = parent_[b] = kNoGroupingNode;
         freed.push_back(a);
         freed.push_back(b);

@@ -202,3 +202,28 @@ TEST(GroupingTree, manyMovesKeepTheTreeSettled) {
 
 } // namespace
 } // namespace arcomp
+
+namespace arcomp {
+namespace {
+
+// Many objects drifting apart in one frame: cuts free subtrees whose own
+// top then breaks too, before they are back at the top level.
+TEST(GroupingTree, cascadingCutsInOneRebuildKeepTheTreeSettled) {
+    const GroupingParams p;
+    const auto objects = randomObjects(400, 11);
+    GroupingTree t;
+    t.build(objects, p);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> step(-150.0f, 150.0f);
+    for (int frame = 0; frame < 30; ++frame) {
+        for (std::uint32_t o = 0; o < 400; o += 3) {
+            const glm::vec3 d{step(rng), 0.0f, step(rng)};
+            t.moveObject(o, shifted(t.item(o).box, d), d * 30.0f);
+        }
+        t.rebuildMoved();
+    }
+    expectSettled(t);
+}
+
+} // namespace
+} // namespace arcomp
