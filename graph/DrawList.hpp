@@ -24,6 +24,11 @@ struct DrawItem {
     // Silhouette nodes use it to pick their region's list.
     std::uint32_t firstIndex = 0;
     std::uint32_t indexCount = 0;
+    // Grouping proxies are no scene node: they bring their own model matrix
+    // (owned by the grouping table until the next select) and a colour that
+    // multiplies the material's base colour, alpha included.
+    const glm::mat4* model = nullptr;
+    glm::vec4 tint{1.0f};
 };
 
 struct DrawList {

@@ -1,6 +1,7 @@
 #include "graph/SelectPass.hpp"
 
 #include "graph/Frustum.hpp"
+#include "graph/GroupingNodes.hpp"
 #include "graph/Lod.hpp"
 
 namespace arcomp {
@@ -41,6 +42,12 @@ struct SelectPass {
         case NodeKind::Lod:
             visitLod(pos, node, bound, inside, fade);
             return;  // its children are levels: only the chosen ones are visited
+        case NodeKind::Grouping:
+            if (settings.grouping && scene.payload(node) < settings.grouping->nodes.size()) {
+                visitGrouping(pos, node, inside, level, fade);
+                return;  // its children are reached through the grouping tree
+            }
+            break;
         case NodeKind::SilhouetteRegion:
             if (settings.silhouettes && scene.payload(node) < settings.silhouettes->nodes.size()) {
                 const SilhouetteNode& s = settings.silhouettes->nodes[scene.payload(node)];
@@ -74,6 +81,70 @@ struct SelectPass {
         const LodChoice c = lods.choose(i, in, settings.timeSeconds);
         visitLevel(pos, c.level, inside, fade * c.fade);
         if (c.fadingLevel != kNoLevel) visitLevel(pos, c.fadingLevel, inside, fade * (1.0f - c.fade));
+    }
+
+    // The paper's NodeChoice over the grouping tree (DESIGN.md §2): a group
+    // in view whose Ω at its eye distance is below Ωt is drawn as its proxy;
+    // otherwise its two children are tried; an object is visited as a
+    // subtree, so its own LOD node picks its level.
+    void visitGrouping(std::uint32_t pos, NodeId node, bool inside, std::uint8_t level, float fade) {
+        GroupingNode& g = settings.grouping->nodes[scene.payload(node)];
+        const GroupingTree& tree = g.tree;
+        if (tree.objectCount() != g.objects.size()) return;  // not built: draws nothing rather than guess
+        refreshObjectPositions(pos, g);
+        if (g.proxyModel.size() < tree.nodeCount()) g.proxyModel.resize(tree.nodeCount());
+        const GroupingParams& params = tree.params();
+        auto& stack = g.pending;
+        stack.clear();
+        for (std::uint32_t r : tree.roots()) stack.push_back({r, inside});
+        while (!stack.empty()) {
+            auto [t, in] = stack.back();
+            stack.pop_back();
+            if (tree.isLeaf(t)) {
+                visit(g.objectPosition[t], in, level, fade);
+                continue;
+            }
+            ++out.nodesVisited;
+            const Box& box = tree.item(t).box;
+            const Sphere& s = tree.bound(t);
+            if (!in) {
+                const Containment c = frustum.classify(s);
+                if (c == Containment::Outside) {
+                    ++out.nodesCulled;
+                    continue;
+                }
+                in = c == Containment::Inside;
+            }
+            const float leye = glm::length(s.center - view.eye);
+            if (omegaAt(tree.mergeOmega0(t), leye, params) >= g.omegaT) {
+                stack.push_back({tree.right(t), in});
+                stack.push_back({tree.left(t), in});
+                continue;
+            }
+            DrawItem item{node, g.boxPart, leye, view.projectedArea(s), level, settings.shading, fade};
+            if (g.proxy == GroupingProxy::Impostor && g.impostorFits(t)) {
+                item.part = {g.quadGeometry, g.impostorMaterial[t]};
+                g.proxyModel[t] = billboardModel(s, view.eye);
+            } else {
+                g.proxyModel[t] = boxProxyModel(box);
+                item.tint = glm::vec4(tree.item(t).color, g.proxyAlpha);
+            }
+            item.model = &g.proxyModel[t];
+            out.items.push_back(item);
+        }
+    }
+
+    // Object i is the grouping node's i-th child; its position moves when
+    // the scene's structure changes.
+    void refreshObjectPositions(std::uint32_t pos, GroupingNode& g) {
+        bool valid = g.objectPosition.size() == g.objects.size();
+        for (std::size_t i = 0; valid && i < g.objects.size(); i += std::max<std::size_t>(1, g.objects.size() / 8))
+            valid = g.objectPosition[i] < order.size() && order[g.objectPosition[i]] == g.objects[i];
+        if (valid) return;
+        g.objectPosition.clear();
+        for (std::uint32_t child = pos + 1; child < end[pos]; child = end[child]) g.objectPosition.push_back(child);
+        for (std::size_t i = 0; i < g.objects.size(); ++i)
+            if (i >= g.objectPosition.size() || order[g.objectPosition[i]] != g.objects[i]) std::abort();  // children changed after buildGrouping
     }
 
     // Visits the LOD node's child number `level`, or its last child when it

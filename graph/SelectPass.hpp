@@ -16,6 +16,7 @@
 namespace arcomp {
 
 class LodTable;
+struct GroupingNodes;
 
 struct SelectSettings {
     Shading shading = Shading::Phong;
@@ -29,6 +30,9 @@ struct SelectSettings {
     // Silhouette nodes' region meshes (graph/SilhouetteNodes.hpp); without it
     // silhouette nodes draw nothing.
     const SilhouetteNodes* silhouettes = nullptr;
+    // Grouping nodes' trees (graph/GroupingNodes.hpp); the pass writes the
+    // proxies' matrices there. Without it every object is drawn.
+    GroupingNodes* grouping = nullptr;
 };
 
 void select(const Scene& scene, const View& view, const SelectSettings& settings, DrawList& out);

@@ -168,7 +168,7 @@ void Renderer::drawItem(const Scene& scene, const DrawItem& item, const View& vi
     const Shading shading = m.unlit ? Shading::Unlit : item.shading;
     ShaderProgram& p = *programs_[static_cast<std::size_t>(shading)];
     p.use();
-    const glm::mat4& model = scene.world(item.node);
+    const glm::mat4& model = item.model ? *item.model : scene.world(item.node);
     const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(model)));
     const glm::mat4 viewProjection = view.viewProjection();
     glUniformMatrix4fv(p.uniform("uModel"), 1, GL_FALSE, glm::value_ptr(model));
@@ -177,7 +177,8 @@ void Renderer::drawItem(const Scene& scene, const DrawItem& item, const View& vi
     glUniform3f(p.uniform("uEye"), view.eye.x, view.eye.y, view.eye.z);
     glUniform3f(p.uniform("uLightDirection"), settings.lightDirection.x, settings.lightDirection.y,
                 settings.lightDirection.z);
-    glUniform4f(p.uniform("uBaseColor"), m.baseColor.r, m.baseColor.g, m.baseColor.b, m.baseColor.a);
+    const glm::vec4 base = m.baseColor * item.tint;
+    glUniform4f(p.uniform("uBaseColor"), base.r, base.g, base.b, base.a);
     glUniform1f(p.uniform("uSpecular"), 0.5f * (1.0f - m.roughness) + 0.1f);
     glUniform1i(p.uniform("uAlphaMode"), static_cast<int>(m.alphaMode));
     glUniform1f(p.uniform("uAlphaCutoff"), m.alphaCutoff);

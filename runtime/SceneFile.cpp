@@ -1,6 +1,7 @@
 #include "runtime/SceneFile.hpp"
 
 #include "graph/ModelLoader.hpp"
+#include "runtime/GroupingSetup.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -14,14 +15,19 @@ View cameraView(const CameraConfig& c) {
     return View::lookAt(c.eye, c.target, c.up, c.fovyDegrees, c.size, c.near, c.far);
 }
 
-void buildScene(const StationConfig& cfg, Scene& scene, std::vector<std::string>& warnings) {
+void buildScene(const StationConfig& cfg, Scene& scene, std::vector<std::string>& warnings, GroupingNodes* grouping,
+                LodTable* lods) {
+    GroupingNodes ownGrouping;
+    LodTable ownLods;
+    const NodeId groupingNode = beginGrouping(cfg.grouping, scene, grouping ? *grouping : ownGrouping);
+    const NodeId objectParent = groupingNode != kNoNode && cfg.grouping.objects ? groupingNode : scene.root();
     for (const ObjectConfig& o : cfg.objects) {
         glm::mat4 m = glm::translate(glm::mat4(1.0f), o.position);
         m = glm::rotate(m, glm::radians(o.rotationDegrees.z), {0, 0, 1});
         m = glm::rotate(m, glm::radians(o.rotationDegrees.y), {0, 1, 0});
         m = glm::rotate(m, glm::radians(o.rotationDegrees.x), {1, 0, 0});
         m = glm::scale(m, o.scale);
-        const NodeId place = scene.addTransform(scene.root(), m, o.name);
+        const NodeId place = scene.addTransform(objectParent, m, o.name);
         if (!o.model.empty()) {
             try {
                 const LoadedModel loaded = loadModel(o.model, scene, place);
@@ -39,6 +45,7 @@ void buildScene(const StationConfig& cfg, Scene& scene, std::vector<std::string>
         if (o.color.a < 1.0f) mat.alphaMode = AlphaMode::Blend;
         scene.addMesh(place, {scene.addGeometry(std::move(g)), scene.addMaterial(std::move(mat))}, o.name);
     }
+    finishGrouping(cfg.grouping, scene, groupingNode, grouping ? *grouping : ownGrouping, lods ? *lods : ownLods);
 }
 
 SceneFile loadSceneFile(const fs::path& file) {
@@ -47,7 +54,7 @@ SceneFile loadSceneFile(const fs::path& file) {
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
     if (ext == ".yaml" || ext == ".yml") {
         const StationConfig cfg = loadStationConfig(file);
-        buildScene(cfg, out.scene, out.warnings);
+        buildScene(cfg, out.scene, out.warnings, &out.grouping, &out.lods);
         if (cfg.camera.given) out.camera = cameraView(cfg.camera);
         out.background = cfg.render.background;
         return out;

@@ -5,6 +5,8 @@
 //   SceneFile f = loadSceneFile("bunny.obj");          // throws ModelError
 //   SceneFile g = loadSceneFile("station.yaml");       // throws ConfigError
 
+#include "graph/GroupingNodes.hpp"
+#include "graph/Lod.hpp"
 #include "graph/Scene.hpp"
 #include "graph/View.hpp"
 #include "runtime/StationConfig.hpp"
@@ -20,11 +22,17 @@ struct SceneFile {
     // Models a config names that could not be loaded are skipped, each with
     // a line here: the station goes on with the rest.
     std::vector<std::string> warnings;
+    // Side tables of the grouping section's nodes (empty without one).
+    GroupingNodes grouping;
+    LodTable lods;
 };
 
 SceneFile loadSceneFile(const std::filesystem::path& file);
 // Adds the config's objects to a scene; failures become warnings.
-void buildScene(const StationConfig& cfg, Scene& scene, std::vector<std::string>& warnings);
+// With tables, the config's grouping section (if any) fills them; without,
+// grouped content is still added and draws at full detail.
+void buildScene(const StationConfig& cfg, Scene& scene, std::vector<std::string>& warnings,
+                GroupingNodes* grouping = nullptr, LodTable* lods = nullptr);
 View cameraView(const CameraConfig& camera);
 
 } // namespace arcomp

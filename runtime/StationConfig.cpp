@@ -86,6 +86,7 @@ StationConfig loadStationConfig(const std::filesystem::path& file) {
     readOperatorConfig(root, cfg.operation);
 
     readBudgetConfig(root, cfg.budget);
+    readGroupingConfig(root, cfg.grouping);
     root.finish();
     report.throwIfAny();
     return cfg;

@@ -9,6 +9,7 @@
 #include "runtime/CompositingConfig.hpp"
 #include "runtime/OperatorConfig.hpp"
 #include "runtime/BudgetConfig.hpp"
+#include "runtime/GroupingConfig.hpp"
 
 #include <glm/glm.hpp>
 
@@ -58,6 +59,7 @@ struct StationConfig {
     CompositingConfig compositing;  // video, matte, compositor, output
     OperatorConfig operation;
     BudgetConfig budget;
+    GroupingConfig grouping;
 };
 
 StationConfig loadStationConfig(const std::filesystem::path& file);

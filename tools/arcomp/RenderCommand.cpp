@@ -4,6 +4,7 @@
 #include "graph/SelectPass.hpp"
 #include "runtime/GlContext.hpp"
 #include "runtime/ImageFile.hpp"
+#include "runtime/ImpostorBaker.hpp"
 #include "runtime/RenderTarget.hpp"
 #include "runtime/Renderer.hpp"
 #include "runtime/SceneFile.hpp"
@@ -47,11 +48,12 @@ int render(const RenderOptions& o) {
     }
 
     auto context = HeadlessContext::create(request);
+    bakeImpostors(scene, file.grouping, view.eye);  // for grouping nodes that use them; needs the context
     RenderTarget target(size);
     target.bind();
     Renderer renderer;
     DrawList list;
-    select(scene, view, {.shading = *shading}, list);
+    select(scene, view, {.shading = *shading, .lod = file.lods.size() ? &file.lods : nullptr, .grouping = &file.grouping}, list);
     renderer.draw(scene, list, view, {.clearColor = file.background});
     const Image image = target.read();
     writePng(o.out, image);

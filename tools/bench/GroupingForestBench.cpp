@@ -1,0 +1,156 @@
+// arcomp bench grouping-forest --out DIR: the grouping paper's experiment
+// (DESIGN.md §2, Fig. 9-11). 32 trees of 105 triangles seen from a fixed
+// viewpoint; for Ωt from 0.001 to 0.1 in steps of 0.001 the triangles drawn
+// with full detail, simplification only, and grouping + simplification,
+// for the mixed (5 red) and the all-green forest. Writes forest.csv and
+// forest.png (the paper's Fig. 10), renders both forests full and grouped
+// and reports the grouped images' PSNR against the full ones. Baseline in
+// the same run: simplification alone.
+
+#include "graph/ForestExperiment.hpp"
+#include "runtime/GlContext.hpp"
+#include "runtime/ImageDifference.hpp"
+#include "runtime/ImageFile.hpp"
+#include "runtime/ImpostorBaker.hpp"
+#include "runtime/RenderTarget.hpp"
+#include "runtime/Renderer.hpp"
+#include "tools/arcomp/CliParse.hpp"
+#include "tools/arcomp/Command.hpp"
+#include "tools/bench/LinePlot.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace arcomp {
+
+namespace {
+
+struct Options {
+    std::string out;
+    std::string size = "960x540";
+    float omegaT = 0.011f;  // the paper's Fig. 9 and 11
+};
+
+struct Curve {
+    std::vector<double> full, simplified, grouped;
+};
+
+const glm::vec4 kSky{0.62f, 0.72f, 0.82f, 1.0f};
+
+std::string number(double v) {
+    if (!std::isfinite(v)) return "null";
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
+int run(const Options& o) {
+    if (o.out.empty()) throw InputError("--out: a folder is required");
+    if (!(o.omegaT > 0.0f && o.omegaT < 1.0f)) throw InputError("--omega-t: expected a number in (0, 1)");
+    const glm::ivec2 size = parseSize(o.size, "--size");
+    const std::filesystem::path dir(o.out);
+    std::filesystem::create_directories(dir);
+
+    const GroupingParams params;
+    std::vector<double> thresholds;
+    for (int k = 0; k < params.stepCount(); ++k) thresholds.push_back(params.thresholdAt(k));
+
+    ForestExperiment mixed(ForestColouring::Mixed, params, size), green(ForestColouring::Green, params, size);
+    Curve curves[2];
+    ForestExperiment* forests[2] = {&mixed, &green};
+    for (int f = 0; f < 2; ++f)
+        for (double t : thresholds) {
+            curves[f].full.push_back(double(forests[f]->triangles(ForestMode::Full, float(t))));
+            curves[f].simplified.push_back(double(forests[f]->triangles(ForestMode::Simplified, float(t))));
+            curves[f].grouped.push_back(double(forests[f]->triangles(ForestMode::Grouped, float(t))));
+        }
+
+    std::ofstream csv(dir / "forest.csv");
+    csv << "omega_t,mixed_full,mixed_simplified,mixed_grouped,green_full,green_simplified,green_grouped\n";
+    for (std::size_t i = 0; i < thresholds.size(); ++i)
+        csv << thresholds[i] << ',' << curves[0].full[i] << ',' << curves[0].simplified[i] << ','
+            << curves[0].grouped[i] << ',' << curves[1].full[i] << ',' << curves[1].simplified[i] << ','
+            << curves[1].grouped[i] << '\n';
+    if (!csv) throw std::runtime_error((dir / "forest.csv").string() + ": cannot write");
+
+    LinePlot plot("Triangles drawn against Omega_t (paper Fig. 10)", "Omega_t", "triangles");
+    plot.addSeries("simplification only", thresholds, curves[0].simplified);
+    plot.addSeries("grouping + simplification, 5 red", thresholds, curves[0].grouped);
+    plot.addSeries("grouping + simplification, all green", thresholds, curves[1].grouped);
+    plot.addLevel("full detail", curves[0].full.front());
+    plot.writePng(dir / "forest.png");
+
+    // First Ωt from which grouping stays below simplification alone.
+    double helpsFrom[2] = {-1.0, -1.0};
+    for (int f = 0; f < 2; ++f)
+        for (std::size_t i = thresholds.size(); i-- > 0;) {
+            if (curves[f].grouped[i] >= curves[f].simplified[i]) break;
+            helpsFrom[f] = thresholds[i];
+        }
+
+    // Renders at the chosen Ωt: full detail, simplification, grouping with
+    // box proxies and with baked impostors.
+    std::cerr << "rendering " << size.x << "x" << size.y << "\n";
+    auto context = HeadlessContext::create(GlRequest::Auto);
+    RenderTarget target(size);
+    double psnrBox[2] = {0, 0}, psnrImpostor[2] = {0, 0}, psnrSimplified[2] = {0, 0};
+    std::size_t trianglesAt[2][3] = {};
+    const char* names[2] = {"mixed", "green"};
+    for (int f = 0; f < 2; ++f) {
+        ForestExperiment& e = *forests[f];
+        const std::size_t baked = bakeImpostors(e.scene, e.forest.grouping, e.grouping, {.pixelsPerUnit = 0.6f, .eye = e.view.eye});
+        std::cerr << names[f] << ": " << baked << " impostors baked\n";
+        Renderer renderer;
+        const auto shot = [&](ForestMode mode, GroupingProxy proxy, const char* label) {
+            const DrawList& list = e.select(mode, o.omegaT, proxy);
+            target.bind();
+            renderer.draw(e.scene, list, e.view, {.clearColor = kSky});
+            Image img = target.read();
+            writePng(dir / (std::string("forest-") + names[f] + "-" + label + ".png"), img);
+            return std::pair{img, drawnTriangles(e.scene, list)};
+        };
+        const auto [full, fullTris] = shot(ForestMode::Full, GroupingProxy::Box, "full");
+        const auto [simple, simpleTris] = shot(ForestMode::Simplified, GroupingProxy::Box, "simplified");
+        const auto [box, boxTris] = shot(ForestMode::Grouped, GroupingProxy::Box, "grouped-box");
+        const auto [imp, impTris] = shot(ForestMode::Grouped, GroupingProxy::Impostor, "grouped-impostor");
+        psnrSimplified[f] = psnr(full, simple);
+        psnrBox[f] = psnr(full, box);
+        psnrImpostor[f] = psnr(full, imp);
+        trianglesAt[f][0] = fullTris;
+        trianglesAt[f][1] = simpleTris;
+        trianglesAt[f][2] = boxTris;
+        (void)impTris;
+    }
+
+    std::cout << "{\"bench\":\"grouping-forest\",\"omega_t_steps\":" << thresholds.size()
+              << ",\"full_triangles\":" << curves[0].full.front()
+              << ",\"grouping_helps_from_omega_t\":{\"mixed\":" << number(helpsFrom[0]) << ",\"green\":" << number(helpsFrom[1])
+              << "},\"triangles_at_omega_t_0_1\":{\"mixed_simplified\":" << curves[0].simplified.back()
+              << ",\"mixed_grouped\":" << curves[0].grouped.back() << ",\"green_grouped\":" << curves[1].grouped.back()
+              << "},\"render_omega_t\":" << o.omegaT << ",\"render_triangles\":{\"mixed\":{\"full\":" << trianglesAt[0][0]
+              << ",\"simplified\":" << trianglesAt[0][1] << ",\"grouped\":" << trianglesAt[0][2]
+              << "},\"green\":{\"full\":" << trianglesAt[1][0] << ",\"simplified\":" << trianglesAt[1][1]
+              << ",\"grouped\":" << trianglesAt[1][2] << "}},\"psnr_db_vs_full\":{\"mixed_simplified\":"
+              << number(psnrSimplified[0]) << ",\"mixed_grouped_box\":" << number(psnrBox[0])
+              << ",\"mixed_grouped_impostor\":" << number(psnrImpostor[0]) << ",\"green_simplified\":"
+              << number(psnrSimplified[1]) << ",\"green_grouped_box\":" << number(psnrBox[1])
+              << ",\"green_grouped_impostor\":" << number(psnrImpostor[1]) << "},\"csv\":\""
+              << (dir / "forest.csv").string() << "\",\"plot\":\"" << (dir / "forest.png").string() << "\"}\n";
+    return kExitOk;
+}
+
+const bool registered = registerBench(
+    {"grouping-forest", "Grouping paper's forest: triangles against Omega_t (CSV, PNG), renders and PSNR",
+     [](CLI::App& app) {
+         auto o = std::make_shared<Options>();
+         app.add_option("--out", o->out, "Folder for forest.csv, forest.png and the renders")->required();
+         app.add_option("--size", o->size, "Render size WIDTHxHEIGHT")->capture_default_str();
+         app.add_option("--omega-t", o->omegaT, "Omega_t of the renders")->capture_default_str();
+         return [o] { return run(*o); };
+     }});
+
+} // namespace
+} // namespace arcomp
