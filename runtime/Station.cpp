@@ -4,6 +4,7 @@
 #include "graph/SilhouetteMesh.hpp"
 #include "runtime/CalibrationFile.hpp"
 #include "runtime/ImageFile.hpp"
+#include "runtime/ImpostorBaker.hpp"
 #include "runtime/SceneFile.hpp"
 #include "video/MatteSpec.hpp"
 #include "video/VideoError.hpp"
@@ -59,7 +60,7 @@ Station::Station(const StationConfig& cfg, StationInput input) : cfg_(cfg), inpu
                                      "no frame to start from");
     const glm::ivec2 size(frame_.cols, frame_.rows);
 
-    buildScene(cfg_, scene_, warnings_);
+    buildScene(cfg_, scene_, warnings_, &grouping_, &lods_);
     scene_.update();
     // The CG camera is the video camera: its pose and field of view from the
     // config, its image size the video's.
@@ -72,6 +73,7 @@ Station::Station(const StationConfig& cfg, StationInput input) : cfg_(cfg), inpu
         view_ = cameraView(camera);
     }
     buildHoldouts();
+    bakeImpostors(scene_, grouping_, view_.eye);
 
     if (cfg_.budget.enabled) {
         budget_.emplace(readCalibration(cfg_.budget.calibration), toBudgetSettings(cfg_.budget));
@@ -156,10 +158,12 @@ bool Station::grabNext() {
     std::optional<Frame> f;
     if (input_.replay) {
         GrabResult r = input_.replay->grab();
+        replayState_ = r.state;
         if (!r.frame) {
             inputEnd_ = r.state.reason;
             return false;
         }
+        replayState_.status = SourceStatus::Streaming;
         f = std::move(r.frame);
     } else {
         f = input_.live->newest();
@@ -193,7 +197,7 @@ bool Station::frame() {
     holdoutScene_.update();
     stats_.updateMs = msSince(t);
 
-    select(scene_, view_, {.shading = cfg_.render.shading}, cgList_);
+    select(scene_, view_, {.shading = cfg_.render.shading, .lod = lods_.size() ? &lods_ : nullptr, .grouping = &grouping_}, cgList_);
     select(holdoutScene_, view_, {.shading = Shading::Unlit, .silhouettes = &silhouettes_}, holdoutCandidates_);
     // In front of the person: the object's centre is nearer than the person
     // plane along the view axis.
@@ -253,7 +257,7 @@ bool Station::frame() {
 
 void Station::writeOutputs() {
     const OutputConfig& out = cfg_.compositing.output;
-    const std::uint64_t index = frames_ - 1;
+    const std::uint64_t index = firstOutputIndex_ + frames_ - 1;
     if (!out.matteDir.empty()) {
         std::filesystem::create_directories(out.matteDir);
         const std::filesystem::path file = out.matteDir / numbered("matte", index);
@@ -272,5 +276,22 @@ void Station::writeOutputs() {
 void Station::finish() {
     if (video_) video_->close();
 }
+
+StationInput Station::releaseInput() {
+    finish();
+    return std::move(input_);
+}
+
+std::string Station::inputName() const {
+    if (input_.replay) return input_.replay->name();
+    return input_.live ? input_.live->name() : std::string();
+}
+
+SourceState Station::inputState() const {
+    if (input_.live) return input_.live->state();
+    return replayState_;
+}
+
+std::uint64_t Station::inputDrops() const { return input_.live ? input_.live->drops() : 0; }
 
 } // namespace arcomp

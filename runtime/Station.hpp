@@ -23,6 +23,8 @@
 
 #include "graph/DrawList.hpp"
 #include "graph/FrameBudget.hpp"
+#include "graph/GroupingNodes.hpp"
+#include "graph/Lod.hpp"
 #include "graph/Scene.hpp"
 #include "graph/SilhouetteNodes.hpp"
 #include "runtime/Compositor.hpp"
@@ -91,10 +93,23 @@ public:
     bool frame();
     // Finishes outputs (closes the video file). Safe to call twice.
     void finish();
+    // After finish(): the input, still open, for the next Station when the
+    // config is reloaded with the same video source.
+    StationInput releaseInput();
+    // Output files are numbered from here (a reloaded station continues
+    // where the previous one stopped instead of overwriting its frames).
+    void setFirstOutputIndex(std::uint64_t index) { firstOutputIndex_ = index; }
+
+    // The input as an operator sees it: its name, state and dropped frames.
+    std::string inputName() const;
+    SourceState inputState() const;
+    std::uint64_t inputDrops() const;
 
     const FrameStats& stats() const { return stats_; }
     const RenderTarget& compositedFrame() const { return compositor_->output(); }
     const View& view() const { return view_; }
+    // What the last frame's select (and budget) chose to draw.
+    const DrawList& drawList() const { return cgList_; }
     glm::ivec2 size() const { return compositor_->size(); }
     const std::vector<std::string>& warnings() const { return warnings_; }
     // The last frame's holdout mask, drawn again (same meshes, same view)
@@ -119,6 +134,8 @@ private:
     StationInput input_;
     std::unique_ptr<PersonMatte> matte_;
     Scene scene_;
+    GroupingNodes grouping_;
+    LodTable lods_;
     Scene holdoutScene_;
     SilhouetteNodes silhouettes_;
     View view_;
@@ -132,6 +149,8 @@ private:
     cv::Mat frame_, person_, bgr_;
     bool firstPending_ = false;
     std::string inputEnd_;
+    SourceState replayState_{SourceStatus::Opening, ""};
+    std::uint64_t firstOutputIndex_ = 0;
     FrameStats stats_;
     std::uint64_t frames_ = 0;
 };

@@ -5,18 +5,21 @@
 
 #include "runtime/GlContext.hpp"
 #include "runtime/ReplayInput.hpp"
-#include "runtime/Station.hpp"
+#include "runtime/ShutdownSignals.hpp"
+#include "runtime/StationLog.hpp"
+#include "runtime/StationRunner.hpp"
 #include "tools/arcomp/Command.hpp"
 #include "video/VideoError.hpp"
 
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace arcomp {
 namespace {
 
 struct ReplayOptions {
-    std::string config, out, video, videoOut;
+    std::string config, out, video, videoOut, logLevel;
     long frames = -1;
 };
 
@@ -37,10 +40,18 @@ int replay(const ReplayOptions& o) {
     cfg.compositing.output.pngDir = o.out;
     if (!o.videoOut.empty()) cfg.compositing.output.videoFile = o.videoOut;
 
+    configureLogging({.level = o.logLevel.empty() ? cfg.operation.log.level : o.logLevel,
+                      .file = cfg.operation.log.file,
+                      .maxMegabytes = cfg.operation.log.maxMegabytes,
+                      .files = cfg.operation.log.files});
+
+    // The replay input opens before the context so that a missing file is
+    // bad input (exit 2) rather than a runtime failure. A reload with a
+    // changed video section opens again through the same path.
     std::vector<std::string> warnings;
-    StationInput input;
+    std::optional<StationInput> first;
     try {
-        input = openReplayInput(*cfg.compositing.video, warnings);
+        first = openReplayInput(*cfg.compositing.video, warnings);
     } catch (const VideoError& e) {
         throw InputError(e.what());
     }
@@ -48,26 +59,37 @@ int replay(const ReplayOptions& o) {
                          cfg.compositing.video->loop;
     const long frames = o.frames >= 0 ? o.frames : endless ? kPatternFrames : -1;
     for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+    auto openInput = [&first](const StationConfig& c) {
+        if (first) {
+            StationInput in = std::move(*first);
+            first.reset();
+            return in;
+        }
+        std::vector<std::string> ignored;
+        return openReplayInput(*c.compositing.video, ignored);
+    };
 
     bool isAuto = false;
     const auto api = parseGlApi(cfg.render.gl, isAuto);
     auto context = HeadlessContext::create(isAuto ? GlRequest::Auto : *api == GlApiKind::Es3 ? GlRequest::Es3 : GlRequest::Gl33);
-    Station station(cfg, std::move(input));
-    for (const std::string& w : station.warnings()) std::cerr << "warning: " << w << "\n";
+    installShutdownSignals();
+    StationRunner runner(cfg, openInput);
 
     double total = 0.0;
     long done = 0;
-    while ((frames < 0 || done < frames) && station.frame()) {
+    while ((frames < 0 || done < frames) && !stopRequested() && runner.step()) {
         ++done;
-        total += station.stats().totalMs;
+        total += runner.station().stats().totalMs;
         if (done % 25 == 0) std::cerr << "frame " << done << "\n";
     }
-    station.finish();
+    runner.finish();
+    if (stopRequested()) std::cerr << "stopped by signal after " << done << " frames; outputs finished\n";
+    const Station& station = runner.station();
     if (!station.inputEnd().empty() && frames < 0) std::cerr << "input: " << station.inputEnd() << "\n";
     std::cout << "replayed " << done << " frames (" << station.size().x << "x" << station.size().y << ", "
               << toString(context->api()) << ", " << (done ? total / static_cast<double>(done) : 0.0)
               << " ms/frame) into " << o.out << "/frame-NNNNNN.png";
-    if (!cfg.compositing.output.videoFile.empty()) std::cout << " and " << cfg.compositing.output.videoFile.string();
+    if (!runner.config().compositing.output.videoFile.empty()) std::cout << " and " << runner.config().compositing.output.videoFile.string();
     std::cout << "\n";
     return done > 0 ? kExitOk : kExitFailure;
 }
@@ -81,6 +103,8 @@ const bool registered = registerCommand(
          app.add_option("--frames", o->frames, "Stop after N frames (default: the whole file)");
          app.add_option("--video", o->video, "Replay this file instead of the config's video source");
          app.add_option("--video-out", o->videoOut, "Also write the composited frames to this video file");
+         app.add_option("--log-level", o->logLevel, "trace, debug, info, warn, error, critical or off (default: the config's)")
+             ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "critical", "off"}));
          return [o] { return replay(*o); };
      }});
 

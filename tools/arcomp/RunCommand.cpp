@@ -1,0 +1,136 @@
+// arcomp run <station.yaml>: the live station. A full-screen window (or
+// --windowed), the config's camera composited with its scene, frame after
+// frame until SIGTERM, the quit key or --frames. A camera that fails shows
+// its fallback; a station whose camera never delivers runs on the test
+// pattern rather than leaving the kiosk dark.
+//
+// Keys: Tab toggles the stats overlay, F12 or P saves a screenshot, R
+// reloads the config (as SIGHUP does), Esc or Q quits.
+
+#include "runtime/ShutdownSignals.hpp"
+#include "runtime/StationLog.hpp"
+#include "runtime/StationRunner.hpp"
+#include "runtime/StatsOverlay.hpp"
+#include "runtime/WindowContext.hpp"
+#include "runtime/WindowPresenter.hpp"
+#include "runtime/ImageFile.hpp"
+#include "tools/arcomp/CliParse.hpp"
+#include "tools/arcomp/Command.hpp"
+#include "video/OpenSource.hpp"
+#include "video/VideoError.hpp"
+
+#include <GLFW/glfw3.h>
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <iostream>
+#include <memory>
+
+namespace arcomp {
+namespace {
+
+struct RunOptions {
+    std::string config, size = "1280x720", screenshot, logLevel;
+    long frames = -1;
+    bool windowed = false, overlay = false;
+    int monitor = 0;
+};
+
+StationInput openLive(const StationConfig& cfg) {
+    SourceSpec spec = cfg.compositing.video.value_or(SourceSpec{});  // no video section: the test pattern
+    auto source = openSource(spec);
+    return StationInput::fromLive(std::move(source), spec.fps);
+}
+
+std::unique_ptr<StationRunner> startStation(const StationConfig& cfg) {
+    try {
+        return std::make_unique<StationRunner>(cfg, openLive);
+    } catch (const VideoError& e) {
+        spdlog::error("{}; showing the test pattern instead", e.what());
+        StationConfig pattern = cfg;
+        pattern.compositing.video = SourceSpec{};
+        auto runner = std::make_unique<StationRunner>(pattern, openLive);
+        runner->metrics().recordError(e.what());
+        return runner;
+    }
+}
+
+int run(const RunOptions& o) {
+    const StationConfig cfg = loadStationConfig(o.config);
+    configureLogging({.level = o.logLevel.empty() ? cfg.operation.log.level : o.logLevel,
+                      .file = cfg.operation.log.file,
+                      .maxMegabytes = cfg.operation.log.maxMegabytes,
+                      .files = cfg.operation.log.files});
+    bool isAuto = false;
+    const auto api = parseGlApi(cfg.render.gl, isAuto);
+    auto window = WindowContext::create({.title = "arcomp: " + o.config,
+                                         .size = parseSize(o.size, "--size"),
+                                         .fullscreen = !o.windowed,
+                                         .monitor = o.monitor,
+                                         .vsync = true,
+                                         .hideCursor = true},
+                                        isAuto ? GlRequest::Auto : *api == GlApiKind::Es3 ? GlRequest::Es3 : GlRequest::Gl33);
+    installShutdownSignals();
+    std::unique_ptr<StationRunner> runner = startStation(cfg);
+    WindowPresenter presenter;
+    StatsOverlay overlay;
+
+    bool showOverlay = o.overlay, takeScreenshot = false;
+    window->onKey([&](int key) {
+        if (key == GLFW_KEY_TAB) showOverlay = !showOverlay;
+        else if (key == GLFW_KEY_F12 || key == GLFW_KEY_P) takeScreenshot = true;
+        else if (key == GLFW_KEY_R) requestReload();
+        else if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) window->requestClose();
+    });
+
+    long done = 0;
+    auto last = std::chrono::steady_clock::now();
+    while (!stopRequested() && !window->shouldClose() && (o.frames < 0 || done < o.frames)) {
+        if (!runner->step()) {
+            // A live station keeps its window up; only a finished file ends it.
+            if (isLost(runner->station().inputState().status)) break;
+            continue;
+        }
+        ++done;
+        const auto now = std::chrono::steady_clock::now();
+        const double frameMs = std::chrono::duration<double, std::milli>(now - last).count();
+        last = now;
+        const Station& station = runner->station();
+        const FrameStats& stats = station.stats();
+        overlay.add(stats, station.drawList(), {station.inputName(), station.inputState(), station.inputDrops()}, frameMs,
+                    stats.budget ? cfg.budget.targetMs : 1000.0 / 60.0);
+        const glm::ivec2 size = window->framebufferSize();
+        presenter.present(station.compositedFrame(), size, showOverlay ? &overlay.image() : nullptr);
+        const bool finalFrame = o.frames >= 0 && done == o.frames;
+        if (takeScreenshot || (finalFrame && !o.screenshot.empty())) {
+            const std::string file = finalFrame && !o.screenshot.empty() ? o.screenshot : "screenshot-" + std::to_string(done) + ".png";
+            writePng(file, presenter.screenshot(size));
+            spdlog::info("screenshot {}", file);
+            takeScreenshot = false;
+        }
+        window->swap();
+        window->poll();
+    }
+    runner->finish();
+    spdlog::info("station stopped after {} frames", done);
+    return kExitOk;
+}
+
+const bool registered = registerCommand(
+    {"run", "Run a station live: cameras, scene and compositing in a (full-screen) window",
+     [](CLI::App& app) {
+         auto o = std::make_shared<RunOptions>();
+         app.add_option("config", o->config, "Station config (.yaml)")->required();
+         app.add_option("--frames", o->frames, "Quit after N frames (default: run until stopped)");
+         app.add_flag("--windowed", o->windowed, "A window instead of full screen");
+         app.add_option("--monitor", o->monitor, "Monitor index for full screen")->capture_default_str();
+         app.add_option("--size", o->size, "Window size WIDTHxHEIGHT when windowed")->capture_default_str();
+         app.add_flag("--overlay", o->overlay, "Show the stats overlay from the start (Tab toggles it)");
+         app.add_option("--screenshot", o->screenshot, "With --frames: save the last frame shown to this PNG");
+         app.add_option("--log-level", o->logLevel, "trace, debug, info, warn, error, critical or off (default: the config's)")
+             ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "critical", "off"}));
+         return [o] { return run(*o); };
+     }});
+
+} // namespace
+} // namespace arcomp
