@@ -1,0 +1,112 @@
+// The station's life around its frames: the operator endpoint during a
+// replay, a camera fault showing in /status and /metrics, and reloading the
+// config at a frame boundary (good and bad configs).
+
+#include "runtime/GlContext.hpp"
+#include "runtime/ShutdownSignals.hpp"
+#include "runtime/StationRunner.hpp"
+#include "tests/support/TempDir.hpp"
+
+#include <gtest/gtest.h>
+#include <httplib.h>
+
+using namespace arcomp;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A camera that delivers `frames` grey frames and then fails the way a USB
+// camera pulled from its socket does.
+class FailingCamera : public FrameGrabber {
+public:
+    explicit FailingCamera(int frames) : left_(frames) {}
+    GrabResult grab() override {
+        if (left_-- > 0) return {Frame{cv::Mat(120, 160, CV_8UC3, cv::Scalar(90, 90, 90))}, {SourceStatus::Streaming, ""}};
+        return {std::nullopt, {SourceStatus::Error, "/dev/video0: ENODEV while streaming"}};
+    }
+    std::string name() const override { return "front"; }
+
+private:
+    int left_;
+};
+
+const char* const kStation = R"(scene:
+  objects:
+    - shape: box
+      position: [0, 0, -4]
+      color: [0.9, 0.1, 0.1, 1]
+camera: {eye: [0, 0, 0], target: [0, 0, -1]}
+)";
+
+StationConfig withStatus(const fs::path& file) {
+    StationConfig cfg = loadStationConfig(file);
+    cfg.operation.statusEnabled = true;
+    cfg.operation.status.port = 0;  // any free port
+    return cfg;
+}
+
+} // namespace
+
+TEST(StationRunner, cameraFaultShowsInStatusAndMetrics) {
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    test::TempDir dir;
+    StationRunner runner(withStatus(dir.write("station.yaml", kStation)),
+                         [](const StationConfig&) { return StationInput::fromReplay(std::make_unique<FailingCamera>(3), 30.0); });
+    ASSERT_GT(runner.statusPort(), 0);
+    httplib::Client client("127.0.0.1", runner.statusPort());
+
+    EXPECT_TRUE(runner.step());
+    auto status = client.Get("/status");
+    ASSERT_TRUE(status);
+    EXPECT_NE(status->body.find("\"state\":\"streaming\""), std::string::npos) << status->body;
+    EXPECT_NE(client.Get("/metrics")->body.find("arcomp_camera_up{camera=\"front\"} 1"), std::string::npos);
+
+    while (runner.step()) {}
+    EXPECT_EQ(runner.frames(), 3u);
+    status = client.Get("/status");
+    ASSERT_TRUE(status);
+    EXPECT_NE(status->body.find("\"state\":\"error\""), std::string::npos) << status->body;
+    EXPECT_NE(status->body.find("ENODEV while streaming"), std::string::npos) << status->body;
+    EXPECT_NE(status->body.find("\"frames\":3"), std::string::npos) << status->body;
+    const std::string metrics = client.Get("/metrics")->body;
+    EXPECT_NE(metrics.find("arcomp_camera_up{camera=\"front\"} 0"), std::string::npos) << metrics;
+    EXPECT_NE(metrics.find("arcomp_frame_time_seconds_count 3"), std::string::npos) << metrics;
+}
+
+TEST(StationRunner, reloadSwapsTheSceneAtAFrameBoundaryAndKeepsTheInput) {
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    test::TempDir dir;
+    const fs::path file = dir.write("station.yaml", kStation);
+    int opened = 0;
+    StationRunner runner(loadStationConfig(file), [&opened](const StationConfig&) {
+        ++opened;
+        return StationInput::fromReplay(std::make_unique<FailingCamera>(100), 30.0);
+    });
+    ASSERT_TRUE(runner.step());
+    const auto centre = [&] {
+        const Image image = runner.station().compositedFrame().read();
+        const std::size_t i = (static_cast<std::size_t>(image.height / 2) * static_cast<std::size_t>(image.width) +
+                               static_cast<std::size_t>(image.width / 2)) * 4;
+        return glm::ivec3(image.rgba[i], image.rgba[i + 1], image.rgba[i + 2]);
+    };
+    const glm::ivec3 red = centre();
+    EXPECT_GT(red.r, 2 * red.g) << "the box is red before the reload";
+
+    std::string blue = kStation;
+    blue.replace(blue.find("[0.9, 0.1, 0.1, 1]"), 18, "[0.1, 0.1, 0.9, 1]");
+    dir.write("station.yaml", blue);
+    requestReload();
+    ASSERT_TRUE(runner.step());
+    const glm::ivec3 now = centre();
+    EXPECT_GT(now.b, 2 * now.r) << "the box is blue after the reload";
+    EXPECT_EQ(runner.reloads(), 1u);
+    EXPECT_EQ(opened, 1) << "an unchanged video section keeps the camera open";
+
+    // A broken config is refused: the station goes on with what it had.
+    dir.write("station.yaml", "scene:\n  objects:\n    - shape: cone\n");
+    requestReload();
+    ASSERT_TRUE(runner.step());
+    EXPECT_EQ(runner.reloads(), 1u);
+    EXPECT_EQ(centre(), now);
+    EXPECT_NE(runner.metrics().statusJson().find("reload refused"), std::string::npos);
+}

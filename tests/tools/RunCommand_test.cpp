@@ -1,0 +1,93 @@
+// arcomp run as a kiosk runs it, under a private Xvfb; and SIGTERM during a
+// replay that records a video, which must leave a playable file.
+
+#include "../support/TempDir.hpp"
+
+#include <gtest/gtest.h>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/videoio.hpp>
+
+#include <array>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <set>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+using arcomp::test::TempDir;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kDemo = fs::path(ARCOMP_SOURCE_DIR) / "configs/demo-replay.yaml";
+
+int shell(const std::string& command, std::string& out) {
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    std::array<char, 4096> buffer;
+    while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) out.append(buffer.data(), n);
+    const int status = pclose(pipe);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+} // namespace
+
+TEST(RunCommand, showsTheCompositedStationInAWindowAndExitsAfterItsFrames) {
+    std::string probe;
+    if (shell("command -v xvfb-run", probe) != 0) GTEST_SKIP() << "xvfb-run not installed";
+    TempDir dir;
+    const fs::path shot = dir.path() / "shot.png";
+    std::string out;
+    const int code = shell("xvfb-run -a -s '-screen 0 1024x768x24' " + std::string(ARCOMP_BINARY) + " run " + kDemo.string() +
+                               " --windowed --size 640x480 --frames 30 --overlay --screenshot " + shot.string(),
+                           out);
+    ASSERT_EQ(code, 0) << out;
+    const cv::Mat image = cv::imread(shot.string());
+    ASSERT_FALSE(image.empty()) << out;
+    EXPECT_EQ(image.size(), cv::Size(640, 480));
+    // Not blank: a composited frame has many distinct colours.
+    std::set<int> colours;
+    for (auto it = image.begin<cv::Vec3b>(); it != image.end<cv::Vec3b>(); ++it) colours.insert((*it)[0] << 16 | (*it)[1] << 8 | (*it)[2]);
+    EXPECT_GT(colours.size(), 500u);
+}
+
+TEST(RunCommand, sigtermDuringReplayLeavesAPlayableVideoToTheLastFrame) {
+    TempDir dir;
+    const fs::path video = dir.path() / "out.avi";
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        // The pattern replay runs for 2000 frames unless stopped.
+        const std::string config = dir.write("station.yaml",
+                                             "scene:\n  objects:\n    - shape: box\n      position: [0, 0, -4]\n"
+                                             "camera: {eye: [0, 0, 0], target: [0, 0, -1]}\n"
+                                             "video: {source: pattern, size: [320, 240]}\n").string();
+        execl(ARCOMP_BINARY, ARCOMP_BINARY, "replay", config.c_str(), "--out", (dir.path() / "frames").c_str(), "--frames",
+              "2000", "--video-out", video.c_str(), static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    // Stop it once a few frames are written.
+    auto frames = [&] {
+        std::size_t n = 0;
+        if (fs::exists(dir.path() / "frames"))
+            for (const auto& e : fs::directory_iterator(dir.path() / "frames")) n += e.path().extension() == ".png";
+        return n;
+    };
+    for (int i = 0; i < 600 && frames() < 10; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    ASSERT_GE(frames(), 10u) << "the replay did not start";
+    kill(child, SIGTERM);
+    int status = 0;
+    waitpid(child, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status)) << "killed by the signal instead of stopping";
+    EXPECT_EQ(WEXITSTATUS(status), 0);
+    const std::size_t written = frames();
+    EXPECT_LT(written, 2000u);
+
+    cv::VideoCapture capture(video.string());
+    ASSERT_TRUE(capture.isOpened());
+    std::size_t decoded = 0;
+    cv::Mat frame;
+    while (capture.read(frame)) ++decoded;
+    EXPECT_EQ(decoded, written) << "every composited frame is in the video, the last one too";
+}
