@@ -30,10 +30,16 @@ CheckResult check(const std::filesystem::path& config) {
 
 } // namespace
 
-TEST(CheckCommand, acceptsTheShippedDemoConfig) {
-    const CheckResult r = check(std::filesystem::path(ARCOMP_SOURCE_DIR) / "configs/demo-replay.yaml");
-    EXPECT_EQ(r.code, 0) << r.out;
-    EXPECT_NE(r.out.find("ok (3 objects"), std::string::npos) << r.out;
+TEST(CheckCommand, acceptsEveryShippedConfig) {
+    std::size_t configs = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(ARCOMP_SOURCE_DIR) / "configs")) {
+        if (entry.path().extension() != ".yaml") continue;
+        ++configs;
+        const CheckResult r = check(entry.path());
+        EXPECT_EQ(r.code, 0) << r.out;
+        EXPECT_NE(r.out.find(": ok ("), std::string::npos) << r.out;
+    }
+    EXPECT_GE(configs, 4u);
 }
 
 TEST(CheckCommand, unknownKeyIsReportedAtItsLineAndColumn) {
