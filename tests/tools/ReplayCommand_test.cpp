@@ -121,3 +121,29 @@ TEST(ReplayCommand, matteIsWrittenForInspectionWhenAsked) {
     ASSERT_EQ(alpha.type(), CV_8UC1);
     EXPECT_GT(cv::countNonZero(alpha), 0);
 }
+
+// Issue #12: the demo composited on OpenGL ES 3.0 matches desktop GL 3.3.
+TEST(ReplayCommand, demoOnEs3MatchesGl33) {
+    const fs::path vtest = "/usr/share/doc/opencv-doc/examples/data/vtest.avi";
+    if (!fs::exists(vtest)) GTEST_SKIP() << vtest << " absent (opencv-doc not installed)";
+    TempDir dir;
+    const std::string demo = (fs::path(ARCOMP_SOURCE_DIR) / "configs/demo-replay.yaml").string();
+    for (const char* api : {"gl33", "es3"}) {
+        const auto r = replay(demo + " --gl " + api + " --frames 8 --out " + (dir.path() / api).string());
+        ASSERT_EQ(r.code, 0) << r.out;
+        EXPECT_NE(r.out.find(std::string(", ") + api + ", "), std::string::npos) << "ran on the API asked for: " << r.out;
+    }
+    for (int i = 0; i < 8; ++i) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame-%06d.png", i);
+        const cv::Mat gl = cv::imread((dir.path() / "gl33" / name).string(), cv::IMREAD_UNCHANGED);
+        const cv::Mat es = cv::imread((dir.path() / "es3" / name).string(), cv::IMREAD_UNCHANGED);
+        ASSERT_FALSE(gl.empty());
+        ASSERT_EQ(gl.size(), es.size());
+        cv::Mat diff;
+        cv::absdiff(gl, es, diff);
+        double worst = 0.0;
+        cv::minMaxLoc(diff.reshape(1), nullptr, &worst);
+        EXPECT_LE(worst, 2.0) << name << ": the two APIs differ by more than 2 levels somewhere";
+    }
+}

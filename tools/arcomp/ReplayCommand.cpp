@@ -19,7 +19,7 @@ namespace arcomp {
 namespace {
 
 struct ReplayOptions {
-    std::string config, out, video, videoOut, logLevel;
+    std::string config, out, video, videoOut, logLevel, gl;
     long frames = -1;
 };
 
@@ -69,6 +69,7 @@ int replay(const ReplayOptions& o) {
         return openReplayInput(*c.compositing.video, ignored);
     };
 
+    if (!o.gl.empty()) cfg.render.gl = o.gl;
     bool isAuto = false;
     const auto api = parseGlApi(cfg.render.gl, isAuto);
     auto context = HeadlessContext::create(isAuto ? GlRequest::Auto : *api == GlApiKind::Es3 ? GlRequest::Es3 : GlRequest::Gl33);
@@ -103,6 +104,8 @@ const bool registered = registerCommand(
          app.add_option("--frames", o->frames, "Stop after N frames (default: the whole file)");
          app.add_option("--video", o->video, "Replay this file instead of the config's video source");
          app.add_option("--video-out", o->videoOut, "Also write the composited frames to this video file");
+         app.add_option("--gl", o->gl, "OpenGL API: auto, gl33 or es3 (default: the config's render.gl)")
+             ->check(CLI::IsMember({"auto", "gl33", "es3"}));
          app.add_option("--log-level", o->logLevel, "trace, debug, info, warn, error, critical or off (default: the config's)")
              ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "critical", "off"}));
          return [o] { return replay(*o); };
