@@ -17,7 +17,7 @@ bool hasGlbMagic(const fs::path& file) {
 }
 
 // Appending cannot fail: by now every index in the parsed model was checked.
-NodeId append(ParsedModel& model, Scene& scene, NodeId parent, const std::string& name) {
+NodeId append(ParsedModel& model, Scene& scene, NodeId parent, const std::string& name, const MeshPlacer& placeMesh) {
     const auto geometryBase = static_cast<std::uint32_t>(scene.geometries().size());
     const auto materialBase = static_cast<std::uint32_t>(scene.materials().size());
     const auto imageBase = static_cast<int>(scene.images().size());
@@ -33,15 +33,18 @@ NodeId append(ParsedModel& model, Scene& scene, NodeId parent, const std::string
         const ModelNode& n = model.nodes[i];
         const NodeId p = n.parent < 0 ? root : ids[static_cast<std::size_t>(n.parent)];
         ids[i] = scene.addTransform(p, n.local, n.name);
-        for (const MeshPart& part : n.parts)
-            scene.addMesh(ids[i], {part.geometry + geometryBase, part.material + materialBase});
+        for (const MeshPart& part : n.parts) {
+            const MeshPart placed{part.geometry + geometryBase, part.material + materialBase};
+            if (placeMesh) placeMesh(ids[i], placed);
+            else scene.addMesh(ids[i], placed);
+        }
     }
     return root;
 }
 
 } // namespace
 
-LoadedModel loadModel(const fs::path& file, Scene& scene, NodeId parent) {
+LoadedModel loadModel(const fs::path& file, Scene& scene, NodeId parent, const MeshPlacer& placeMesh) {
     std::error_code ec;
     if (!fs::is_regular_file(file, ec))
         throw ModelError(file.string(), "", fs::exists(file, ec) ? "is not a regular file" : "no such file");
@@ -52,7 +55,7 @@ LoadedModel loadModel(const fs::path& file, Scene& scene, NodeId parent) {
     else if (ext == ".obj") model = parseObj(file);
     else throw ModelError(file.string(), "", "unknown model format '" + ext + "'; expected .gltf, .glb or .obj");
     LoadedModel out;
-    out.root = append(model, scene, parent, file.stem().string());
+    out.root = append(model, scene, parent, file.stem().string(), placeMesh);
     out.warnings = std::move(model.warnings);
     return out;
 }

@@ -15,6 +15,7 @@
 #include "graph/Scene.hpp"
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,11 @@ struct LoadedModel {
     std::vector<std::string> warnings;
 };
 
-LoadedModel loadModel(const std::filesystem::path& file, Scene& scene, NodeId parent);
+// Each of the model's mesh parts becomes a Mesh node under its transform,
+// unless `placeMesh` is given: then it is called instead (e.g. to put an LOD
+// node with generated levels there).
+using MeshPlacer = std::function<void(NodeId parent, MeshPart part)>;
+LoadedModel loadModel(const std::filesystem::path& file, Scene& scene, NodeId parent, const MeshPlacer& placeMesh = {});
 
 // A model parsed but not yet placed in a scene: nodes refer to each other by
 // index into `nodes`, parents first.

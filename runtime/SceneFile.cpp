@@ -1,5 +1,6 @@
 #include "runtime/SceneFile.hpp"
 
+#include "graph/LodLevels.hpp"
 #include "graph/ModelLoader.hpp"
 #include "runtime/GroupingSetup.hpp"
 
@@ -15,10 +16,26 @@ View cameraView(const CameraConfig& c) {
     return View::lookAt(c.eye, c.target, c.up, c.fovyDegrees, c.size, c.near, c.far);
 }
 
+namespace {
+
+LodNode lodSettings(const ObjectConfig& o) {
+    LodNode node;
+    node.policy = o.lodPolicy;
+    node.levelCount = static_cast<std::uint8_t>(o.lodRatios.size());
+    std::copy(o.lodThresholds.begin(), o.lodThresholds.end(), node.thresholds.begin());
+    node.fadeSeconds = o.lodFadeSeconds;
+    return node;
+}
+
+} // namespace
+
 void buildScene(const StationConfig& cfg, Scene& scene, std::vector<std::string>& warnings, GroupingNodes* grouping,
-                LodTable* lods) {
+                LodTable* lods, std::vector<ObjectMotion>* motions) {
     GroupingNodes ownGrouping;
     LodTable ownLods;
+    LodTable& lodTable = lods ? *lods : ownLods;
+    std::vector<ObjectMotion> ownMotions;
+    std::vector<ObjectMotion>& moving = motions ? *motions : ownMotions;
     const NodeId groupingNode = beginGrouping(cfg.grouping, scene, grouping ? *grouping : ownGrouping);
     const NodeId objectParent = groupingNode != kNoNode && cfg.grouping.objects ? groupingNode : scene.root();
     for (const ObjectConfig& o : cfg.objects) {
@@ -28,9 +45,15 @@ void buildScene(const StationConfig& cfg, Scene& scene, std::vector<std::string>
         m = glm::rotate(m, glm::radians(o.rotationDegrees.x), {1, 0, 0});
         m = glm::scale(m, o.scale);
         const NodeId place = scene.addTransform(objectParent, m, o.name);
+        if (glm::length(o.velocity) > 0.0f) moving.push_back({.node = place, .rest = m, .velocity = o.velocity, .range = o.rangeMetres});
+        MeshPlacer placeMesh;
+        if (!o.lodRatios.empty())
+            placeMesh = [&scene, &lodTable, &o](NodeId parent, MeshPart part) {
+                addGeneratedLod(scene, lodTable, parent, part, o.lodRatios, lodSettings(o));
+            };
         if (!o.model.empty()) {
             try {
-                const LoadedModel loaded = loadModel(o.model, scene, place);
+                const LoadedModel loaded = loadModel(o.model, scene, place, placeMesh);
                 for (const std::string& w : loaded.warnings) warnings.push_back(o.model.string() + ": " + w);
             } catch (const ModelError& e) {
                 warnings.push_back(cfg.file.string() + ":" + std::to_string(o.line) + ": object '" + o.name +
@@ -43,9 +66,22 @@ void buildScene(const StationConfig& cfg, Scene& scene, std::vector<std::string>
         mat.name = o.name;
         mat.baseColor = o.color;
         if (o.color.a < 1.0f) mat.alphaMode = AlphaMode::Blend;
-        scene.addMesh(place, {scene.addGeometry(std::move(g)), scene.addMaterial(std::move(mat))}, o.name);
+        const MeshPart part{scene.addGeometry(std::move(g)), scene.addMaterial(std::move(mat))};
+        if (placeMesh) placeMesh(place, part);
+        else scene.addMesh(place, part, o.name);
     }
-    finishGrouping(cfg.grouping, scene, groupingNode, grouping ? *grouping : ownGrouping, lods ? *lods : ownLods);
+    GroupingNodes& groupingTable = grouping ? *grouping : ownGrouping;
+    finishGrouping(cfg.grouping, scene, groupingNode, groupingTable, lodTable);
+    // A mover inside the grouping node rebuilds only its own branch.
+    if (groupingNode != kNoNode && objectParent == groupingNode) {
+        const std::vector<NodeId>& objects = groupingTable.nodes[scene.payload(groupingNode)].objects;
+        for (ObjectMotion& motion : moving) {
+            const auto it = std::find(objects.begin(), objects.end(), motion.node);
+            if (it == objects.end()) continue;
+            motion.groupingNode = groupingNode;
+            motion.groupingObject = static_cast<std::uint32_t>(it - objects.begin());
+        }
+    }
 }
 
 SceneFile loadSceneFile(const fs::path& file) {

@@ -7,6 +7,7 @@
 
 #include "graph/GroupingNodes.hpp"
 #include "graph/Lod.hpp"
+#include "graph/ObjectMotion.hpp"
 #include "graph/Scene.hpp"
 #include "graph/View.hpp"
 #include "runtime/StationConfig.hpp"
@@ -31,8 +32,10 @@ SceneFile loadSceneFile(const std::filesystem::path& file);
 // Adds the config's objects to a scene; failures become warnings.
 // With tables, the config's grouping section (if any) fills them; without,
 // grouped content is still added and draws at full detail.
+// Objects with `lod` get an LOD node per mesh (levels generated at load)
+// in `lods`; objects with `motion` are listed in `motions`.
 void buildScene(const StationConfig& cfg, Scene& scene, std::vector<std::string>& warnings,
-                GroupingNodes* grouping = nullptr, LodTable* lods = nullptr);
+                GroupingNodes* grouping = nullptr, LodTable* lods = nullptr, std::vector<ObjectMotion>* motions = nullptr);
 View cameraView(const CameraConfig& camera);
 
 } // namespace arcomp

@@ -12,7 +12,11 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <chrono>
+#include <map>
+#include <set>
 #include <cstdio>
 #include <thread>
 
@@ -60,7 +64,7 @@ Station::Station(const StationConfig& cfg, StationInput input) : cfg_(cfg), inpu
                                      "no frame to start from");
     const glm::ivec2 size(frame_.cols, frame_.rows);
 
-    buildScene(cfg_, scene_, warnings_, &grouping_, &lods_);
+    buildScene(cfg_, scene_, warnings_, &grouping_, &lods_, &motions_);
     scene_.update();
     // The CG camera is the video camera: its pose and field of view from the
     // config, its image size the video's.
@@ -72,6 +76,7 @@ Station::Station(const StationConfig& cfg, StationInput input) : cfg_(cfg), inpu
     } else {
         view_ = cameraView(camera);
     }
+    gaze_ = makeGazeSource(cfg_.gaze, view_);
     buildHoldouts();
     bakeImpostors(scene_, grouping_, view_.eye);
 
@@ -104,8 +109,19 @@ void Station::buildHoldouts() {
     const std::uint32_t material = holdoutScene_.addMaterial(white);
     const float r = cfg_.compositing.compositor.holdoutRegionMetres;
     const bool full = cfg_.compositing.compositor.holdout == HoldoutMesh::Full;
+    std::set<NodeId> lodsSeen;
+    auto moves = [&](NodeId n) {
+        for (; n != kNoNode; n = scene_.parent(n))
+            for (const ObjectMotion& m : motions_)
+                if (m.node == n) return true;
+        return false;
+    };
     for (const NodeId n : scene_.order()) {
         if (scene_.kind(n) != NodeKind::Mesh) continue;
+        // An LOD node's children are its levels, finest first; the coarser
+        // ones lie inside the finest one's silhouette.
+        const NodeId parent = scene_.parent(n);
+        if (parent != kNoNode && scene_.kind(parent) == NodeKind::Lod && !lodsSeen.insert(parent).second) continue;
         const glm::mat4& world = scene_.world(n);
         const glm::mat4 toLocal = glm::inverse(world);
         std::vector<glm::vec3> corners;
@@ -115,12 +131,26 @@ void Station::buildHoldouts() {
         }
         const Geometry& g = scene_.geometry(scene_.meshPart(n).geometry);
         std::vector<ViewRegion> regions;
-        if (!full) regions.push_back(ViewRegion::fromVertices(corners));
+        // A mover leaves the region it was baked for: its full mesh is the holdout.
+        if (!full && !moves(n)) regions.push_back(ViewRegion::fromVertices(corners));
         const SilhouetteMesh mesh = bakeSilhouetteMesh(g.positions, g.indices, std::move(regions));
         const NodeId place = holdoutScene_.addTransform(holdoutScene_.root(), world, scene_.name(n));
         addSilhouetteNode(holdoutScene_, place, silhouettes_, mesh, material, scene_.name(n));
+        holdoutPlaces_.emplace_back(n, place);
     }
     holdoutScene_.update();
+}
+
+void Station::moveObjects(double seconds) {
+    for (const ObjectMotion& m : motions_)
+        scene_.setLocal(m.node, glm::translate(glm::mat4(1.0f), motionOffset(m, seconds)) * m.rest);
+    scene_.update();
+    // Only the branches of the grouping tree that hold movers are rebuilt.
+    std::map<NodeId, std::vector<MovedObject>> moved;
+    for (const ObjectMotion& m : motions_)
+        if (m.groupingNode != kNoNode) moved[m.groupingNode].push_back({m.groupingObject, motionVelocity(m, seconds)});
+    for (const auto& [node, objects] : moved) regroupMoved(scene_, node, grouping_, objects);
+    for (const auto& [mesh, place] : holdoutPlaces_) holdoutScene_.setLocal(place, scene_.world(mesh));
 }
 
 Image Station::readHoldout() {
@@ -193,11 +223,18 @@ bool Station::frame() {
     if (stats_.newVideoFrame || person_.empty()) matte_->apply(frame_, person_);
     stats_.matteMs = msSince(t);
 
+    const double seconds = static_cast<double>(frames_) / input_.fps;  // video time: a replay moves the same way every run
+    if (!motions_.empty()) moveObjects(seconds);
     scene_.update();
     holdoutScene_.update();
     stats_.updateMs = msSince(t);
 
-    select(scene_, view_, {.shading = cfg_.render.shading, .lod = lods_.size() ? &lods_ : nullptr, .grouping = &grouping_}, cgList_);
+    glm::vec3 gaze(0.0f);  // zero: the screen centre
+    if (gaze_)
+        if (const std::optional<GazeSample> g = gaze_->sample(seconds)) gaze = g->direction;
+    select(scene_, view_,
+           {.shading = cfg_.render.shading, .lod = lods_.size() ? &lods_ : nullptr, .gaze = gaze, .timeSeconds = seconds, .grouping = &grouping_},
+           cgList_);
     select(holdoutScene_, view_, {.shading = Shading::Unlit, .silhouettes = &silhouettes_}, holdoutCandidates_);
     // In front of the person: the object's centre is nearer than the person
     // plane along the view axis.
@@ -220,7 +257,7 @@ bool Station::frame() {
         // target is what the other stages left of it last frame.
         const double others = stats_.totalMs - stats_.renderMs - stats_.budgetMs;
         budget_->setTarget(std::max(1.0, cfg_.budget.targetMs - (stats_.frame > 0 ? others : 0.0)));
-        stats_.budget = budget_->apply(scene_, cgList_, view_);
+        stats_.budget = budget_->apply(scene_, cgList_, view_, gaze);
         stats_.budgetMs = msSince(t);
     }
 

@@ -25,9 +25,11 @@
 #include "graph/FrameBudget.hpp"
 #include "graph/GroupingNodes.hpp"
 #include "graph/Lod.hpp"
+#include "graph/ObjectMotion.hpp"
 #include "graph/Scene.hpp"
 #include "graph/SilhouetteNodes.hpp"
 #include "runtime/Compositor.hpp"
+#include "runtime/GazeConfig.hpp"
 #include "runtime/Renderer.hpp"
 #include "runtime/StationConfig.hpp"
 #include "video/FrameGrabber.hpp"
@@ -128,6 +130,7 @@ private:
     bool capture();
     bool grabNext();
     void buildHoldouts();
+    void moveObjects(double timeSeconds);
     void writeOutputs();
 
     StationConfig cfg_;
@@ -136,6 +139,10 @@ private:
     Scene scene_;
     GroupingNodes grouping_;
     LodTable lods_;
+    std::vector<ObjectMotion> motions_;
+    std::unique_ptr<GazeSource> gaze_;
+    // Each CG mesh and its holdout twin's placing transform, so twins follow movers.
+    std::vector<std::pair<NodeId, NodeId>> holdoutPlaces_;
     Scene holdoutScene_;
     SilhouetteNodes silhouettes_;
     View view_;

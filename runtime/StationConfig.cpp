@@ -10,6 +10,34 @@ namespace {
 
 constexpr double kLarge = 1e6;  // metres; anything beyond is a typo
 
+void readObjectLod(YamlMap& lod, ObjectConfig& o) {
+    std::string policy = "distance";
+    lod.choice("policy", policy, {"distance", "screen_size", "gaze", "screen_size_gaze"});
+    o.lodPolicy = policy == "distance"      ? LodPolicy::Distance
+                  : policy == "screen_size" ? LodPolicy::ScreenSize
+                  : policy == "gaze"        ? LodPolicy::GazeAcuity
+                                            : LodPolicy::ScreenSizeTimesAcuity;
+    if (!lod.has("ratios")) lod.report().add(lod.mark(), lod.where() + ": 'ratios' is required (e.g. [1, 0.25, 0.05])");
+    if (!lod.has("thresholds")) lod.report().add(lod.mark(), lod.where() + ": 'thresholds' is required, one fewer than ratios");
+    lod.numbers("ratios", o.lodRatios, 1e-4, 1.0);
+    lod.numbers("thresholds", o.lodThresholds, 0.0, kLarge);
+    lod.number("fade_s", o.lodFadeSeconds, 0.0, 10.0);
+    const std::size_t levels = o.lodRatios.size();
+    if (levels > 0) {
+        bool ok = levels <= kMaxLodLevels && o.lodRatios.front() == 1.0f && o.lodThresholds.size() + 1 == levels;
+        for (std::size_t i = 1; ok && i < levels; ++i) ok = o.lodRatios[i] < o.lodRatios[i - 1];
+        // Distance grows towards coarser levels; the other metrics shrink.
+        const bool ascending = o.lodPolicy == LodPolicy::Distance;
+        for (std::size_t i = 1; ok && i < o.lodThresholds.size(); ++i)
+            ok = ascending ? o.lodThresholds[i] > o.lodThresholds[i - 1] : o.lodThresholds[i] < o.lodThresholds[i - 1];
+        if (!ok)
+            lod.report().add(lod.mark(), lod.where() + ": expected 2 to " + std::to_string(kMaxLodLevels) +
+                                             " ratios falling from 1, and one threshold fewer (" +
+                                             (ascending ? "rising" : "falling") + " for policy " + policy + ")");
+    }
+    lod.finish();
+}
+
 ObjectConfig readObject(YamlMap& m, std::size_t index) {
     ObjectConfig o;
     o.line = m.mark().line + 1;
@@ -33,6 +61,16 @@ ObjectConfig readObject(YamlMap& m, std::size_t index) {
         if (s.IsScalar() && YAML::convert<double>::decode(s, uniform) && uniform > 0) o.scale = glm::vec3(static_cast<float>(uniform));
         else if (s.IsSequence() && s.size() == 3) m.vec3("scale", o.scale);
         else m.report().add(s.Mark(), m.where() + ".scale: expected a positive number or a list of 3 numbers");
+    }
+    if (m.has("lod")) {
+        YamlMap lod = m.map("lod");
+        readObjectLod(lod, o);
+    }
+    if (m.has("motion")) {
+        YamlMap motion = m.map("motion");
+        motion.vec3("velocity", o.velocity, Required::Yes);
+        motion.number("range_m", o.rangeMetres, 0.0, kLarge);
+        motion.finish();
     }
     for (int i = 0; i < 4; ++i)
         if (o.color[i] < 0.0f || o.color[i] > 1.0f) {
@@ -87,6 +125,7 @@ StationConfig loadStationConfig(const std::filesystem::path& file) {
 
     readBudgetConfig(root, cfg.budget);
     readGroupingConfig(root, cfg.grouping);
+    readGazeConfig(root, cfg.gaze);
     root.finish();
     report.throwIfAny();
     return cfg;

@@ -205,6 +205,27 @@ void YamlMap::path(const char* key, fs::path& out, bool mustExist, Required r) {
     out = p.lexically_normal();
 }
 
+void YamlMap::numbers(const char* key, std::vector<float>& out, double min, double max, Required r) {
+    const YAML::Node list = child(key, r);
+    if (!list) return;
+    if (!list.IsSequence()) {
+        report_.add(list.Mark(), keyPath(key) + ": expected a list of numbers");
+        return;
+    }
+    std::vector<float> values;
+    for (const YAML::Node& item : list) {
+        double v = 0.0;
+        if (!item.IsScalar() || !YAML::convert<double>::decode(item, v) || !std::isfinite(v) || v < min || v > max) {
+            std::ostringstream s;
+            s << keyPath(key) << ": expected numbers from " << min << " to " << max;
+            report_.add(item.Mark(), s.str());
+            return;
+        }
+        values.push_back(static_cast<float>(v));
+    }
+    out = std::move(values);
+}
+
 YamlMap YamlMap::map(const char* key, Required r) { return YamlMap(child(key, r), keyPath(key), report_); }
 
 std::vector<YamlMap> YamlMap::list(const char* key, Required r) {

@@ -52,6 +52,7 @@ public:
     void text(const char* key, std::string& out, Required r = Required::No);
     // One of `choices`; the message lists them.
     void choice(const char* key, std::string& out, const std::vector<std::string>& choices, Required r = Required::No);
+    void numbers(const char* key, std::vector<float>& out, double min, double max, Required r = Required::No);
     void vec2i(const char* key, glm::ivec2& out, int min, int max, Required r = Required::No);
     void vec3(const char* key, glm::vec3& out, Required r = Required::No);
     void vec4(const char* key, glm::vec4& out, Required r = Required::No);

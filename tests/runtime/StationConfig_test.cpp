@@ -108,3 +108,41 @@ TEST(StationConfig, reportsSyntaxErrorsAndUnreadableFiles) {
     const auto notMap = issuesOf(dir.write("list.yaml", "- 1\n- 2\n"));
     ASSERT_EQ(notMap.size(), 1u);
 }
+
+TEST(StationConfig, readsObjectLodMotionAndGaze) {
+    TempDir dir;
+    dir.write("gaze.csv", "time,eye_x,eye_y,eye_z,gaze_x,gaze_y,gaze_z\n0,0,0,0,0,0,-1\n1,0,0,0,0.2,0,-1\n");
+    const auto file = dir.write("station.yaml", R"(scene:
+  objects:
+    - shape: sphere
+      lod: {policy: screen_size, ratios: [1, 0.25, 0.05], thresholds: [200, 40], fade_s: 0.2}
+      motion: {velocity: [0.5, 0, 0], range_m: 3}
+gaze: {source: track, track: gaze.csv}
+)");
+    const StationConfig cfg = loadStationConfig(file);
+    const ObjectConfig& o = cfg.objects.at(0);
+    EXPECT_EQ(o.lodPolicy, LodPolicy::ScreenSize);
+    EXPECT_EQ(o.lodRatios, (std::vector<float>{1.0f, 0.25f, 0.05f}));
+    EXPECT_EQ(o.lodThresholds, (std::vector<float>{200.0f, 40.0f}));
+    EXPECT_FLOAT_EQ(o.lodFadeSeconds, 0.2f);
+    EXPECT_EQ(o.velocity, glm::vec3(0.5f, 0.0f, 0.0f));
+    EXPECT_FLOAT_EQ(o.rangeMetres, 3.0f);
+    EXPECT_EQ(cfg.gaze.kind, GazeKind::Track);
+    EXPECT_EQ(cfg.gaze.track.filename(), "gaze.csv");
+}
+
+TEST(StationConfig, reportsInconsistentLodAndMissingGazeTrack) {
+    TempDir dir;
+    const auto issues = issuesOf(dir.write("bad.yaml", R"(scene:
+  objects:
+    - shape: box
+      lod: {ratios: [1, 0.5], thresholds: [10, 20]}
+    - shape: box
+      lod: {policy: distance, ratios: [1, 2]}
+gaze: {source: track, track: nowhere.csv}
+)"));
+    EXPECT_TRUE(hasIssue(issues, 4, 12, "one threshold fewer")) << describe(issues);
+    EXPECT_TRUE(hasIssue(issues, 6, 43, "ratios: expected numbers from 0.0001 to 1")) << describe(issues);
+    EXPECT_TRUE(hasIssue(issues, 6, 12, "'thresholds' is required")) << describe(issues);
+    EXPECT_TRUE(hasIssue(issues, 7, 30, "nowhere.csv' does not exist")) << describe(issues);
+}

@@ -268,3 +268,44 @@ TEST(Station, replayTwiceGivesIdenticalImages) {
 }
 
 } // namespace
+
+// Config movers move their object by video time (deterministic in replay),
+// and an object with generated LOD draws a coarser level when small on screen.
+TEST(Station, moversFollowVideoTimeAndLodObjectsPickTheirLevel) {
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    StationConfig cfg;
+    cfg.file = "movers.yaml";
+    ObjectConfig mover;
+    mover.name = "mover";
+    mover.shape = "box";
+    mover.position = {0.0f, 0.0f, -6.0f};
+    mover.velocity = {1.5f, 0.0f, 0.0f};  // 0.05 m a frame at 30 fps
+    mover.rangeMetres = 10.0f;
+    cfg.objects.push_back(mover);
+    ObjectConfig far;
+    far.name = "far sphere";
+    far.shape = "sphere";
+    far.position = {0.0f, 0.0f, -60.0f};
+    far.lodRatios = {1.0f, 0.25f, 0.05f};
+    far.lodThresholds = {20.0f, 40.0f};  // distance: level 2 beyond 40 m
+    cfg.objects.push_back(far);
+    cfg.camera.given = true;
+    cfg.camera.eye = {0.0f, 0.0f, 0.0f};
+    cfg.camera.target = {0.0f, 0.0f, -1.0f};
+    Station station(cfg, pattern({160, 120}));
+    ASSERT_TRUE(station.frame());
+    std::optional<std::uint8_t> farLevel;
+    for (const DrawItem& item : station.drawList().items)
+        if (item.viewDistance > 50.0f) farLevel = item.level;
+    ASSERT_TRUE(farLevel);
+    EXPECT_EQ(*farLevel, 2);
+    for (int i = 0; i < 20; ++i) ASSERT_TRUE(station.frame());
+    // Frame 21 was drawn at video time 20/30 s: the box has moved 1 m along +X.
+    bool found = false;
+    for (const DrawItem& item : station.drawList().items)
+        if (item.viewDistance < 20.0f) {
+            found = true;
+            EXPECT_NEAR(item.viewDistance, std::sqrt(36.0f + 1.0f), 1e-3f);
+        }
+    EXPECT_TRUE(found);
+}
