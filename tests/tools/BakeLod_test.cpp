@@ -6,24 +6,16 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include "tests/support/Shell.hpp"
 
 namespace {
 
-struct Result {
-    int code;
-    std::string out;
-};
+using arcomp::test::lastLine;
 
-Result run(const std::string& args) {
-    Result r{-1, {}};
-    FILE* p = popen((std::string(ARCOMP_BINARY) + " " + args + " 2>/dev/null").c_str(), "r");
-    if (!p) return r;
-    char buffer[4096];
-    while (std::fgets(buffer, sizeof buffer, p)) r.out += buffer;
-    const int status = pclose(p);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
+// Only stdout: the JSON or summary the command prints.
+arcomp::test::ShellResult run(const std::string& args) { return arcomp::test::arcompCommand(args, false); }
+
+
 
 } // namespace
 
@@ -32,7 +24,7 @@ TEST(BakeLod, bunnyLevelsWithinTenPercentAndFileReadsBack) {
     if (!std::filesystem::exists(bunny)) GTEST_SKIP() << "no shared data";
     const std::filesystem::path out = std::filesystem::path(ARCOMP_TEST_OUTPUT) / "bunny.lod";
     std::filesystem::create_directories(out.parent_path());
-    const Result r = run("bake lod " + bunny + " --ratios 1,0.25,0.05 --out " + out.string());
+    const auto r = run("bake lod " + bunny + " --ratios 1,0.25,0.05 --out " + out.string());
     ASSERT_EQ(r.code, 0) << r.out;
     EXPECT_NE(r.out.find("\"all_within_10_percent\":true"), std::string::npos) << r.out;
     const std::vector<arcomp::LodLevel> levels = arcomp::readLodFile(out);

@@ -7,31 +7,17 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include "tests/support/Shell.hpp"
 
 namespace {
 
-struct Result {
-    int code;
-    std::string out;
-};
+using arcomp::test::lastLine;
 
-Result run(const std::string& args) {
-    Result r{-1, {}};
-    FILE* p = popen((std::string(ARCOMP_BINARY) + " " + args + " 2>/dev/null").c_str(), "r");
-    if (!p) return r;
-    char buffer[4096];
-    while (std::fgets(buffer, sizeof buffer, p)) r.out += buffer;
-    const int status = pclose(p);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
+// Only stdout: the JSON or summary the command prints.
+arcomp::test::ShellResult run(const std::string& args) { return arcomp::test::arcompCommand(args, false); }
 
-std::string lastLine(const std::string& s) {
-    const std::size_t end = s.find_last_not_of('\n');
-    if (end == std::string::npos) return {};
-    const std::size_t start = s.rfind('\n', end);
-    return s.substr(start == std::string::npos ? 0 : start + 1, end - (start == std::string::npos ? 0 : start + 1) + 1);
-}
+
+
 
 // The text of `key`'s object, `"key":{...}` without nested objects.
 std::string object(const std::string& json, const std::string& key) {
@@ -53,7 +39,7 @@ std::size_t lines(const std::filesystem::path& file) {
 TEST(BudgetBench, tinyFlightWritesJsonWithTheIssuesFieldsAndCsvAndPlots) {
     const std::filesystem::path out = std::filesystem::path(ARCOMP_TEST_OUTPUT) / "bench-budget-tiny";
     std::filesystem::remove_all(out);
-    const Result r = run("bench budget --frames 8 --size 160x90 --mountains 6 --scene-frames 4 --target-ms 5 --out " +
+    const auto r = run("bench budget --frames 8 --size 160x90 --mountains 6 --scene-frames 4 --target-ms 5 --out " +
                          out.string());
     ASSERT_EQ(r.code, 0) << r.out;
     const std::string json = lastLine(r.out);

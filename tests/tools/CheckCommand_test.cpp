@@ -8,25 +8,15 @@
 #include <array>
 #include <cstdio>
 #include <sys/wait.h>
+#include "tests/support/Shell.hpp"
 
 using arcomp::test::TempDir;
 
 namespace {
 
-struct CheckResult {
-    int code;
-    std::string out;
-};
+arcomp::test::ShellResult check(const std::filesystem::path& config) { return arcomp::test::arcompCommand("check " + config.string()); }
 
-CheckResult check(const std::filesystem::path& config) {
-    const std::string command = std::string(ARCOMP_BINARY) + " check " + config.string() + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    std::string out;
-    std::array<char, 4096> buffer;
-    while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) out.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
+
 
 } // namespace
 
@@ -35,7 +25,7 @@ TEST(CheckCommand, acceptsEveryShippedConfig) {
     for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(ARCOMP_SOURCE_DIR) / "configs")) {
         if (entry.path().extension() != ".yaml") continue;
         ++configs;
-        const CheckResult r = check(entry.path());
+        const auto r = check(entry.path());
         EXPECT_EQ(r.code, 0) << r.out;
         EXPECT_NE(r.out.find(": ok ("), std::string::npos) << r.out;
     }
@@ -45,7 +35,7 @@ TEST(CheckCommand, acceptsEveryShippedConfig) {
 TEST(CheckCommand, unknownKeyIsReportedAtItsLineAndColumn) {
     TempDir dir;
     const auto file = dir.write("station.yaml", "scene:\n  objects:\n    - shape: box\n      colour: [1, 0, 0, 1]\n");
-    const CheckResult r = check(file);
+    const auto r = check(file);
     EXPECT_EQ(r.code, 2) << r.out;
     EXPECT_NE(r.out.find("station.yaml:4:7: scene.objects[0].colour: unknown key; expected one of color,"), std::string::npos) << r.out;
 }
@@ -53,7 +43,7 @@ TEST(CheckCommand, unknownKeyIsReportedAtItsLineAndColumn) {
 TEST(CheckCommand, wrongTypeIsReportedAtItsLineAndColumn) {
     TempDir dir;
     const auto file = dir.write("station.yaml", "scene:\n  objects:\n    - shape: box\n      position: forward\n");
-    const CheckResult r = check(file);
+    const auto r = check(file);
     EXPECT_EQ(r.code, 2) << r.out;
     EXPECT_NE(r.out.find("station.yaml:4:17: scene.objects[0].position"), std::string::npos) << r.out;
 }
@@ -61,7 +51,7 @@ TEST(CheckCommand, wrongTypeIsReportedAtItsLineAndColumn) {
 TEST(CheckCommand, missingModelFileIsReportedAtItsLineAndColumn) {
     TempDir dir;
     const auto file = dir.write("station.yaml", "scene:\n  objects:\n    - model: statue.glb\n");
-    const CheckResult r = check(file);
+    const auto r = check(file);
     EXPECT_EQ(r.code, 2) << r.out;
     EXPECT_NE(r.out.find("station.yaml:3:14: scene.objects[0].model: file '"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("statue.glb' does not exist"), std::string::npos) << r.out;
@@ -70,7 +60,7 @@ TEST(CheckCommand, missingModelFileIsReportedAtItsLineAndColumn) {
 TEST(CheckCommand, numberOutOfRangeIsReportedAtItsLineAndColumn) {
     TempDir dir;
     const auto file = dir.write("station.yaml", "scene:\n  objects:\n    - shape: box\nstatus:\n  port: 99999\n");
-    const CheckResult r = check(file);
+    const auto r = check(file);
     EXPECT_EQ(r.code, 2) << r.out;
     EXPECT_NE(r.out.find("station.yaml:5:9: status.port: 99999 is out of range; expected 1 to 65535"), std::string::npos) << r.out;
 }
@@ -79,7 +69,7 @@ TEST(CheckCommand, everyErrorIsListedAtOnce) {
     TempDir dir;
     const auto file = dir.write("station.yaml",
                                 "scene:\n  objects:\n    - shape: cone\nrender:\n  shading: glossy\nlog:\n  level: loud\n");
-    const CheckResult r = check(file);
+    const auto r = check(file);
     EXPECT_EQ(r.code, 2) << r.out;
     EXPECT_NE(r.out.find("3 errors"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find(":3:14: scene.objects[0].shape"), std::string::npos) << r.out;

@@ -9,33 +9,18 @@
 #include <array>
 #include <cstdio>
 #include <sys/wait.h>
+#include "tests/support/Shell.hpp"
 
+using arcomp::test::arcompCommand;
+using arcomp::test::lastLine;
+using arcomp::test::ShellResult;
 using arcomp::test::TempDir;
 namespace fs = std::filesystem;
 
 namespace {
 
-struct CommandResult {
-    int code;
-    std::string out;
-};
 
-// Runs arcomp with the arguments; stderr is folded into the output.
-CommandResult arcompRun(const std::string& args) {
-    const std::string command = std::string(ARCOMP_BINARY) + " " + args + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    std::string out;
-    std::array<char, 4096> buffer;
-    while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) out.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
 
-std::string lastLine(const std::string& text) {
-    std::string t = text;
-    while (!t.empty() && t.back() == '\n') t.pop_back();
-    return t.substr(t.rfind('\n') == std::string::npos ? 0 : t.rfind('\n') + 1);
-}
 
 fs::path bunny() { return arcomp::test::sharedData() / "meshes/bunny.obj"; }
 
@@ -50,9 +35,9 @@ double coverage(const arcomp::Image& img) {
 TEST(Cli, renderWritesTheBunnyAndShadingChangesTheImage) {
     if (!fs::exists(bunny())) GTEST_SKIP() << "shared test data is absent";
     TempDir dir;
-    const CommandResult phong = arcompRun("render " + bunny().string() + " --out " + (dir.path() / "p.png").string() + " --size 640x480");
+    const ShellResult phong = arcompCommand("render " + bunny().string() + " --out " + (dir.path() / "p.png").string() + " --size 640x480");
     ASSERT_EQ(phong.code, 0) << phong.out;
-    const CommandResult flat = arcompRun("render " + bunny().string() + " --out " + (dir.path() / "f.png").string() +
+    const ShellResult flat = arcompCommand("render " + bunny().string() + " --out " + (dir.path() / "f.png").string() +
                                " --size 640x480 --shading flat");
     ASSERT_EQ(flat.code, 0) << flat.out;
     const arcomp::Image p = arcomp::readPng(dir.path() / "p.png");
@@ -67,8 +52,8 @@ TEST(Cli, renderWritesTheBunnyAndShadingChangesTheImage) {
 TEST(Cli, renderWithEsAndDesktopGlGivesMatchingImages) {
     if (!fs::exists(bunny())) GTEST_SKIP() << "shared test data is absent";
     TempDir dir;
-    ASSERT_EQ(arcompRun("render " + bunny().string() + " --gl gl33 --out " + (dir.path() / "gl.png").string()).code, 0);
-    ASSERT_EQ(arcompRun("render " + bunny().string() + " --gl es3 --out " + (dir.path() / "es.png").string()).code, 0);
+    ASSERT_EQ(arcompCommand("render " + bunny().string() + " --gl gl33 --out " + (dir.path() / "gl.png").string()).code, 0);
+    ASSERT_EQ(arcompCommand("render " + bunny().string() + " --gl es3 --out " + (dir.path() / "es.png").string()).code, 0);
     const arcomp::Image gl = arcomp::readPng(dir.path() / "gl.png");
     const arcomp::Image es = arcomp::readPng(dir.path() / "es.png");
     double diff = 0;
@@ -78,23 +63,23 @@ TEST(Cli, renderWithEsAndDesktopGlGivesMatchingImages) {
 
 TEST(Cli, badInputExitsTwoWithTheReason) {
     TempDir dir;
-    const CommandResult missing = arcompRun("render " + (dir.path() / "none.obj").string() + " --out x.png");
+    const ShellResult missing = arcompCommand("render " + (dir.path() / "none.obj").string() + " --out x.png");
     EXPECT_EQ(missing.code, 2);
     EXPECT_NE(missing.out.find("none.obj: no such file"), std::string::npos) << missing.out;
-    const CommandResult garbage = arcompRun("inspect " + dir.write("junk.gltf", "not json").string());
+    const ShellResult garbage = arcompCommand("inspect " + dir.write("junk.gltf", "not json").string());
     EXPECT_EQ(garbage.code, 2);
     EXPECT_NE(garbage.out.find("junk.gltf"), std::string::npos) << garbage.out;
-    const CommandResult size = arcompRun("render " + dir.write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").string() +
+    const ShellResult size = arcompCommand("render " + dir.write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").string() +
                                " --out x.png --size 0x10");
     EXPECT_EQ(size.code, 2);
     EXPECT_NE(size.out.find("--size '0x10'"), std::string::npos) << size.out;
-    EXPECT_EQ(arcompRun("render").code, 2);  // usage
-    EXPECT_EQ(arcompRun("no-such-command").code, 2);
+    EXPECT_EQ(arcompCommand("render").code, 2);  // usage
+    EXPECT_EQ(arcompCommand("no-such-command").code, 2);
 }
 
 TEST(Cli, inspectPrintsTheTreeWithCounts) {
     if (!fs::exists(bunny())) GTEST_SKIP() << "shared test data is absent";
-    const CommandResult r = arcompRun("inspect " + bunny().string());
+    const ShellResult r = arcompCommand("inspect " + bunny().string());
     ASSERT_EQ(r.code, 0) << r.out;
     EXPECT_NE(r.out.find("mesh: 27864 triangles"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("meshes 1, triangles 27864"), std::string::npos) << r.out;
@@ -102,7 +87,7 @@ TEST(Cli, inspectPrintsTheTreeWithCounts) {
 
 TEST(Cli, benchLoadPrintsOneJsonLineLast) {
     if (!fs::exists(bunny())) GTEST_SKIP() << "shared test data is absent";
-    const CommandResult r = arcompRun("bench load --repeats 1 --model " + bunny().string());
+    const ShellResult r = arcompCommand("bench load --repeats 1 --model " + bunny().string());
     ASSERT_EQ(r.code, 0) << r.out;
     const std::string json = lastLine(r.out);
     EXPECT_EQ(json.front(), '{');

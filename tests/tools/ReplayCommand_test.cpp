@@ -13,26 +13,16 @@
 #include <array>
 #include <cstdio>
 #include <sys/wait.h>
+#include "tests/support/Shell.hpp"
 
 using arcomp::test::TempDir;
 namespace fs = std::filesystem;
 
 namespace {
 
-struct CommandResult {
-    int code;
-    std::string out;
-};
+arcomp::test::ShellResult replay(const std::string& args) { return arcomp::test::arcompCommand("replay " + args); }
 
-CommandResult replay(const std::string& args) {
-    const std::string command = std::string(ARCOMP_BINARY) + " replay " + args + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    std::string out;
-    std::array<char, 4096> buffer;
-    while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) out.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
+
 
 const char* const kScene = R"(scene:
   objects:
@@ -60,7 +50,7 @@ TEST(ReplayCommand, wholeFileIsReplayedFrameForFrame) {
         for (int i = 0; i < 7; ++i) w.write(pattern.render(static_cast<std::uint64_t>(i)));
     }
     const auto cfg = dir.write("s.yaml", std::string(kScene) + "matte:\n  kind: background\n");
-    const CommandResult r = replay(cfg.string() + " --video " + clip.string() + " --out " + (dir.path() / "out").string());
+    const auto r = replay(cfg.string() + " --video " + clip.string() + " --out " + (dir.path() / "out").string());
     ASSERT_EQ(r.code, 0) << r.out;
     EXPECT_EQ(pngsIn(dir.path() / "out"), 7u);
     EXPECT_TRUE(fs::exists(dir.path() / "out/frame-000006.png"));
@@ -70,7 +60,7 @@ TEST(ReplayCommand, missingFileWithAFallbackWarnsAndReplaysThePattern) {
     TempDir dir;
     const auto cfg = dir.write("s.yaml", std::string(kScene) +
                                              "video:\n  path: nowhere.avi\n  fallback: pattern\n  size: [160, 120]\n");
-    const CommandResult r = replay(cfg.string() + " --frames 3 --out " + (dir.path() / "out").string());
+    const auto r = replay(cfg.string() + " --frames 3 --out " + (dir.path() / "out").string());
     ASSERT_EQ(r.code, 0) << r.out;
     EXPECT_NE(r.out.find("warning"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("nowhere.avi"), std::string::npos) << r.out;
@@ -80,7 +70,7 @@ TEST(ReplayCommand, missingFileWithAFallbackWarnsAndReplaysThePattern) {
 TEST(ReplayCommand, missingFileWithoutFallbackIsBadInput) {
     TempDir dir;
     const auto cfg = dir.write("s.yaml", std::string(kScene) + "video:\n  path: nowhere.avi\n");
-    const CommandResult r = replay(cfg.string() + " --out " + (dir.path() / "out").string());
+    const auto r = replay(cfg.string() + " --out " + (dir.path() / "out").string());
     EXPECT_EQ(r.code, 2) << r.out;
     EXPECT_NE(r.out.find("nowhere.avi"), std::string::npos) << r.out;
 }
@@ -88,7 +78,7 @@ TEST(ReplayCommand, missingFileWithoutFallbackIsBadInput) {
 TEST(ReplayCommand, noVideoAnywhereIsBadInput) {
     TempDir dir;
     const auto cfg = dir.write("s.yaml", kScene);
-    const CommandResult r = replay(cfg.string() + " --out " + (dir.path() / "out").string());
+    const auto r = replay(cfg.string() + " --out " + (dir.path() / "out").string());
     EXPECT_EQ(r.code, 2) << r.out;
     EXPECT_NE(r.out.find("no `video` section"), std::string::npos) << r.out;
 }
@@ -97,7 +87,7 @@ TEST(ReplayCommand, videoOutputIsAFinishedPlayableFile) {
     TempDir dir;
     const auto cfg = dir.write("s.yaml", std::string(kScene) + "video:\n  source: pattern\n  size: [160, 120]\n");
     const fs::path movie = dir.path() / "movie.avi";
-    const CommandResult r = replay(cfg.string() + " --frames 6 --out " + (dir.path() / "out").string() +
+    const auto r = replay(cfg.string() + " --frames 6 --out " + (dir.path() / "out").string() +
                                    " --video-out " + movie.string());
     ASSERT_EQ(r.code, 0) << r.out;
     arcomp::FileSource file({.path = movie.string()});
@@ -113,7 +103,7 @@ TEST(ReplayCommand, matteIsWrittenForInspectionWhenAsked) {
                                              "video:\n  source: pattern\n  size: [160, 120]\n"
                                              "matte:\n  kind: background\n  background:\n    method: clean_plate\n"
                                              "output:\n  matte_dir: mattes\n");
-    const CommandResult r = replay(cfg.string() + " --frames 4 --out " + (dir.path() / "out").string());
+    const auto r = replay(cfg.string() + " --frames 4 --out " + (dir.path() / "out").string());
     ASSERT_EQ(r.code, 0) << r.out;
     EXPECT_EQ(pngsIn(dir.path() / "mattes"), 4u);
     // The pattern's moving shapes differ from the first frame: some alpha.

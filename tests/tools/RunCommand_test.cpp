@@ -15,6 +15,7 @@
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
+#include "tests/support/Shell.hpp"
 
 using arcomp::test::TempDir;
 namespace fs = std::filesystem;
@@ -23,25 +24,18 @@ namespace {
 
 const fs::path kDemo = fs::path(ARCOMP_SOURCE_DIR) / "configs/demo-replay.yaml";
 
-int shell(const std::string& command, std::string& out) {
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    std::array<char, 4096> buffer;
-    while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) out.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 } // namespace
 
 TEST(RunCommand, showsTheCompositedStationInAWindowAndExitsAfterItsFrames) {
-    std::string probe;
-    if (shell("command -v xvfb-run", probe) != 0) GTEST_SKIP() << "xvfb-run not installed";
+    if (arcomp::test::shell("command -v xvfb-run").code != 0) GTEST_SKIP() << "xvfb-run not installed";
     TempDir dir;
     const fs::path shot = dir.path() / "shot.png";
-    std::string out;
-    const int code = shell("xvfb-run -a -s '-screen 0 1024x768x24' " + std::string(ARCOMP_BINARY) + " run " + kDemo.string() +
-                               " --windowed --size 640x480 --frames 30 --overlay --screenshot " + shot.string(),
-                           out);
+    // Our own display number range: concurrent xvfb-run calls starting at the
+    // same number race for it (the WindowContext twin starts at 120).
+    const std::string display = std::to_string(200 + getpid() % 100);
+    const auto [code, out] = arcomp::test::shell("xvfb-run -a -n " + display + " -s '-screen 0 1024x768x24' " + std::string(ARCOMP_BINARY) + " run " + kDemo.string() +
+                               " --windowed --size 640x480 --frames 30 --overlay --screenshot " + shot.string());
     ASSERT_EQ(code, 0) << out;
     const cv::Mat image = cv::imread(shot.string());
     ASSERT_FALSE(image.empty()) << out;
