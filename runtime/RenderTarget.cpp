@@ -44,22 +44,24 @@ void RenderTarget::bind() const {
     glViewport(0, 0, size_.x, size_.y);
 }
 
-Image RenderTarget::read() const {
+Image readFramebuffer(GLuint framebuffer, glm::ivec2 size) {
     Image img;
-    img.width = size_.x;
-    img.height = size_.y;
-    img.rgba.resize(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y) * 4);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    img.width = size.x;
+    img.height = size.y;
+    img.rgba.resize(static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y) * 4);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     // RGBA + UNSIGNED_BYTE is the one read format every GL and GLES accepts.
-    glReadPixels(0, 0, size_.x, size_.y, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+    glReadPixels(0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
     // GL's rows run bottom to top; images run top to bottom.
-    const std::size_t row = static_cast<std::size_t>(size_.x) * 4;
-    for (int y = 0; y < size_.y / 2; ++y)
+    const std::size_t row = static_cast<std::size_t>(size.x) * 4;
+    for (int y = 0; y < size.y / 2; ++y)
         std::swap_ranges(img.rgba.begin() + static_cast<std::ptrdiff_t>(y * row),
                          img.rgba.begin() + static_cast<std::ptrdiff_t>((y + 1) * row),
-                         img.rgba.begin() + static_cast<std::ptrdiff_t>((size_.y - 1 - y) * row));
+                         img.rgba.begin() + static_cast<std::ptrdiff_t>((size.y - 1 - y) * row));
     return img;
 }
+
+Image RenderTarget::read() const { return readFramebuffer(framebuffer_, size_); }
 
 } // namespace arcomp

@@ -32,4 +32,7 @@ private:
     GLuint framebuffer_ = 0, color_ = 0, depthStencil_ = 0;
 };
 
+// Reads a framebuffer's colour (0: the window's) as an image, rows top to bottom.
+Image readFramebuffer(GLuint framebuffer, glm::ivec2 size);
+
 } // namespace arcomp

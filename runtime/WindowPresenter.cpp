@@ -90,21 +90,6 @@ void WindowPresenter::present(const RenderTarget& frame, glm::ivec2 windowSize, 
     glDisable(GL_BLEND);
 }
 
-Image WindowPresenter::screenshot(glm::ivec2 windowSize) const {
-    Image image;
-    image.width = windowSize.x;
-    image.height = windowSize.y;
-    image.rgba.resize(static_cast<std::size_t>(windowSize.x) * static_cast<std::size_t>(windowSize.y) * 4);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, windowSize.x, windowSize.y, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
-    // GL's rows run bottom-up; images here run top-down.
-    const std::size_t row = static_cast<std::size_t>(windowSize.x) * 4;
-    for (int y = 0; y < windowSize.y / 2; ++y)
-        std::swap_ranges(image.rgba.begin() + static_cast<std::ptrdiff_t>(y * row),
-                         image.rgba.begin() + static_cast<std::ptrdiff_t>((y + 1) * row),
-                         image.rgba.begin() + static_cast<std::ptrdiff_t>((windowSize.y - 1 - y) * row));
-    return image;
-}
+Image WindowPresenter::screenshot(glm::ivec2 windowSize) const { return readFramebuffer(0, windowSize); }
 
 } // namespace arcomp

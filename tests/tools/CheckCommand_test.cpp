@@ -32,38 +32,36 @@ TEST(CheckCommand, acceptsEveryShippedConfig) {
     EXPECT_GE(configs, 4u);
 }
 
-TEST(CheckCommand, unknownKeyIsReportedAtItsLineAndColumn) {
+// Each class of error: the config, and the message expected with its place.
+struct ConfigErrorCase {
+    const char* name;
+    const char* yaml;
+    const char* expected;
+};
+
+class CheckCommandRejects : public ::testing::TestWithParam<ConfigErrorCase> {};
+
+TEST_P(CheckCommandRejects, withTheMessageAtItsLineAndColumn) {
     TempDir dir;
-    const auto file = dir.write("station.yaml", "scene:\n  objects:\n    - shape: box\n      colour: [1, 0, 0, 1]\n");
-    const auto r = check(file);
+    const auto r = check(dir.write("station.yaml", GetParam().yaml));
     EXPECT_EQ(r.code, 2) << r.out;
-    EXPECT_NE(r.out.find("station.yaml:4:7: scene.objects[0].colour: unknown key; expected one of color,"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(GetParam().expected), std::string::npos) << r.out;
 }
 
-TEST(CheckCommand, wrongTypeIsReportedAtItsLineAndColumn) {
-    TempDir dir;
-    const auto file = dir.write("station.yaml", "scene:\n  objects:\n    - shape: box\n      position: forward\n");
-    const auto r = check(file);
-    EXPECT_EQ(r.code, 2) << r.out;
-    EXPECT_NE(r.out.find("station.yaml:4:17: scene.objects[0].position"), std::string::npos) << r.out;
-}
-
-TEST(CheckCommand, missingModelFileIsReportedAtItsLineAndColumn) {
-    TempDir dir;
-    const auto file = dir.write("station.yaml", "scene:\n  objects:\n    - model: statue.glb\n");
-    const auto r = check(file);
-    EXPECT_EQ(r.code, 2) << r.out;
-    EXPECT_NE(r.out.find("station.yaml:3:14: scene.objects[0].model: file '"), std::string::npos) << r.out;
-    EXPECT_NE(r.out.find("statue.glb' does not exist"), std::string::npos) << r.out;
-}
-
-TEST(CheckCommand, numberOutOfRangeIsReportedAtItsLineAndColumn) {
-    TempDir dir;
-    const auto file = dir.write("station.yaml", "scene:\n  objects:\n    - shape: box\nstatus:\n  port: 99999\n");
-    const auto r = check(file);
-    EXPECT_EQ(r.code, 2) << r.out;
-    EXPECT_NE(r.out.find("station.yaml:5:9: status.port: 99999 is out of range; expected 1 to 65535"), std::string::npos) << r.out;
-}
+INSTANTIATE_TEST_SUITE_P(
+    ErrorClasses, CheckCommandRejects,
+    ::testing::Values(
+        ConfigErrorCase{"unknownKey", "scene:\n  objects:\n    - shape: box\n      colour: [1, 0, 0, 1]\n",
+                        "station.yaml:4:7: scene.objects[0].colour: unknown key; expected one of color,"},
+        ConfigErrorCase{"wrongType", "scene:\n  objects:\n    - shape: box\n      position: forward\n",
+                        "station.yaml:4:17: scene.objects[0].position"},
+        ConfigErrorCase{"missingFile", "scene:\n  objects:\n    - model: statue.glb\n",
+                        "statue.glb' does not exist"},
+        ConfigErrorCase{"missingFilePlace", "scene:\n  objects:\n    - model: statue.glb\n",
+                        "station.yaml:3:14: scene.objects[0].model: file '"},
+        ConfigErrorCase{"numberOutOfRange", "scene:\n  objects:\n    - shape: box\nstatus:\n  port: 99999\n",
+                        "station.yaml:5:9: status.port: 99999 is out of range; expected 1 to 65535"}),
+    [](const auto& info) { return std::string(info.param.name); });
 
 TEST(CheckCommand, everyErrorIsListedAtOnce) {
     TempDir dir;
