@@ -57,6 +57,12 @@ StationInput StationInput::fromLive(std::unique_ptr<FrameSource> s, double fps) 
     return in;
 }
 
+void Station::preflight(const StationConfig& cfg) {
+    if (cfg.budget.enabled) (void)readCalibration(cfg.budget.calibration);
+    (void)makeGazeSource(cfg.gaze, View{});
+    (void)makeMatte(cfg.compositing.matte);
+}
+
 Station::Station(const StationConfig& cfg, StationInput input) : cfg_(cfg), input_(std::move(input)) {
     matte_ = makeMatte(cfg_.compositing.matte);
     firstPending_ = grabNext();
@@ -195,6 +201,7 @@ bool Station::grabNext() {
         }
         replayState_.status = SourceStatus::Streaming;
         f = std::move(r.frame);
+        videoSeconds_ = std::chrono::duration<double>(f->timestamp).count();
     } else {
         f = input_.live->newest();
         // A camera takes a moment to deliver its first frame; the station
@@ -223,7 +230,7 @@ bool Station::frame() {
     if (stats_.newVideoFrame || person_.empty()) matte_->apply(frame_, person_);
     stats_.matteMs = msSince(t);
 
-    const double seconds = static_cast<double>(frames_) / input_.fps;  // video time: a replay moves the same way every run
+    const double seconds = input_.replay ? videoSeconds_ : std::chrono::duration<double>(Clock::now() - clockStart_).count();
     if (!motions_.empty()) moveObjects(seconds);
     scene_.update();
     holdoutScene_.update();

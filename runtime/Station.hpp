@@ -8,7 +8,7 @@
 // and records each stage's milliseconds in stats().
 //
 //   auto ctx = HeadlessContext::create(GlRequest::Auto);   // or a window's context
-//   Station station(cfg, StationInput::replay(std::move(grabber)));
+//   Station station(cfg, StationInput::fromReplay(std::move(grabber), fps));
 //   while (station.frame()) {}                              // false at the end of the input
 //   station.finish();                                       // closes the video file
 //
@@ -37,6 +37,7 @@
 #include "video/PersonMatte.hpp"
 #include "video/VideoFileWriter.hpp"
 
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -87,8 +88,19 @@ public:
     // A GL context must be current. The output size is the video's size (the
     // first frame is read here; a live source gets up to 3 s to deliver it). Outputs come from cfg.compositing.output.
     // Throws VideoError when there is no first frame or an output cannot be
-    // opened.
+    // opened, and what preflight() throws.
     Station(const StationConfig& cfg, StationInput input);
+
+    // Everything config-dependent that can fail before a station starts (the
+    // calibration file, the gaze track, the matte settings), checked without
+    // GL or video, so that a reload can be refused while the old station runs.
+    static void preflight(const StationConfig& cfg);
+
+    // Movers and the gaze track run on this clock: the video's own
+    // timestamps in replay (deterministic), wall time since `start` live. A
+    // reloaded live station keeps the previous one's start.
+    void setClockStart(std::chrono::steady_clock::time_point start) { clockStart_ = start; }
+    std::chrono::steady_clock::time_point clockStart() const { return clockStart_; }
     ~Station();
 
     // One frame; false when a replay input has ended (nothing was drawn).
@@ -124,7 +136,7 @@ public:
     void setCamera(const glm::vec3& eye, const glm::vec3& target);
     std::size_t silhouetteTrianglesTotal() const;
     // Why a replay input ended ("end after 795 frames", a decoder error); empty while it runs.
-    const std::string& inputEnd() const { return inputEnd_; }  // all regions' lists, for reports
+    const std::string& inputEnd() const { return inputEnd_; }
 
 private:
     bool capture();
@@ -158,6 +170,8 @@ private:
     std::string inputEnd_;
     SourceState replayState_{SourceStatus::Opening, ""};
     std::uint64_t firstOutputIndex_ = 0;
+    std::chrono::steady_clock::time_point clockStart_ = std::chrono::steady_clock::now();
+    double videoSeconds_ = 0.0;  // the current frame's timestamp (replay)
     FrameStats stats_;
     std::uint64_t frames_ = 0;
 };

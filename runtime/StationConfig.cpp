@@ -69,7 +69,10 @@ ObjectConfig readObject(YamlMap& m, std::size_t index) {
     if (m.has("motion")) {
         YamlMap motion = m.map("motion");
         motion.vec3("velocity", o.velocity, Required::Yes);
-        motion.number("range_m", o.rangeMetres, 0.0, kLarge);
+        // Required: a mover with no turning point would leave for good on a
+        // station that runs all day.
+        motion.number("range_m", o.rangeMetres, 1e-3, kLarge, Required::Yes);
+        if (glm::length(o.velocity) == 0.0f) motion.report().add(motion.mark(), motion.where() + ".velocity: must not be zero");
         motion.finish();
     }
     for (int i = 0; i < 4; ++i)

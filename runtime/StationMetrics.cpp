@@ -1,5 +1,6 @@
 #include "runtime/StationMetrics.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -37,7 +38,8 @@ std::string labelValue(std::string_view text) {
     std::string out;
     for (char c : text) {
         if (c == '\\' || c == '"') out += '\\';
-        out += c == '\n' ? 'n' : c;
+        if (c == '\n') out += "\\n";
+        else out += c;
     }
     return out;
 }
@@ -59,6 +61,18 @@ void StationMetrics::recordFrame(double frameMs) {
         }
     recentFrames_.push_back(now);
     while (now - recentFrames_.front() > std::chrono::seconds(1)) recentFrames_.pop_front();
+}
+
+// A stalled loop records nothing, so the count is taken against the time of
+// reading, not of the last frame.
+std::size_t StationMetrics::framesInLastSecond() const {
+    const auto since = std::chrono::steady_clock::now() - std::chrono::seconds(1);
+    return static_cast<std::size_t>(std::count_if(recentFrames_.begin(), recentFrames_.end(), [&](auto t) { return t > since; }));
+}
+
+void StationMetrics::forgetCameras() {
+    std::lock_guard lock(mutex_);
+    cameras_.clear();
 }
 
 void StationMetrics::setCamera(const std::string& name, const SourceState& state, std::uint64_t drops) {
@@ -89,7 +103,7 @@ std::string StationMetrics::statusJson() const {
     const double uptime = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
     std::ostringstream s;
     s << "{\"config\":" << quoted(config_) << ",\"uptime_s\":" << uptime << ",\"frames\":" << frames_
-      << ",\"fps\":" << recentFrames_.size() << ",\"last_frame_ms\":" << lastFrameMs_ << ",\"cameras\":[";
+      << ",\"fps\":" << framesInLastSecond() << ",\"last_frame_ms\":" << lastFrameMs_ << ",\"cameras\":[";
     bool first = true;
     for (const auto& [name, camera] : cameras_) {
         s << (first ? "" : ",") << "{\"name\":" << quoted(name) << ",\"state\":" << quoted(sourceStatusName(camera.state.status))
@@ -122,7 +136,7 @@ std::string StationMetrics::prometheusText() const {
       << "arcomp_frame_time_seconds_count " << frames_ << '\n'
       << "# HELP arcomp_frames_per_second Frames rendered in the last second.\n"
          "# TYPE arcomp_frames_per_second gauge\n"
-      << "arcomp_frames_per_second " << recentFrames_.size() << '\n'
+      << "arcomp_frames_per_second " << framesInLastSecond() << '\n'
       << "# HELP arcomp_camera_up 1 while the camera streams, 0 otherwise.\n"
          "# TYPE arcomp_camera_up gauge\n";
     for (const auto& [name, camera] : cameras_)

@@ -33,6 +33,8 @@ public:
     // from lost back to streaming, which the station sees and the source does not report.
     void setCamera(const std::string& name, const SourceState& state, std::uint64_t drops);
     void recordError(std::string message);
+    // A reload replaced the inputs: cameras no longer in use leave the report.
+    void forgetCameras();
     void setConfig(std::string file);
 
     std::string statusJson() const;
@@ -51,7 +53,8 @@ private:
     std::uint64_t frames_ = 0;
     double frameSecondsSum_ = 0.0;
     std::array<std::uint64_t, kFrameTimeBuckets.size()> bucketCounts_{};  // not cumulative
-    std::deque<std::chrono::steady_clock::time_point> recentFrames_;     // the last second, for fps
+    std::deque<std::chrono::steady_clock::time_point> recentFrames_;     // for fps: the last second's, pruned as it is read
+    std::size_t framesInLastSecond() const;
     double lastFrameMs_ = 0.0;
     std::map<std::string, Camera> cameras_;
     std::deque<std::string> lastErrors_;  // newest last, the last ten

@@ -30,15 +30,14 @@ std::filesystem::path numberedVideo(const std::filesystem::path& file, std::uint
 
 } // namespace
 
-StationRunner::StationRunner(StationConfig cfg, InputOpener openInput) : cfg_(std::move(cfg)), openInput_(std::move(openInput)) {
+StationRunner::StationRunner(StationConfig cfg, ConfigOverride override, InputOpener openInput)
+    : cfg_(std::move(cfg)), override_(std::move(override)), openInput_(std::move(openInput)) {
+    if (override_) override_(cfg_);
     metrics_.setConfig(cfg_.file.string());
-    baseVideoFile_ = cfg_.compositing.output.videoFile;
     startStatusServer();
     station_ = std::make_unique<Station>(cfg_, openInput_(cfg_));
-    for (const std::string& w : station_->warnings()) {
-        spdlog::warn("{}", w);
-        metrics_.recordError(w);
-    }
+    station_->setClockStart(started_);
+    reportWarnings();
 }
 
 StationRunner::~StationRunner() { finish(); }
@@ -55,8 +54,16 @@ void StationRunner::startStatusServer() {
     }
 }
 
+void StationRunner::reportWarnings() {
+    for (const std::string& w : station_->warnings()) {
+        spdlog::warn("{}", w);
+        metrics_.recordError(w);
+    }
+}
+
 bool StationRunner::step() {
     if (takeReloadRequest()) reload();
+    if (ended_) return false;
     const double start = nowSeconds();
     const bool drawn = station_->frame();
     metrics_.setCamera(station_->inputName(), station_->inputState(), station_->inputDrops());
@@ -73,45 +80,61 @@ void StationRunner::reload() {
     StationConfig next;
     try {
         next = loadStationConfig(cfg_.file);
-    } catch (const ConfigError& e) {
+        if (override_) override_(next);
+        Station::preflight(next);
+    } catch (const std::exception& e) {
         spdlog::error("reload refused, keeping the running config: {}", e.what());
         metrics_.recordError(std::string("reload refused: ") + e.what());
         return;
     }
-    // Replay overrides (output folder, video file) stay as the command set them.
-    next.compositing.output.pngDir = cfg_.compositing.output.pngDir;
-    if (!baseVideoFile_.empty()) next.compositing.output.videoFile = numberedVideo(baseVideoFile_, reloads_ + 1);
+    ++reloads_;
+    if (!next.compositing.output.videoFile.empty())
+        next.compositing.output.videoFile = numberedVideo(next.compositing.output.videoFile, reloads_);
     const bool keepInput = sameVideo(cfg_, next);
-    if (keepInput) next.compositing.video = cfg_.compositing.video;  // command-line overrides too
+    StationInput input;
+    if (keepInput) {
+        input = station_->releaseInput();
+    } else {
+        station_.reset();  // the old camera is released before the new one opens
+        metrics_.forgetCameras();
+    }
     try {
-        const std::uint64_t written = frames_;
-        station_->finish();
-        StationInput input = keepInput ? station_->releaseInput() : openInput_(next);
-        if (!keepInput) station_.reset();  // release the old camera before the new one opens fully
-        auto fresh = std::make_unique<Station>(next, std::move(input));
-        fresh->setFirstOutputIndex(written);
-        station_ = std::move(fresh);
+        restart(next, keepInput ? std::move(input) : openInput_(next));
     } catch (const std::exception& e) {
-        // The old station has given up its input and outputs: start it again
-        // from its own config, recording into the next numbered file.
-        spdlog::error("reload failed, restarting the previous config: {}", e.what());
+        spdlog::error("reload failed: {}", e.what());
         metrics_.recordError(std::string("reload failed: ") + e.what());
+        if (cfg_.compositing.video && cfg_.compositing.video->kind == SourceKind::File && !cfg_.compositing.video->loop) {
+            // A replay cannot go back to where it was without repeating frames.
+            ended_ = true;
+            return;
+        }
         StationConfig previous = cfg_;
-        if (!baseVideoFile_.empty()) previous.compositing.output.videoFile = numberedVideo(baseVideoFile_, reloads_ + 1);
-        ++reloads_;
-        station_ = std::make_unique<Station>(previous, openInput_(previous));
-        station_->setFirstOutputIndex(frames_);
-        cfg_ = std::move(previous);
+        if (!previous.compositing.output.videoFile.empty())
+            previous.compositing.output.videoFile = numberedVideo(previous.compositing.output.videoFile, reloads_);
+        station_.reset();
+        try {
+            restart(previous, openInput_(previous));
+        } catch (const std::exception& again) {
+            spdlog::error("the previous config cannot start either ({}); showing the test pattern", again.what());
+            previous.compositing.video = SourceSpec{};
+            restart(previous, openInput_(previous));
+        }
         return;
     }
-    const bool statusChanged = next.operation.statusEnabled != cfg_.operation.statusEnabled ||
-                               next.operation.status.port != cfg_.operation.status.port ||
-                               next.operation.status.bind != cfg_.operation.status.bind;
-    cfg_ = std::move(next);
-    if (statusChanged) startStatusServer();
-    ++reloads_;
-    for (const std::string& w : station_->warnings()) spdlog::warn("{}", w);
     spdlog::info("reloaded {} ({} objects, input {})", cfg_.file.string(), cfg_.objects.size(), keepInput ? "kept" : "reopened");
+}
+
+void StationRunner::restart(StationConfig cfg, StationInput input) {
+    auto fresh = std::make_unique<Station>(cfg, std::move(input));
+    fresh->setFirstOutputIndex(frames_);
+    fresh->setClockStart(started_);
+    station_ = std::move(fresh);
+    const bool statusChanged = cfg.operation.statusEnabled != cfg_.operation.statusEnabled ||
+                               cfg.operation.status.port != cfg_.operation.status.port ||
+                               cfg.operation.status.bind != cfg_.operation.status.bind;
+    cfg_ = std::move(cfg);
+    if (statusChanged) startStatusServer();
+    reportWarnings();
 }
 
 void StationRunner::finish() {

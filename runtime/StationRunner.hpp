@@ -6,20 +6,26 @@
 // both drive one.
 //
 //   installShutdownSignals();
-//   StationRunner runner(cfg, openInput);         // a GL context must be current
+//   StationRunner runner(file, applyCommandLine, openInput);   // a GL context must be current
 //   while (!stopRequested() && runner.step()) present(runner.station());
-//   runner.finish();                              // video files closed, cameras released
+//   runner.finish();                                            // video files closed
 //
-// A reload that fails (a config error, a missing model) is logged and
-// counted, and the station keeps running what it had. A reload keeps the
-// input open when the video section is unchanged, and continues the
-// output numbering; a video file output goes on in a new numbered file
-// (name.1.avi, ...) so the recording made so far stays whole.
+// Reload: the new config is loaded, the command line's overrides applied
+// again, and everything that can fail without video or GL is checked
+// (Station::preflight) while the old station still runs; a config that
+// fails is refused, logged and counted, and the old one goes on. An
+// unchanged video section keeps the input open; otherwise the old input is
+// released before the new one opens. Output numbering continues; a video
+// file output goes on in a new numbered file (name.1.avi, ...) so the
+// recording made so far stays whole. If the new station still cannot start
+// (no first frame), a live station goes back to its previous config (on
+// the test pattern if its camera is gone too); a replay ends.
 
 #include "runtime/Station.hpp"
 #include "runtime/StationMetrics.hpp"
 #include "runtime/StatusServer.hpp"
 
+#include <chrono>
 #include <functional>
 #include <memory>
 
@@ -28,10 +34,14 @@ namespace arcomp {
 class StationRunner {
 public:
     using InputOpener = std::function<StationInput(const StationConfig&)>;
+    // Applied to every config the runner loads (the first and each reload):
+    // the command line's overrides (--video, --out, --gl, ...).
+    using ConfigOverride = std::function<void(StationConfig&)>;
 
     // Throws what Station throws (no first frame, an output that cannot be
-    // opened). A status port that cannot be bound is logged, not thrown.
-    StationRunner(StationConfig cfg, InputOpener openInput);
+    // opened, a bad calibration file). A status port that cannot be bound is
+    // logged, not thrown.
+    StationRunner(StationConfig cfg, ConfigOverride override, InputOpener openInput);
     ~StationRunner();
 
     // One frame, after a pending reload; false when the input has ended.
@@ -47,16 +57,20 @@ public:
 
 private:
     void reload();
+    void restart(StationConfig cfg, StationInput input);
     void startStatusServer();
+    void reportWarnings();
 
     StationConfig cfg_;
+    ConfigOverride override_;
     InputOpener openInput_;
     StationMetrics metrics_;
     std::unique_ptr<StatusServer> server_;
     std::unique_ptr<Station> station_;
     std::uint64_t frames_ = 0;
     std::uint64_t reloads_ = 0;
-    std::filesystem::path baseVideoFile_;  // reloads record into name.1.avi, name.2.avi, ...
+    const std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();  // live movers' clock
+    bool ended_ = false;           // a replay whose reload could not start
     double lastStepStart_ = -1.0;  // seconds, steady clock; frame time is start to start
 };
 

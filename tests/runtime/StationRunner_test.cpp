@@ -50,7 +50,7 @@ StationConfig withStatus(const fs::path& file) {
 TEST(StationRunner, cameraFaultShowsInStatusAndMetrics) {
     auto ctx = HeadlessContext::create(GlRequest::Auto);
     test::TempDir dir;
-    StationRunner runner(withStatus(dir.write("station.yaml", kStation)),
+    StationRunner runner(withStatus(dir.write("station.yaml", kStation)), nullptr,
                          [](const StationConfig&) { return StationInput::fromReplay(std::make_unique<FailingCamera>(3), 30.0); });
     ASSERT_GT(runner.statusPort(), 0);
     httplib::Client client("127.0.0.1", runner.statusPort());
@@ -78,7 +78,7 @@ TEST(StationRunner, reloadSwapsTheSceneAtAFrameBoundaryAndKeepsTheInput) {
     test::TempDir dir;
     const fs::path file = dir.write("station.yaml", kStation);
     int opened = 0;
-    StationRunner runner(loadStationConfig(file), [&opened](const StationConfig&) {
+    StationRunner runner(loadStationConfig(file), nullptr, [&opened](const StationConfig&) {
         ++opened;
         return StationInput::fromReplay(std::make_unique<FailingCamera>(100), 30.0);
     });
@@ -109,4 +109,34 @@ TEST(StationRunner, reloadSwapsTheSceneAtAFrameBoundaryAndKeepsTheInput) {
     EXPECT_EQ(runner.reloads(), 1u);
     EXPECT_EQ(centre(), now);
     EXPECT_NE(runner.metrics().statusJson().find("reload refused"), std::string::npos);
+}
+
+// A command-line override (arcomp replay --video) holds across reloads: the
+// reloaded config gets it again, so the input is kept, not reopened from the file.
+TEST(StationRunner, commandLineOverridesSurviveAReload) {
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    test::TempDir dir;
+    const fs::path file = dir.write("station.yaml", std::string(kStation) + "video: {source: pattern}\n");
+    int opened = 0;
+    std::vector<std::string> openedPaths;
+    StationRunner runner(
+        loadStationConfig(file),
+        [](StationConfig& cfg) {
+            SourceSpec recorded;
+            recorded.kind = SourceKind::File;
+            recorded.path = "recorded.avi";
+            cfg.compositing.video = recorded;
+        },
+        [&](const StationConfig& cfg) {
+            ++opened;
+            openedPaths.push_back(cfg.compositing.video->path);
+            return StationInput::fromReplay(std::make_unique<FailingCamera>(100), 30.0);
+        });
+    ASSERT_TRUE(runner.step());
+    requestReload();
+    ASSERT_TRUE(runner.step());
+    EXPECT_EQ(runner.reloads(), 1u);
+    EXPECT_EQ(opened, 1);
+    EXPECT_EQ(openedPaths, std::vector<std::string>{"recorded.avi"});
+    EXPECT_EQ(runner.config().compositing.video->path, "recorded.avi");
 }

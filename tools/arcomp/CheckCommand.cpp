@@ -4,6 +4,7 @@
 // that the station would skip at run time fails the check here.
 
 #include "runtime/SceneFile.hpp"
+#include "runtime/Station.hpp"
 #include "runtime/StationConfig.hpp"
 #include "tools/arcomp/Command.hpp"
 
@@ -15,6 +16,11 @@ namespace {
 
 int check(const std::string& file) {
     const StationConfig cfg = loadStationConfig(file);  // ConfigError: exit 2 with every problem
+    try {
+        Station::preflight(cfg);  // calibration, gaze track, matte settings
+    } catch (const std::exception& e) {
+        throw InputError(file + ": " + e.what());
+    }
     Scene scene;
     std::vector<std::string> problems;
     buildScene(cfg, scene, problems);

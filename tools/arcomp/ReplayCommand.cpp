@@ -26,8 +26,8 @@ struct ReplayOptions {
 // Without --frames a file plays to its end; an endless pattern stops here.
 constexpr long kPatternFrames = 120;
 
-int replay(const ReplayOptions& o) {
-    StationConfig cfg = loadStationConfig(o.config);
+// The command line wins over the config, on start and on every reload.
+void applyCommandLine(const ReplayOptions& o, StationConfig& cfg) {
     if (!o.video.empty()) {
         SourceSpec spec = cfg.compositing.video.value_or(SourceSpec{});
         spec.kind = SourceKind::File;
@@ -35,10 +35,15 @@ int replay(const ReplayOptions& o) {
         spec.fallback = {};
         cfg.compositing.video = spec;
     }
-    if (!cfg.compositing.video)
-        throw InputError(o.config + ": no `video` section and no --video FILE: nothing to replay");
+    if (!cfg.compositing.video) throw InputError(cfg.file.string() + ": no `video` section and no --video FILE: nothing to replay");
     cfg.compositing.output.pngDir = o.out;
     if (!o.videoOut.empty()) cfg.compositing.output.videoFile = o.videoOut;
+    if (!o.gl.empty()) cfg.render.gl = o.gl;
+}
+
+int replay(const ReplayOptions& o) {
+    StationConfig cfg = loadStationConfig(o.config);
+    applyCommandLine(o, cfg);
 
     configureLogging({.level = o.logLevel.empty() ? cfg.operation.log.level : o.logLevel,
                       .file = cfg.operation.log.file,
@@ -69,12 +74,11 @@ int replay(const ReplayOptions& o) {
         return openReplayInput(*c.compositing.video, ignored);
     };
 
-    if (!o.gl.empty()) cfg.render.gl = o.gl;
     bool isAuto = false;
     const auto api = parseGlApi(cfg.render.gl, isAuto);
     auto context = HeadlessContext::create(isAuto ? GlRequest::Auto : *api == GlApiKind::Es3 ? GlRequest::Es3 : GlRequest::Gl33);
     installShutdownSignals();
-    StationRunner runner(cfg, openInput);
+    StationRunner runner(cfg, [&o](StationConfig& c) { applyCommandLine(o, c); }, openInput);
 
     double total = 0.0;
     long done = 0;

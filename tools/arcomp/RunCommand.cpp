@@ -42,14 +42,21 @@ StationInput openLive(const StationConfig& cfg) {
     return StationInput::fromLive(std::move(source), spec.fps);
 }
 
+// A kiosk never goes dark over its input or its settings: whatever stops the
+// config's station from starting (a camera that never delivers, a bad
+// calibration or gaze file), it runs the same scene on the test pattern
+// with every optional part off, and says why on /status.
 std::unique_ptr<StationRunner> startStation(const StationConfig& cfg) {
     try {
-        return std::make_unique<StationRunner>(cfg, openLive);
-    } catch (const VideoError& e) {
+        return std::make_unique<StationRunner>(cfg, nullptr, openLive);
+    } catch (const std::exception& e) {
         spdlog::error("{}; showing the test pattern instead", e.what());
-        StationConfig pattern = cfg;
-        pattern.compositing.video = SourceSpec{};
-        auto runner = std::make_unique<StationRunner>(pattern, openLive);
+        StationConfig plain = cfg;
+        plain.compositing.video = SourceSpec{};
+        plain.compositing.matte = {};
+        plain.budget.enabled = false;
+        plain.gaze = {};
+        auto runner = std::make_unique<StationRunner>(plain, nullptr, openLive);
         runner->metrics().recordError(e.what());
         return runner;
     }
@@ -87,8 +94,10 @@ int run(const RunOptions& o) {
     auto last = std::chrono::steady_clock::now();
     while (!stopRequested() && !window->shouldClose() && (o.frames < 0 || done < o.frames)) {
         if (!runner->step()) {
-            // A live station keeps its window up; only a finished file ends it.
-            if (isLost(runner->station().inputState().status)) break;
+            // Only a file source that ended stops a live station (a camera
+            // that is lost shows its fallback and keeps the loop going).
+            if (runner->station().inputState().status == SourceStatus::Ended) break;
+            window->poll();
             continue;
         }
         ++done;
@@ -98,14 +107,19 @@ int run(const RunOptions& o) {
         const Station& station = runner->station();
         const FrameStats& stats = station.stats();
         overlay.add(stats, station.drawList(), {station.inputName(), station.inputState(), station.inputDrops()}, frameMs,
-                    stats.budget ? cfg.budget.targetMs : 1000.0 / 60.0);
+                    stats.budget ? runner->config().budget.targetMs : 1000.0 / 60.0);
         const glm::ivec2 size = window->framebufferSize();
         presenter.present(station.compositedFrame(), size, showOverlay ? &overlay.image() : nullptr);
         const bool finalFrame = o.frames >= 0 && done == o.frames;
         if (takeScreenshot || (finalFrame && !o.screenshot.empty())) {
             const std::string file = finalFrame && !o.screenshot.empty() ? o.screenshot : "screenshot-" + std::to_string(done) + ".png";
-            writePng(file, presenter.screenshot(size));
-            spdlog::info("screenshot {}", file);
+            try {
+                writePng(file, presenter.screenshot(size));
+                spdlog::info("screenshot {}", file);
+            } catch (const std::exception& e) {
+                spdlog::error("screenshot not saved: {}", e.what());
+                runner->metrics().recordError(e.what());
+            }
             takeScreenshot = false;
         }
         window->swap();
