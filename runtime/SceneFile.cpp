@@ -16,7 +16,7 @@ View cameraView(const CameraConfig& c) {
 }
 
 void buildScene(const StationConfig& cfg, Scene& scene, std::vector<std::string>& warnings, GroupingNodes* grouping,
-                LodTable* lods) {
+                LodTable* lods, PointCloudNodes* clouds) {
     GroupingNodes ownGrouping;
     LodTable ownLods;
     const NodeId groupingNode = beginGrouping(cfg.grouping, scene, grouping ? *grouping : ownGrouping);
@@ -46,6 +46,7 @@ void buildScene(const StationConfig& cfg, Scene& scene, std::vector<std::string>
         scene.addMesh(place, {scene.addGeometry(std::move(g)), scene.addMaterial(std::move(mat))}, o.name);
     }
     finishGrouping(cfg.grouping, scene, groupingNode, grouping ? *grouping : ownGrouping, lods ? *lods : ownLods);
+    if (clouds) addPointClouds(cfg.pointClouds, cfg.file, scene, *clouds, warnings);
 }
 
 SceneFile loadSceneFile(const fs::path& file) {
@@ -54,7 +55,7 @@ SceneFile loadSceneFile(const fs::path& file) {
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
     if (ext == ".yaml" || ext == ".yml") {
         const StationConfig cfg = loadStationConfig(file);
-        buildScene(cfg, out.scene, out.warnings, &out.grouping, &out.lods);
+        buildScene(cfg, out.scene, out.warnings, &out.grouping, &out.lods, &out.pointClouds);
         if (cfg.camera.given) out.camera = cameraView(cfg.camera);
         out.background = cfg.render.background;
         return out;

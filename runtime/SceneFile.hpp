@@ -7,6 +7,7 @@
 
 #include "graph/GroupingNodes.hpp"
 #include "graph/Lod.hpp"
+#include "graph/PointCloudNodes.hpp"
 #include "graph/Scene.hpp"
 #include "graph/View.hpp"
 #include "runtime/StationConfig.hpp"
@@ -25,14 +26,17 @@ struct SceneFile {
     // Side tables of the grouping section's nodes (empty without one).
     GroupingNodes grouping;
     LodTable lods;
+    // The point_clouds section's clouds (empty without one).
+    PointCloudNodes pointClouds;
 };
 
 SceneFile loadSceneFile(const std::filesystem::path& file);
 // Adds the config's objects to a scene; failures become warnings.
 // With tables, the config's grouping section (if any) fills them; without,
-// grouped content is still added and draws at full detail.
+// grouped content is still added and draws at full detail. With a cloud
+// table, the point_clouds section's clouds are added; without, none.
 void buildScene(const StationConfig& cfg, Scene& scene, std::vector<std::string>& warnings,
-                GroupingNodes* grouping = nullptr, LodTable* lods = nullptr);
+                GroupingNodes* grouping = nullptr, LodTable* lods = nullptr, PointCloudNodes* clouds = nullptr);
 View cameraView(const CameraConfig& camera);
 
 } // namespace arcomp

@@ -87,6 +87,7 @@ StationConfig loadStationConfig(const std::filesystem::path& file) {
 
     readBudgetConfig(root, cfg.budget);
     readGroupingConfig(root, cfg.grouping);
+    readPointCloudConfig(root, cfg.pointClouds);
     root.finish();
     report.throwIfAny();
     return cfg;

@@ -10,6 +10,7 @@
 #include "runtime/OperatorConfig.hpp"
 #include "runtime/BudgetConfig.hpp"
 #include "runtime/GroupingConfig.hpp"
+#include "runtime/PointCloudConfig.hpp"
 
 #include <glm/glm.hpp>
 
@@ -60,6 +61,7 @@ struct StationConfig {
     OperatorConfig operation;
     BudgetConfig budget;
     GroupingConfig grouping;
+    PointCloudConfig pointClouds;
 };
 
 StationConfig loadStationConfig(const std::filesystem::path& file);
