@@ -60,7 +60,7 @@ Station::Station(const StationConfig& cfg, StationInput input) : cfg_(cfg), inpu
                                      "no frame to start from");
     const glm::ivec2 size(frame_.cols, frame_.rows);
 
-    buildScene(cfg_, scene_, warnings_, &grouping_, &lods_);
+    buildScene(cfg_, scene_, warnings_, &grouping_, &lods_, &pointClouds_);
     scene_.update();
     // The CG camera is the video camera: its pose and field of view from the
     // config, its image size the video's.
@@ -82,6 +82,7 @@ Station::Station(const StationConfig& cfg, StationInput input) : cfg_(cfg), inpu
 
     cgRenderer_ = std::make_unique<Renderer>();
     holdoutRenderer_ = std::make_unique<Renderer>();
+    if (pointClouds_.size()) cloudLayer_ = std::make_unique<PointCloudLayer>();
     compositor_ = std::make_unique<Compositor>(size);
 
     const OutputConfig& out = cfg_.compositing.output;
@@ -230,6 +231,7 @@ bool Station::frame() {
     stats_.compositeMs = msSince(t);
 
     cgRenderer_->draw(scene_, cgList_, view_, {.clearColor = std::nullopt});
+    if (cloudLayer_) cloudLayer_->draw(scene_, pointClouds_, view_);
     glFinish();
     stats_.cgTriangles = cgRenderer_->trianglesDrawn();
     stats_.renderMs = msSince(t);

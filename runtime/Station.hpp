@@ -28,6 +28,7 @@
 #include "graph/Scene.hpp"
 #include "graph/SilhouetteNodes.hpp"
 #include "runtime/Compositor.hpp"
+#include "runtime/PointCloudLayer.hpp"
 #include "runtime/Renderer.hpp"
 #include "runtime/StationConfig.hpp"
 #include "video/FrameGrabber.hpp"
@@ -136,11 +137,13 @@ private:
     Scene scene_;
     GroupingNodes grouping_;
     LodTable lods_;
+    PointCloudNodes pointClouds_;
     Scene holdoutScene_;
     SilhouetteNodes silhouettes_;
     View view_;
     DrawList cgList_, holdoutCandidates_, holdoutList_;
     std::unique_ptr<Renderer> cgRenderer_, holdoutRenderer_;
+    std::unique_ptr<PointCloudLayer> cloudLayer_;  // only with point clouds
     std::unique_ptr<Compositor> compositor_;
     std::unique_ptr<RenderTarget> holdoutMask_;  // only for readHoldout()
     std::unique_ptr<VideoFileWriter> video_;
