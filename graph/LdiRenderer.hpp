@@ -20,8 +20,10 @@
 // projection buffers, stored interleaved: per output pixel, LDI 0's entries,
 // then LDI 1's, ... each run already back to front. They are filled in two
 // passes over the LDIs' McMillan streams, one counting each pixel's splats
-// and one writing them in place (the footprint is cheap to compute twice;
-// a list of splats to sort would cost more memory traffic). An entry carries
+// (per footprint row, into a difference array) and one writing them in
+// place, instead of writing a list of splats and sorting it by pixel. The
+// points are kept in LDI slot order, so the McMillan walk reads their
+// projections almost sequentially. An entry carries
 // the point's depth, weighted alpha and colour instead of its id, so the
 // merge never reads the point arrays. A pixel whose entries all come from
 // one LDI is composited straight through: its merge is the identity.
@@ -33,8 +35,9 @@
 // Two threads by default: each frame is one parallel region (projection,
 // then McMillan order with LDIs spread over the threads, then the bands).
 // The renderer keeps its buffers between frames, so it allocates nothing
-// once warm; one renderer serves one caller thread. It converts the
-// cloud's colours once, when constructed.
+// once warm; one renderer serves one caller thread. It copies the cloud's
+// positions and colours once, when constructed (the point size is read
+// every frame).
 
 #include "graph/Ldi.hpp"
 #include "graph/View.hpp"

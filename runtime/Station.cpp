@@ -5,6 +5,7 @@
 #include "runtime/CalibrationFile.hpp"
 #include "runtime/ImageFile.hpp"
 #include "runtime/ImpostorBaker.hpp"
+#include "runtime/PointCloudLayer.hpp"
 #include "runtime/SceneFile.hpp"
 #include "video/MatteSpec.hpp"
 #include "video/VideoError.hpp"

@@ -25,10 +25,10 @@
 #include "graph/FrameBudget.hpp"
 #include "graph/GroupingNodes.hpp"
 #include "graph/Lod.hpp"
+#include "graph/PointCloudNodes.hpp"
 #include "graph/Scene.hpp"
 #include "graph/SilhouetteNodes.hpp"
 #include "runtime/Compositor.hpp"
-#include "runtime/PointCloudLayer.hpp"
 #include "runtime/Renderer.hpp"
 #include "runtime/StationConfig.hpp"
 #include "video/FrameGrabber.hpp"
@@ -43,6 +43,8 @@
 #include <vector>
 
 namespace arcomp {
+
+class PointCloudLayer;
 
 // Where frames come from: a grabber pulled frame by frame (replay: every
 // frame, in order) or a live source whose newest frame is taken.

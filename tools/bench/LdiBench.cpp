@@ -33,7 +33,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
-#include <random>
 #include <sstream>
 
 namespace arcomp {
