@@ -3,6 +3,7 @@
 #include "graph/McMillanOrder.hpp"
 
 #include <algorithm>
+#include <barrier>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -38,106 +39,250 @@ std::size_t PointImage::coveredPixels() const {
     return n;
 }
 
-LdiRenderer::LdiRenderer(const LdiSet& set, int threads) : set_(set), threads_(std::max(1, threads)) {}
-
-template <class F> void LdiRenderer::parallel(F&& f) {
-    std::vector<std::thread> helpers;
-    for (int t = 1; t < threads_; ++t) helpers.emplace_back([&f, t, this] { f(t, threads_); });
-    f(0, threads_);
-    for (std::thread& h : helpers) h.join();
-}
-
-void LdiRenderer::project(const View& view) {
-    const std::size_t n = set_.cloud.size();
-    image_.width = view.viewport.x;
-    image_.height = view.viewport.y;
-    screen_.resize(n);
-    depth_.resize(n);
-    radius_.resize(n);
-    const glm::mat4 viewProjection = view.viewProjection();
-    const float pixelScale = view.pixelScale();
-    const float footprint = kFootprint * set_.cloud.pointSize * pixelScale;
-    const glm::vec2 size(image_.width, image_.height);
-    parallel([&](int worker, int workers) {
-        for (std::size_t i = n * static_cast<std::size_t>(worker) / static_cast<std::size_t>(workers),
-                         end = n * static_cast<std::size_t>(worker + 1) / static_cast<std::size_t>(workers);
-             i < end; ++i) {
-            const glm::vec3& p = set_.cloud.positions[i];
-            const float z = glm::dot(p - view.eye, view.forward);
-            if (!(z > view.near) || z > view.far) {
-                depth_[i] = -1.0f;  // not drawn
-                continue;
-            }
-            const glm::vec4 clip = viewProjection * glm::vec4(p, 1.0f);
-            screen_[i] = glm::vec2(clip.x / clip.w * 0.5f + 0.5f, 0.5f - clip.y / clip.w * 0.5f) * size;
-            depth_[i] = z;
-            radius_[i] = std::max(kMinRadius, footprint / z);
-        }
-    });
-}
-
-// Calls emit(pixel, entry) for each pixel of the point's footprint within
-// rows [rowLo, rowHi).
-template <class Emit>
-void LdiRenderer::footprint(std::uint32_t id, std::uint8_t ldi, int rowLo, int rowHi, Emit&& emit) const {
-    if (depth_[id] < 0.0f) return;
-    const int w = image_.width;
-    const glm::vec2 s = screen_[id];
-    const float r = radius_[id], r2 = r * r, invR2 = kRimFalloff / r2;
-    // Off-screen points would overflow int; they reach no pixel anyway.
-    if (s.x + r < 0.0f || s.y + r < static_cast<float>(rowLo) || s.x - r > static_cast<float>(w) ||
-        s.y - r > static_cast<float>(rowHi))
-        return;
-    const int x0 = std::max(0, ceilToInt(s.x - r - 0.5f));
-    const int x1 = std::min(w - 1, floorToInt(s.x + r - 0.5f));
-    const int y0 = std::max(rowLo, ceilToInt(s.y - r - 0.5f));
-    const int y1 = std::min(rowHi - 1, floorToInt(s.y + r - 0.5f));
-    if (y0 > y1 || x0 > x1) return;
-    const glm::vec4 c = set_.cloud.colors[id];
-    const glm::u8vec4 colorLdi(glm::round(glm::clamp(glm::vec3(c), 0.0f, 1.0f) * 255.0f), ldi);
-    const float z = depth_[id];
-    for (int y = y0; y <= y1; ++y) {
-        const float dy = static_cast<float>(y) + 0.5f - s.y;
-        for (int x = x0; x <= x1; ++x) {
-            const float dx = static_cast<float>(x) + 0.5f - s.x;
-            const float d2 = dx * dx + dy * dy;
-            if (d2 <= r2) emit(static_cast<std::uint32_t>(y * w + x), Entry{z, c.a * (1.0f - d2 * invR2), colorLdi});
+LdiRenderer::LdiRenderer(const LdiSet& set, int threads) : set_(set), threads_(std::max(1, threads)) {
+    const auto rgb8 = [](const glm::vec4& c, std::size_t ldi) {
+        return glm::u8vec4(glm::round(glm::clamp(glm::vec3(c), 0.0f, 1.0f) * 255.0f), static_cast<std::uint8_t>(ldi));
+    };
+    const PointCloud& cloud = set_.cloud;
+    points_.positions = cloud.positions;
+    for (const glm::vec4& c : cloud.colors) {
+        points_.colors.push_back(rgb8(c, 0));
+        points_.alphas.push_back(c.a);
+    }
+    for (std::size_t l = 0; l < set_.ldis.size(); ++l) {
+        slotBase_.push_back(static_cast<std::uint32_t>(slots_.positions.size()));
+        for (std::uint32_t id : set_.ldis[l].points) {
+            slots_.positions.push_back(cloud.positions[id]);
+            slots_.colors.push_back(rgb8(cloud.colors[id], l));
+            slots_.alphas.push_back(cloud.colors[id].a);
         }
     }
 }
 
-void LdiRenderer::splat(const std::vector<std::uint32_t>& ids, std::size_t begin, std::size_t end, std::uint8_t ldi,
-                        std::vector<Splat>& out) const {
-    for (std::size_t k = begin; k < end; ++k)
-        footprint(ids[k], ldi, 0, image_.height, [&out](std::uint32_t pixel, const Entry& e) { out.push_back({pixel, e}); });
+void LdiRenderer::project(const View& view, std::size_t worker) {
+    const std::size_t n = items_->positions.size(), workers = bands_.size();
+    const glm::mat4 viewProjection = view.viewProjection();
+    const float footprint = kFootprint * set_.cloud.pointSize * view.pixelScale();
+    const glm::vec2 size(image_.width, image_.height);
+    std::vector<float>& rows = bands_[worker].rowWeight;
+    rows.assign(static_cast<std::size_t>(image_.height), 0.0f);
+    float reach0 = size.y, reach1 = 0.0f;
+    for (std::size_t i = n * worker / workers, end = n * (worker + 1) / workers; i < end; ++i) {
+        const glm::vec3& p = items_->positions[i];
+        const float z = glm::dot(p - view.eye, view.forward);
+        if (!(z > view.near) || z > view.far) {
+            projected_[i].depth = -1.0f;  // not drawn
+            continue;
+        }
+        const glm::vec4 clip = viewProjection * glm::vec4(p, 1.0f);
+        const glm::vec2 s = glm::vec2(clip.x / clip.w * 0.5f + 0.5f, 0.5f - clip.y / clip.w * 0.5f) * size;
+        const float r = std::max(kMinRadius, footprint / z);
+        projected_[i] = {s, z, r};
+        // About how many splats the point makes, in the row of its centre.
+        if (s.x + r >= 0.0f && s.x - r <= size.x) {
+            if (s.y >= 0.0f && s.y < size.y) rows[static_cast<std::size_t>(s.y)] += 1.0f + 3.0f * r * r;
+            reach0 = std::min(reach0, s.y - r - 1.0f);
+            reach1 = std::max(reach1, s.y + r + 1.0f);
+        }
+    }
+    bands_[worker].reach0 = static_cast<int>(std::clamp(reach0, 0.0f, size.y));
+    bands_[worker].reach1 = static_cast<int>(std::clamp(reach1, 0.0f, size.y));
+}
+
+// Cuts the rows into one band per thread with about equal splat weight.
+void LdiRenderer::cutBands() {
+    const std::size_t workers = bands_.size();
+    std::vector<float>& total = bands_[0].rowWeight;
+    for (std::size_t w = 1; w < workers; ++w)
+        for (std::size_t y = 0; y < total.size(); ++y) total[y] += bands_[w].rowWeight[y];
+    const float sum = std::accumulate(total.begin(), total.end(), 0.0f);
+    int reach0 = image_.height, reach1 = 0;
+    for (const Band& b : bands_) {
+        reach0 = std::min(reach0, b.reach0);
+        reach1 = std::max(reach1, b.reach1);
+    }
+    float running = 0.0f;
+    std::size_t band = 0;
+    bands_[0].y0 = 0;
+    for (int y = 0; y < image_.height && band + 1 < workers; ++y) {
+        running += total[static_cast<std::size_t>(y)];
+        if (running >= sum * static_cast<float>(band + 1) / static_cast<float>(workers)) {
+            bands_[band].y1 = y + 1;
+            bands_[++band].y0 = y + 1;
+        }
+    }
+    for (; band < workers; ++band) {
+        bands_[band].y1 = image_.height;
+        if (band + 1 < workers) bands_[band + 1].y0 = image_.height;
+    }
+    for (Band& b : bands_) {
+        b.reach0 = std::clamp(reach0, b.y0, b.y1);
+        b.reach1 = std::clamp(reach1, b.reach0, b.y1);
+    }
+}
+
+// Rows no splat reaches are cleared in bulk, not pixel by pixel.
+void LdiRenderer::clearRowsOutsideReach(const Band& band) {
+    const std::size_t w = static_cast<std::size_t>(image_.width);
+    for (const auto& [a, b] : {std::pair{band.y0, band.reach0}, std::pair{band.reach1, band.y1}}) {
+        const std::size_t p0 = static_cast<std::size_t>(a) * w, p1 = static_cast<std::size_t>(b) * w;
+        if (p0 >= p1) continue;
+        std::fill(image_.rgba.begin() + static_cast<std::ptrdiff_t>(p0 * 4), image_.rgba.begin() + static_cast<std::ptrdiff_t>(p1 * 4), 0);
+        std::fill(image_.depth.begin() + static_cast<std::ptrdiff_t>(p0), image_.depth.begin() + static_cast<std::ptrdiff_t>(p1),
+                  std::numeric_limits<float>::infinity());
+    }
+}
+
+// Calls span(y, xa, xb, dy) for each row y within [rowLo, rowHi) that the
+// point's footprint reaches, covering the pixels xa..xb of that row whose
+// centres lie in the disc (dy: the row centre's offset from the point).
+// Solving the disc for each row's ends leaves no per-pixel test, whose
+// branch mispredicted about as often as it was taken.
+template <class Span> void LdiRenderer::rowSpans(std::uint32_t id, int rowLo, int rowHi, Span&& span) const {
+    const Projected& q = projected_[id];
+    if (q.depth < 0.0f) return;
+    const int w = image_.width;
+    const glm::vec2 s = q.screen;
+    const float r = q.radius, r2 = r * r;
+    // Off-screen points would overflow int; they reach no pixel anyway.
+    if (s.x + r < 0.0f || s.y + r < static_cast<float>(rowLo) || s.x - r > static_cast<float>(w) ||
+        s.y - r > static_cast<float>(rowHi))
+        return;
+    const int y0 = std::max(rowLo, ceilToInt(s.y - r - 0.5f));
+    const int y1 = std::min(rowHi - 1, floorToInt(s.y + r - 0.5f));
+    for (int y = y0; y <= y1; ++y) {
+        const float dy = static_cast<float>(y) + 0.5f - s.y;
+        const float h2 = r2 - dy * dy;
+        if (h2 < 0.0f) continue;
+        const float half = std::sqrt(h2);
+        const int xa = std::max(0, ceilToInt(s.x - half - 0.5f));
+        const int xb = std::min(w - 1, floorToInt(s.x + half - 0.5f));
+        if (xa <= xb) span(y, xa, xb, dy);
+    }
+}
+
+// Calls emit(pixel, weight) for each pixel of the point's footprint within
+// rows [rowLo, rowHi).
+template <class Emit> void LdiRenderer::footprint(std::uint32_t id, int rowLo, int rowHi, Emit&& emit) const {
+    const float sx = projected_[id].screen.x, invR2 = kRimFalloff / (projected_[id].radius * projected_[id].radius);
+    const auto w = static_cast<std::uint32_t>(image_.width);
+    rowSpans(id, rowLo, rowHi, [&](int y, int xa, int xb, float dy) {
+        const float dy2 = dy * dy;
+        const std::uint32_t row = static_cast<std::uint32_t>(y) * w;
+        for (int x = xa; x <= xb; ++x) {
+            const float dx = static_cast<float>(x) + 0.5f - sx;
+            emit(row + static_cast<std::uint32_t>(x), 1.0f - (dx * dx + dy2) * invR2);
+        }
+    });
 }
 
 // One stream already in back-to-front order needs no buffers: splats are
 // composited as they come. Each thread owns a band of rows and walks the
 // whole stream, which keeps the order without any locking.
-void LdiRenderer::compositeInOrder(const std::vector<std::uint32_t>& ids) {
-    const std::size_t pixels = static_cast<std::size_t>(image_.width) * static_cast<std::size_t>(image_.height);
-    image_.rgba.resize(pixels * 4);
-    image_.depth.resize(pixels);
-    accumulators_.resize(pixels);
-    std::vector<std::size_t> counts(static_cast<std::size_t>(threads_), 0);
-    parallel([&](int worker, int workers) {
-        const int y0 = image_.height * worker / workers, y1 = image_.height * (worker + 1) / workers;
-        const std::size_t p0 = static_cast<std::size_t>(y0) * static_cast<std::size_t>(image_.width);
-        const std::size_t p1 = static_cast<std::size_t>(y1) * static_cast<std::size_t>(image_.width);
-        std::fill(accumulators_.begin() + static_cast<std::ptrdiff_t>(p0), accumulators_.begin() + static_cast<std::ptrdiff_t>(p1),
-                  Accumulator{});
-        std::size_t n = 0;
-        for (std::uint32_t id : ids)
-            footprint(id, 0, y0, y1, [&](std::uint32_t pixel, const Entry& e) {
-                accumulators_[pixel].over(e.colorLdi, e.alpha, e.depth);
-                ++n;
+void LdiRenderer::compositeInOrder(Band& band, const std::vector<std::uint32_t>& ids) {
+    clearRowsOutsideReach(band);
+    const std::size_t w = static_cast<std::size_t>(image_.width);
+    const std::size_t p0 = static_cast<std::size_t>(band.reach0) * w, p1 = static_cast<std::size_t>(band.reach1) * w;
+    band.accumulators.assign(p1 - p0, Accumulator{});
+    Accumulator* acc = band.accumulators.data() - p0;
+    std::size_t n = 0;
+    for (std::uint32_t id : ids) {
+        const glm::u8vec4 c = items_->colors[id];
+        const float a = items_->alphas[id], z = projected_[id].depth;
+        footprint(id, band.reach0, band.reach1, [&](std::uint32_t pixel, float weight) {
+            acc[pixel].over(c, a * weight, z);
+            ++n;
+        });
+    }
+    band.splats = n;
+    for (std::size_t p = p0; p < p1; ++p) store(p, acc[p]);
+}
+
+// The band's n projection buffers: count each pixel's splats, turn the
+// counts into offsets, then write every LDI's stream in order, which leaves
+// each pixel's entries grouped by LDI and back to front within each.
+void LdiRenderer::fillBuffers(Band& band) {
+    const std::size_t w = static_cast<std::size_t>(image_.width);
+    const std::size_t p0 = static_cast<std::size_t>(band.reach0) * w, p1 = static_cast<std::size_t>(band.reach1) * w;
+    // Count with a difference array: +1 where a row span starts, -1 after
+    // it ends; one running sum then gives each pixel's count, a second its offset.
+    band.start.assign(p1 - p0 + 1, 0);
+    std::int32_t* diff = reinterpret_cast<std::int32_t*>(band.start.data()) - p0;
+    for (std::size_t l = 0; l < set_.ldis.size(); ++l)
+        for (std::uint32_t id : order_[l])
+            rowSpans(id, band.reach0, band.reach1, [diff, w](int y, int xa, int xb, float) {
+                const std::size_t row = static_cast<std::size_t>(y) * w;
+                ++diff[row + static_cast<std::size_t>(xa)];
+                --diff[row + static_cast<std::size_t>(xb) + 1];
             });
-        counts[static_cast<std::size_t>(worker)] = n;
-        for (std::size_t p = p0; p < p1; ++p) store(p, accumulators_[p]);
-    });
-    splatCount_ = 0;
-    for (std::size_t n : counts) splatCount_ += n;
+    std::int32_t count = 0;
+    std::uint32_t offset = 0;
+    for (std::size_t i = 0; i <= p1 - p0; ++i) {
+        count += static_cast<std::int32_t>(band.start[i]);
+        band.start[i] = offset;
+        offset += static_cast<std::uint32_t>(count);
+    }
+    band.splats = offset;
+    if (band.entries.size() < band.splats) band.entries.resize(band.splats);
+    // Cursors: each pixel's start, advanced as entries land; shifted back after.
+    std::uint32_t* cursor = band.start.data() - p0;
+    Entry* entries = band.entries.data();
+    for (std::size_t l = 0; l < set_.ldis.size(); ++l)
+        for (std::uint32_t id : order_[l]) {
+            const glm::u8vec4 c = items_->colors[id];
+            const float a = items_->alphas[id], z = projected_[id].depth;
+            footprint(id, band.reach0, band.reach1,
+                      [&](std::uint32_t pixel, float weight) { entries[cursor[pixel]++] = Entry{z, a * weight, c}; });
+        }
+    for (std::size_t p = p1 - p0; p > 0; --p) band.start[p] = band.start[p - 1];
+    band.start[0] = 0;
+}
+
+// Per pixel, the heads of its LDIs' runs are merged by depth, largest first.
+void LdiRenderer::mergeBuffers(Band& band) {
+    struct Run {
+        std::uint32_t next, end;
+    };
+    std::vector<Run> runs;
+    runs.reserve(set_.ldis.size());
+    clearRowsOutsideReach(band);
+    const std::size_t w = static_cast<std::size_t>(image_.width);
+    const std::size_t p0 = static_cast<std::size_t>(band.reach0) * w, p1 = static_cast<std::size_t>(band.reach1) * w;
+    const Entry* e = band.entries.data();
+    for (std::size_t p = p0; p < p1; ++p) {
+        const std::uint32_t begin = band.start[p - p0], end = band.start[p - p0 + 1];
+        if (begin == end) {
+            clearPixel(p);
+            continue;
+        }
+        Accumulator acc;
+        if (e[begin].colorLdi.w == e[end - 1].colorLdi.w) {
+            // One LDI reaches this pixel: its run is already back to front.
+            for (std::uint32_t k = begin; k < end; ++k) acc.over(e[k].colorLdi, e[k].alpha, e[k].depth);
+        } else {
+            runs.clear();
+            std::uint32_t first = begin;
+            for (std::uint32_t k = begin + 1; k <= end; ++k)
+                if (k == end || e[k].colorLdi.w != e[k - 1].colorLdi.w) {
+                    runs.push_back({first, k});
+                    first = k;
+                }
+            while (runs.size() > 1) {
+                std::size_t pick = 0;
+                float deepest = e[runs[0].next].depth;
+                for (std::size_t r = 1; r < runs.size(); ++r)
+                    if (e[runs[r].next].depth > deepest) deepest = e[runs[r].next].depth, pick = r;
+                const Entry& head = e[runs[pick].next];
+                acc.over(head.colorLdi, head.alpha, head.depth);
+                if (++runs[pick].next == runs[pick].end) {
+                    runs[pick] = runs.back();
+                    runs.pop_back();
+                }
+            }
+            for (std::uint32_t k = runs[0].next; k < runs[0].end; ++k) acc.over(e[k].colorLdi, e[k].alpha, e[k].depth);
+        }
+        store(p, acc);
+    }
 }
 
 inline void LdiRenderer::store(std::size_t p, const Accumulator& acc) {
@@ -147,116 +292,78 @@ inline void LdiRenderer::store(std::size_t p, const Accumulator& acc) {
     image_.depth[p] = acc.depth;
 }
 
-void LdiRenderer::gather(std::size_t streams) {
-    const std::size_t pixels = static_cast<std::size_t>(image_.width) * static_cast<std::size_t>(image_.height);
-    pixelStart_.assign(pixels + 1, 0);
-    std::size_t total = 0;
-    for (std::size_t s = 0; s < streams; ++s) {
-        total += splats_[s].size();
-        for (const Splat& sp : splats_[s]) ++pixelStart_[sp.pixel + 1];
-    }
-    std::partial_sum(pixelStart_.begin(), pixelStart_.end(), pixelStart_.begin());
-    sorted_.resize(total);
-    // Stable: within a pixel, stream 0's splats keep their order, then stream 1's, ...
-    for (std::size_t s = 0; s < streams; ++s)
-        for (const Splat& sp : splats_[s]) sorted_[pixelStart_[sp.pixel]++] = sp.entry;
-    // Each start now holds its pixel's end; shift back.
-    for (std::size_t p = pixels; p > 0; --p) pixelStart_[p] = pixelStart_[p - 1];
-    pixelStart_[0] = 0;
+inline void LdiRenderer::clearPixel(std::size_t p) {
+    std::uint8_t* out = &image_.rgba[p * 4];
+    out[0] = out[1] = out[2] = out[3] = 0;
+    image_.depth[p] = std::numeric_limits<float>::infinity();
 }
 
-void LdiRenderer::compositeRows(int y0, int y1, bool merge) {
-    struct Run {
-        std::uint32_t next, end;
-    };
-    std::vector<Run> runs;
-    runs.reserve(set_.ldis.size());
-    for (std::size_t p = static_cast<std::size_t>(y0) * static_cast<std::size_t>(image_.width),
-                     last = static_cast<std::size_t>(y1) * static_cast<std::size_t>(image_.width);
-         p < last; ++p) {
-        const std::uint32_t begin = pixelStart_[p], end = pixelStart_[p + 1];
-        std::uint8_t* out = &image_.rgba[p * 4];
-        if (begin == end) {
-            out[0] = out[1] = out[2] = out[3] = 0;
-            image_.depth[p] = std::numeric_limits<float>::infinity();
-            continue;
-        }
-        Accumulator acc;
-        if (!merge) {
-            for (std::uint32_t k = begin; k < end; ++k)
-                acc.over(sorted_[k].colorLdi, sorted_[k].alpha, sorted_[k].depth);
-        } else {
-            // The n projection buffers' runs for this pixel, each back to front.
-            runs.clear();
-            std::uint32_t start = begin;
-            for (std::uint32_t k = begin + 1; k <= end; ++k) {
-                if (k == end || sorted_[k].colorLdi.w != sorted_[k - 1].colorLdi.w) {
-                    runs.push_back({start, k});
-                    start = k;
-                }
-            }
-            while (!runs.empty()) {
-                std::size_t pick = 0;
-                float deepest = sorted_[runs[0].next].depth;
-                for (std::size_t r = 1; r < runs.size(); ++r) {
-                    const float d = sorted_[runs[r].next].depth;
-                    if (d > deepest) deepest = d, pick = r;
-                }
-                const Entry& e = sorted_[runs[pick].next];
-                acc.over(e.colorLdi, e.alpha, e.depth);
-                if (++runs[pick].next == runs[pick].end) {
-                    runs[pick] = runs.back();
-                    runs.pop_back();
-                }
-            }
-        }
-        store(p, acc);
-    }
-}
-
-void LdiRenderer::composite(bool merge) {
+// One frame in one parallel region: project, (order or sort), bands.
+void LdiRenderer::frame(const View& view, bool depthSorted) {
+    items_ = depthSorted ? &points_ : &slots_;
+    const std::size_t n = items_->positions.size();
+    image_.width = view.viewport.x;
+    image_.height = view.viewport.y;
     const std::size_t pixels = static_cast<std::size_t>(image_.width) * static_cast<std::size_t>(image_.height);
     image_.rgba.resize(pixels * 4);
     image_.depth.resize(pixels);
-    parallel([&](int worker, int workers) {
-        compositeRows(image_.height * worker / workers, image_.height * (worker + 1) / workers, merge);
-    });
+    projected_.resize(n);
+    const std::size_t ldis = set_.ldis.size();
+    order_.resize(std::max<std::size_t>(order_.size(), depthSorted ? 1 : ldis));
+    bands_.resize(static_cast<std::size_t>(threads_));
+    const bool merge = !depthSorted && ldis > 1;
+    if (depthSorted) {
+        // The barrier's completion step must not throw: allocate here.
+        byDepth_.reserve(n);
+        order_[0].reserve(n);
+    }
+
+    auto afterProjection = [&]() noexcept {
+        cutBands();
+        if (!depthSorted) return;
+        // The reference: every drawn point sorted by view depth, farthest first.
+        byDepth_.clear();
+        for (std::size_t i = 0; i < n; ++i)
+            if (projected_[i].depth >= 0.0f) byDepth_.emplace_back(projected_[i].depth, static_cast<std::uint32_t>(i));
+        std::sort(byDepth_.begin(), byDepth_.end(), std::greater<>());
+        order_[0].clear();
+        for (const auto& [z, id] : byDepth_) order_[0].push_back(id);
+    };
+    std::barrier projected(threads_, afterProjection);
+    std::barrier ordered(threads_);
+    auto work = [&](std::size_t worker) {
+        project(view, worker);
+        projected.arrive_and_wait();
+        if (!depthSorted) {
+            for (std::size_t l = worker; l < ldis; l += bands_.size()) {
+                order_[l].clear();
+                appendSlotsBackToFront(set_.ldis[l], view.eye, slotBase_[l], order_[l]);
+            }
+            ordered.arrive_and_wait();
+        }
+        Band& band = bands_[worker];
+        if (merge) {
+            fillBuffers(band);
+            mergeBuffers(band);
+        } else {
+            compositeInOrder(band, order_[0]);
+        }
+    };
+    std::vector<std::thread> helpers;
+    for (std::size_t t = 1; t < bands_.size(); ++t) helpers.emplace_back(work, t);
+    work(0);
+    for (std::thread& h : helpers) h.join();
+    splatCount_ = 0;
+    for (const Band& b : bands_) splatCount_ += b.splats;
 }
 
 const PointImage& LdiRenderer::render(const View& view) {
-    project(view);
-    const std::size_t n = set_.ldis.size();
-    order_.resize(std::max<std::size_t>(order_.size(), n));
-    splats_.resize(std::max<std::size_t>(splats_.size(), n));
-    parallel([&](int worker, int workers) {
-        for (std::size_t l = static_cast<std::size_t>(worker); l < n; l += static_cast<std::size_t>(workers)) {
-            order_[l].clear();
-            appendBackToFront(set_.ldis[l], view.eye, order_[l]);
-            if (n == 1) continue;
-            splats_[l].clear();
-            splat(order_[l], 0, order_[l].size(), static_cast<std::uint8_t>(l), splats_[l]);
-        }
-    });
-    if (n == 1) {
-        compositeInOrder(order_[0]);
-        return image_;
-    }
-    gather(n);
-    splatCount_ = sorted_.size();
-    composite(true);
+    frame(view, false);
     return image_;
 }
 
 const PointImage& LdiRenderer::renderDepthSorted(const View& view) {
-    project(view);
-    byDepth_.clear();
-    for (std::size_t i = 0; i < depth_.size(); ++i)
-        if (depth_[i] >= 0.0f) byDepth_.emplace_back(depth_[i], static_cast<std::uint32_t>(i));
-    std::sort(byDepth_.begin(), byDepth_.end(), std::greater<>());
-    order_.resize(std::max<std::size_t>(order_.size(), 1));
-    order_[0].clear();
-    for (const auto& [z, id] : byDepth_) order_[0].push_back(id);
-    compositeInOrder(order_[0]);
+    frame(view, true);
     return image_;
 }
 

@@ -14,21 +14,30 @@
 // 0.71 px, so that every point reaches a pixel centre), weighted with a
 // quadratic falloff from 1 at the centre to 0.4 at its rim.
 //
-// Layout: the n projection buffers are stored interleaved, not side by
-// side: for each output pixel, LDI 0's entries, then LDI 1's, ... each run
-// already back to front. An entry carries the point's depth, weighted alpha
-// and colour instead of its id, so the merge never reads the point arrays.
-// It is the same data, but one stable counting sort builds it and the merge
-// reads it from one place.
+// Layout: the image is cut into one band of rows per thread, the cut
+// placed so that each band gets about the same number of splats (from a
+// histogram of the projected points). Within its band a thread owns the n
+// projection buffers, stored interleaved: per output pixel, LDI 0's entries,
+// then LDI 1's, ... each run already back to front. They are filled in two
+// passes over the LDIs' McMillan streams, one counting each pixel's splats
+// (per footprint row, into a difference array) and one writing them in
+// place, instead of writing a list of splats and sorting it by pixel. The
+// points are kept in LDI slot order, so the McMillan walk reads their
+// projections almost sequentially. An entry carries
+// the point's depth, weighted alpha and colour instead of its id, so the
+// merge never reads the point arrays. A pixel whose entries all come from
+// one LDI is composited straight through: its merge is the identity.
 //
 // With one LDI (and for the depth-sorted reference) there is one stream,
 // already back to front, so its splats are composited as they come and
-// the buffers are skipped: the merge of a single buffer is the identity.
+// the buffers are skipped.
 //
-// Two threads: LDIs are ordered and splatted in parallel, and the merge
-// (or the single stream's compositing) splits the image's rows. The
-// renderer keeps its buffers between frames, so it allocates nothing once
-// warm; one renderer serves one caller thread.
+// Two threads by default: each frame is one parallel region (projection,
+// then McMillan order with LDIs spread over the threads, then the bands).
+// The renderer keeps its buffers between frames, so it allocates nothing
+// once warm; one renderer serves one caller thread. It copies the cloud's
+// positions and colours once, when constructed (the point size is read
+// every frame).
 
 #include "graph/Ldi.hpp"
 #include "graph/View.hpp"
@@ -67,10 +76,6 @@ private:
         float alpha;          // the point's alpha times the footprint weight
         glm::u8vec4 colorLdi; // straight RGB8, and the LDI it came from in .w
     };
-    struct Splat {
-        std::uint32_t pixel;
-        Entry entry;
-    };
     struct Accumulator {
         glm::vec3 color{0.0f};  // premultiplied
         float alpha = 0.0f;
@@ -82,30 +87,55 @@ private:
             depth = z < depth ? z : depth;
         }
     };
+    // One thread's rows and its share of the projection buffers.
+    struct Band {
+        int y0 = 0, y1 = 0;
+        int reach0 = 0, reach1 = 0;  // rows of the band any splat reaches (projection: of its points)
+        std::vector<std::uint32_t> start;  // per pixel of the band, + 1: offsets into entries
+        std::vector<Entry> entries;
+        std::vector<Accumulator> accumulators;  // single-stream path
+        std::vector<float> rowWeight;           // projection's histogram, per image row
+        std::size_t splats = 0;
+    };
+    enum class Streams { Single, Merged };
 
-    void project(const View& view);
-    void splat(const std::vector<std::uint32_t>& ids, std::size_t begin, std::size_t end, std::uint8_t ldi,
-               std::vector<Splat>& out) const;
-    template <class Emit> void footprint(std::uint32_t id, std::uint8_t ldi, int rowLo, int rowHi, Emit&& emit) const;
-    void compositeInOrder(const std::vector<std::uint32_t>& ids);
+    void frame(const View& view, bool depthSorted);
+    void project(const View& view, std::size_t worker);
+    void cutBands();
+    template <class Span> void rowSpans(std::uint32_t id, int rowLo, int rowHi, Span&& span) const;
+    template <class Emit> void footprint(std::uint32_t id, int rowLo, int rowHi, Emit&& emit) const;
+    void compositeInOrder(Band& band, const std::vector<std::uint32_t>& ids);
+    void fillBuffers(Band& band);
+    void mergeBuffers(Band& band);
     void store(std::size_t pixel, const Accumulator& acc);
-    void gather(std::size_t streams);
-    void composite(bool merge);
-    void compositeRows(int y0, int y1, bool merge);
-    template <class F> void parallel(F&& f);
+    void clearPixel(std::size_t pixel);
+    void clearRowsOutsideReach(const Band& band);
 
     const LdiSet& set_;
     int threads_;
     PointImage image_;
-    // Per frame, per point: screen position, view depth, footprint radius.
-    std::vector<glm::vec2> screen_;
-    std::vector<float> depth_, radius_;
-    std::vector<std::vector<std::uint32_t>> order_;   // per LDI (or half of the reference), back to front
-    std::vector<std::vector<Splat>> splats_;          // per stream, in drawing order
-    std::vector<std::uint32_t> pixelStart_;
-    std::vector<Entry> sorted_;
+    // What is drawn, converted once: the points in LDI slot order (LDI 0's
+    // ldi.points, then LDI 1's, ...), so that a McMillan walk reads them
+    // almost sequentially, and in id order for the depth-sorted reference.
+    // Colours are straight RGB8 with the LDI in .w.
+    struct Items {
+        std::vector<glm::vec3> positions;
+        std::vector<glm::u8vec4> colors;
+        std::vector<float> alphas;
+    };
+    Items slots_, points_;
+    std::vector<std::uint32_t> slotBase_;  // per LDI, its first slot
+    const Items* items_ = nullptr;         // this frame's
+    // Per frame, per item: screen position, view depth (< 0: not drawn), footprint radius.
+    struct Projected {
+        glm::vec2 screen;
+        float depth;
+        float radius;
+    };
+    std::vector<Projected> projected_;
+    std::vector<std::vector<std::uint32_t>> order_;  // items back to front, per LDI (the reference: one)
     std::vector<std::pair<float, std::uint32_t>> byDepth_;
-    std::vector<Accumulator> accumulators_;
+    std::vector<Band> bands_;
     std::size_t splatCount_ = 0;
 };
 

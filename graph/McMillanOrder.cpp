@@ -52,7 +52,10 @@ Epipole epipoleOf(const LdiCamera& camera, const glm::vec3& eye) {
     return e;
 }
 
-void appendBackToFront(const Ldi& ldi, const glm::vec3& eye, std::vector<std::uint32_t>& out) {
+namespace {
+
+// The walk itself; put(k) receives the LDI slots (indices into ldi.points).
+template <class Put> void walkBackToFront(const Ldi& ldi, const glm::vec3& eye, Put&& put) {
     const LdiCamera& cam = ldi.camera;
     const Epipole e = epipoleOf(cam, eye);
     AxisRun columns[2], rows[2];
@@ -81,11 +84,11 @@ void appendBackToFront(const Ldi& ldi, const glm::vec3& eye, std::vector<std::ui
                             std::upper_bound(ldi.rayDepth.begin() + begin, ldi.rayDepth.begin() + end, nearest) -
                             ldi.rayDepth.begin());
                         while (lo < split && hi > split) {
-                            if (nearest - ldi.rayDepth[lo] >= ldi.rayDepth[hi - 1] - nearest) out.push_back(ldi.points[lo++]);
-                            else out.push_back(ldi.points[--hi]);
+                            if (nearest - ldi.rayDepth[lo] >= ldi.rayDepth[hi - 1] - nearest) put(lo++);
+                            else put(--hi);
                         }
-                        while (lo < split) out.push_back(ldi.points[lo++]);
-                        while (hi > split) out.push_back(ldi.points[--hi]);
+                        while (lo < split) put(lo++);
+                        while (hi > split) put(--hi);
                     }
                     if (x == cs.last) break;
                 }
@@ -93,6 +96,16 @@ void appendBackToFront(const Ldi& ldi, const glm::vec3& eye, std::vector<std::ui
             }
         }
     }
+}
+
+} // namespace
+
+void appendBackToFront(const Ldi& ldi, const glm::vec3& eye, std::vector<std::uint32_t>& out) {
+    walkBackToFront(ldi, eye, [&](std::uint32_t k) { out.push_back(ldi.points[k]); });
+}
+
+void appendSlotsBackToFront(const Ldi& ldi, const glm::vec3& eye, std::uint32_t base, std::vector<std::uint32_t>& out) {
+    walkBackToFront(ldi, eye, [&](std::uint32_t k) { out.push_back(base + k); });
 }
 
 } // namespace arcomp

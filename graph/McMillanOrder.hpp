@@ -38,5 +38,9 @@ Epipole epipoleOf(const LdiCamera& camera, const glm::vec3& eye);
 
 // Appends the LDI's point ids in back-to-front order as seen from `eye`.
 void appendBackToFront(const Ldi& ldi, const glm::vec3& eye, std::vector<std::uint32_t>& out);
+// The same order as LDI slots (positions in ldi.points) plus `base`: a
+// renderer that keeps its per-point data in slot order reads it almost
+// sequentially along this walk.
+void appendSlotsBackToFront(const Ldi& ldi, const glm::vec3& eye, std::uint32_t base, std::vector<std::uint32_t>& out);
 
 } // namespace arcomp

@@ -30,7 +30,7 @@ LodNode lodSettings(const ObjectConfig& o) {
 } // namespace
 
 void buildScene(const StationConfig& cfg, Scene& scene, std::vector<std::string>& warnings, GroupingNodes* grouping,
-                LodTable* lods, std::vector<ObjectMotion>* motions) {
+                LodTable* lods, std::vector<ObjectMotion>* motions, PointCloudNodes* clouds) {
     GroupingNodes ownGrouping;
     LodTable ownLods;
     LodTable& lodTable = lods ? *lods : ownLods;
@@ -82,6 +82,7 @@ void buildScene(const StationConfig& cfg, Scene& scene, std::vector<std::string>
             motion.groupingObject = static_cast<std::uint32_t>(it - objects.begin());
         }
     }
+    if (clouds) addPointClouds(cfg.pointClouds, cfg.file, scene, *clouds, warnings);
 }
 
 SceneFile loadSceneFile(const fs::path& file) {
@@ -90,7 +91,7 @@ SceneFile loadSceneFile(const fs::path& file) {
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
     if (ext == ".yaml" || ext == ".yml") {
         const StationConfig cfg = loadStationConfig(file);
-        buildScene(cfg, out.scene, out.warnings, &out.grouping, &out.lods);
+        buildScene(cfg, out.scene, out.warnings, &out.grouping, &out.lods, nullptr, &out.pointClouds);
         if (cfg.camera.given) out.camera = cameraView(cfg.camera);
         out.background = cfg.render.background;
         return out;

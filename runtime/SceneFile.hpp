@@ -8,6 +8,7 @@
 #include "graph/GroupingNodes.hpp"
 #include "graph/Lod.hpp"
 #include "graph/ObjectMotion.hpp"
+#include "graph/PointCloudNodes.hpp"
 #include "graph/Scene.hpp"
 #include "graph/View.hpp"
 #include "runtime/StationConfig.hpp"
@@ -26,6 +27,8 @@ struct SceneFile {
     // Side tables of the grouping section's nodes (empty without one).
     GroupingNodes grouping;
     LodTable lods;
+    // The point_clouds section's clouds (empty without one).
+    PointCloudNodes pointClouds;
 };
 
 SceneFile loadSceneFile(const std::filesystem::path& file);
@@ -33,9 +36,11 @@ SceneFile loadSceneFile(const std::filesystem::path& file);
 // With tables, the config's grouping section (if any) fills them; without,
 // grouped content is still added and draws at full detail.
 // Objects with `lod` get an LOD node per mesh (levels generated at load)
-// in `lods`; objects with `motion` are listed in `motions`.
+// in `lods`; objects with `motion` are listed in `motions`. With a cloud
+// table, the point_clouds section's clouds are added; without, none.
 void buildScene(const StationConfig& cfg, Scene& scene, std::vector<std::string>& warnings,
-                GroupingNodes* grouping = nullptr, LodTable* lods = nullptr, std::vector<ObjectMotion>* motions = nullptr);
+                GroupingNodes* grouping = nullptr, LodTable* lods = nullptr, std::vector<ObjectMotion>* motions = nullptr,
+                PointCloudNodes* clouds = nullptr);
 View cameraView(const CameraConfig& camera);
 
 } // namespace arcomp

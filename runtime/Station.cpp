@@ -5,6 +5,7 @@
 #include "runtime/CalibrationFile.hpp"
 #include "runtime/ImageFile.hpp"
 #include "runtime/ImpostorBaker.hpp"
+#include "runtime/PointCloudLayer.hpp"
 #include "runtime/SceneFile.hpp"
 #include "video/MatteSpec.hpp"
 #include "video/VideoError.hpp"
@@ -70,7 +71,7 @@ Station::Station(const StationConfig& cfg, StationInput input) : cfg_(cfg), inpu
                                      "no frame to start from");
     const glm::ivec2 size(frame_.cols, frame_.rows);
 
-    buildScene(cfg_, scene_, warnings_, &grouping_, &lods_, &motions_);
+    buildScene(cfg_, scene_, warnings_, &grouping_, &lods_, &motions_, &pointClouds_);
     scene_.update();
     // The CG camera is the video camera: its pose and field of view from the
     // config, its image size the video's.
@@ -93,6 +94,7 @@ Station::Station(const StationConfig& cfg, StationInput input) : cfg_(cfg), inpu
 
     cgRenderer_ = std::make_unique<Renderer>();
     holdoutRenderer_ = std::make_unique<Renderer>();
+    if (pointClouds_.size()) cloudLayer_ = std::make_unique<PointCloudLayer>();
     compositor_ = std::make_unique<Compositor>(size);
 
     const OutputConfig& out = cfg_.compositing.output;
@@ -274,6 +276,7 @@ bool Station::frame() {
     stats_.compositeMs = msSince(t);
 
     cgRenderer_->draw(scene_, cgList_, view_, {.clearColor = std::nullopt});
+    if (cloudLayer_) cloudLayer_->draw(scene_, pointClouds_, view_);
     glFinish();
     stats_.cgTriangles = cgRenderer_->trianglesDrawn();
     stats_.renderMs = msSince(t);

@@ -26,6 +26,7 @@
 #include "graph/GroupingNodes.hpp"
 #include "graph/Lod.hpp"
 #include "graph/ObjectMotion.hpp"
+#include "graph/PointCloudNodes.hpp"
 #include "graph/Scene.hpp"
 #include "graph/SilhouetteNodes.hpp"
 #include "runtime/Compositor.hpp"
@@ -45,6 +46,8 @@
 #include <vector>
 
 namespace arcomp {
+
+class PointCloudLayer;
 
 // Where frames come from: a grabber pulled frame by frame (replay: every
 // frame, in order) or a live source whose newest frame is taken.
@@ -155,11 +158,13 @@ private:
     std::unique_ptr<GazeSource> gaze_;
     // Each CG mesh and its holdout twin's placing transform, so twins follow movers.
     std::vector<std::pair<NodeId, NodeId>> holdoutPlaces_;
+    PointCloudNodes pointClouds_;
     Scene holdoutScene_;
     SilhouetteNodes silhouettes_;
     View view_;
     DrawList cgList_, holdoutCandidates_, holdoutList_;
     std::unique_ptr<Renderer> cgRenderer_, holdoutRenderer_;
+    std::unique_ptr<PointCloudLayer> cloudLayer_;  // only with point clouds
     std::unique_ptr<Compositor> compositor_;
     std::unique_ptr<RenderTarget> holdoutMask_;  // only for readHoldout()
     std::unique_ptr<VideoFileWriter> video_;

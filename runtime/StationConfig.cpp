@@ -129,6 +129,7 @@ StationConfig loadStationConfig(const std::filesystem::path& file) {
     readBudgetConfig(root, cfg.budget);
     readGroupingConfig(root, cfg.grouping);
     readGazeConfig(root, cfg.gaze);
+    readPointCloudConfig(root, cfg.pointClouds);
     root.finish();
     report.throwIfAny();
     return cfg;

@@ -12,6 +12,7 @@
 #include "runtime/BudgetConfig.hpp"
 #include "runtime/GroupingConfig.hpp"
 #include "runtime/GazeConfig.hpp"
+#include "runtime/PointCloudConfig.hpp"
 
 #include <glm/glm.hpp>
 
@@ -72,6 +73,7 @@ struct StationConfig {
     BudgetConfig budget;
     GroupingConfig grouping;
     GazeConfig gaze;
+    PointCloudConfig pointClouds;
 };
 
 StationConfig loadStationConfig(const std::filesystem::path& file);

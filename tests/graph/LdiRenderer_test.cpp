@@ -106,3 +106,23 @@ TEST(LdiRenderer, singleLdiCompositesItsMcMillanStreamDirectly) {
         EXPECT_EQ(renderer.lastSplatCount(), 3u);
     }
 }
+
+TEST(LdiRenderer, pixelsNoLongerReachedAreClearedInTheNextFrame) {
+    for (const auto owner : {std::array<std::uint8_t, 3>{0, 0, 0}, std::array<std::uint8_t, 3>{0, 1, 0}}) {
+        const LdiSet set = threeOnTheAxis(owner);
+        for (int threads : {1, 2}) {
+            LdiRenderer renderer(set, threads);
+            ASSERT_EQ(pixel(renderer.render(kEye), 4, 4).a, 223);
+            // Looking lower moves the points up to the first rows.
+            const View lower = View::lookAt({0, -2, 10}, {0, -2, 0}, {0, 1, 0}, 30.0f, {9, 9}, 0.1f, 100.0f);
+            const PointImage& img = renderer.render(lower);
+            EXPECT_EQ(pixel(img, 4, 4), glm::u8vec4(0)) << threads << " threads, owners " << int(owner[1]);
+            EXPECT_TRUE(std::isinf(img.depth[4 * 9 + 4]));
+            std::size_t top = 0;
+            for (int y = 0; y < 3; ++y)
+                for (int x = 0; x < 9; ++x) top += pixel(img, x, y).a != 0;
+            EXPECT_GT(top, 0u);
+            EXPECT_EQ(img.coveredPixels(), top) << "nothing left below the first rows";
+        }
+    }
+}

@@ -23,7 +23,8 @@ int check(const std::string& file) {
     }
     Scene scene;
     std::vector<std::string> problems;
-    buildScene(cfg, scene, problems);
+    PointCloudNodes clouds;  // so that voxel files are read too
+    buildScene(cfg, scene, problems, nullptr, nullptr, nullptr, &clouds);
     for (const std::string& p : problems) std::cerr << file << ": " << p << "\n";
     if (!problems.empty()) {
         std::cerr << file << ": " << problems.size() << " problem(s); the station would run without those objects\n";

@@ -5,6 +5,7 @@
 #include "runtime/GlContext.hpp"
 #include "runtime/ImageFile.hpp"
 #include "runtime/ImpostorBaker.hpp"
+#include "runtime/PointCloudLayer.hpp"
 #include "runtime/RenderTarget.hpp"
 #include "runtime/Renderer.hpp"
 #include "runtime/SceneFile.hpp"
@@ -13,6 +14,7 @@
 
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace arcomp {
 namespace {
@@ -55,12 +57,18 @@ int render(const RenderOptions& o) {
     DrawList list;
     select(scene, view, {.shading = *shading, .lod = file.lods.size() ? &file.lods : nullptr, .grouping = &file.grouping}, list);
     renderer.draw(scene, list, view, {.clearColor = file.background});
+    std::optional<PointCloudLayer> clouds;
+    if (file.pointClouds.size()) {
+        clouds.emplace();
+        clouds->draw(scene, file.pointClouds, view);
+    }
     const Image image = target.read();
     writePng(o.out, image);
     std::size_t covered = 0;
     for (std::size_t i = 3; i < image.rgba.size(); i += 4) covered += image.rgba[i] > 0;
     std::cout << "wrote " << o.out << ": " << size.x << "x" << size.y << ", " << list.items.size() << " meshes, "
-              << renderer.trianglesDrawn() << " triangles, " << toString(context->api()) << ", "
+              << renderer.trianglesDrawn() << " triangles, "
+              << (clouds ? std::to_string(clouds->cloudsDrawn()) + " point clouds, " : std::string()) << toString(context->api()) << ", "
               << 100.0 * static_cast<double>(covered) / static_cast<double>(size.x * size.y) << "% covered\n";
     return kExitOk;
 }

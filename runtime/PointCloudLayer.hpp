@@ -1,0 +1,58 @@
+#pragma once
+// Shows the scene's PointCloud nodes as layers over the CG: each visible
+// cloud is rendered on the CPU by its LdiRenderer (McMillan order, merge
+// of its LDIs), uploaded as a premultiplied texture with its depth image,
+// and drawn over the bound framebuffer with "over", depth-tested against
+// what the Renderer left in the depth buffer.
+//
+//   renderer.draw(scene, list, view, settings);   // CG first
+//   layer.draw(scene, clouds, view);              // then the clouds
+//
+// Depth: every layer pixel carries the view depth of the nearest point
+// drawn there, written as gl_FragDepth. A CG surface in front of that
+// point hides the pixel; one behind it shows through the cloud's
+// translucency. A CG surface between a pixel's points is treated as behind
+// all of them: one depth per pixel is as well as a flat image can do.
+// The layer writes no depth, so clouds are drawn after all CG, blended CG
+// included, and farthest cloud first.
+//
+// A cloud under a transform is drawn with the view taken into its local
+// space; the transform must be rigid with a uniform scale.
+
+#include "graph/LdiRenderer.hpp"
+#include "graph/PointCloudNodes.hpp"
+#include "graph/View.hpp"
+#include "runtime/ShaderProgram.hpp"
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace arcomp {
+
+class PointCloudLayer {
+public:
+    explicit PointCloudLayer(int threads = 2);
+    ~PointCloudLayer();
+    PointCloudLayer(const PointCloudLayer&) = delete;
+    PointCloudLayer& operator=(const PointCloudLayer&) = delete;
+
+    // Needs a current context; call scene.update() first.
+    void draw(const Scene& scene, const PointCloudNodes& clouds, const View& view);
+
+    std::size_t cloudsDrawn() const { return cloudsDrawn_; }
+    std::size_t splatsDrawn() const { return splatsDrawn_; }
+
+private:
+    LdiRenderer& rendererFor(const LdiSet& set);
+
+    int threads_;
+    std::optional<ShaderProgram> program_;
+    GLuint vao_ = 0, color_ = 0, depth_ = 0;
+    glm::ivec2 textureSize_{0, 0};
+    std::vector<std::pair<const LdiSet*, std::unique_ptr<LdiRenderer>>> renderers_;
+    std::vector<float> ndcDepth_;
+    std::size_t cloudsDrawn_ = 0, splatsDrawn_ = 0;
+};
+
+} // namespace arcomp

@@ -1,0 +1,85 @@
+// The station config's point_clouds section and the cloud nodes it adds.
+
+#include "runtime/ConfigError.hpp"
+#include "runtime/SceneFile.hpp"
+#include "runtime/StationConfig.hpp"
+
+#include "../support/TempDir.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+using namespace arcomp;
+using arcomp::test::TempDir;
+
+namespace {
+
+const char* const kScene = R"(scene:
+  objects:
+    - shape: box
+)";
+
+} // namespace
+
+TEST(PointCloudConfig, absentSectionAddsNoClouds) {
+    TempDir dir;
+    EXPECT_TRUE(loadStationConfig(dir.write("a.yaml", kScene)).pointClouds.clouds.empty());
+    SceneFile f = loadSceneFile(dir.write("b.yaml", kScene));
+    EXPECT_EQ(f.pointClouds.size(), 0u);
+}
+
+TEST(PointCloudConfig, treeEntryBecomesAPointCloudNodeWithItsLdis) {
+    TempDir dir;
+    SceneFile f = loadSceneFile(dir.write("a.yaml", std::string(kScene) + R"(point_clouds:
+  - name: oak
+    seed: 3
+    resolution: 40
+    ldis: 3
+    position: [5, 0, 0]
+    scale: 2
+)"));
+    ASSERT_EQ(f.pointClouds.size(), 1u);
+    f.scene.update();
+    NodeId cloud = kNoNode;
+    for (NodeId n = 0; n < f.scene.nodeCount(); ++n)
+        if (f.scene.kind(n) == NodeKind::PointCloud) cloud = n;
+    ASSERT_NE(cloud, kNoNode);
+    EXPECT_EQ(f.scene.name(cloud), "oak");
+    const LdiSet& set = f.pointClouds.at(f.scene, cloud);
+    EXPECT_EQ(set.ldis.size(), 3u);
+    EXPECT_GT(set.cloud.size(), 100u);
+    EXPECT_NEAR(f.scene.world(cloud)[3].x, 5.0f, 1e-6f);
+    EXPECT_NEAR(glm::length(glm::vec3(f.scene.world(cloud)[0])), 2.0f, 1e-5f);
+}
+
+TEST(PointCloudConfig, badValuesAndUnknownKeysAreReportedWithTheirLine) {
+    TempDir dir;
+    const auto file = dir.write("a.yaml", std::string(kScene) + R"(point_clouds:
+  - ldis: 0
+    source: mesh
+    colour: red
+)");
+    try {
+        loadStationConfig(file);
+        FAIL() << "expected a ConfigError";
+    } catch (const ConfigError& e) {
+        std::vector<int> lines;
+        for (const ConfigIssue& issue : e.issues) lines.push_back(issue.line);
+        std::sort(lines.begin(), lines.end());
+        EXPECT_EQ(lines, (std::vector<int>{5, 6, 7}));
+    }
+}
+
+TEST(PointCloudConfig, unreadableVoxelFileIsAWarningNotAFailure) {
+    TempDir dir;
+    dir.write("broken.arvox", "not a voxel file");
+    SceneFile f = loadSceneFile(dir.write("a.yaml", std::string(kScene) + R"(point_clouds:
+  - name: broken
+    source: voxels
+    voxels: broken.arvox
+)"));
+    EXPECT_EQ(f.pointClouds.size(), 0u);
+    ASSERT_EQ(f.warnings.size(), 1u);
+    EXPECT_NE(f.warnings[0].find("broken"), std::string::npos);
+}
