@@ -123,6 +123,11 @@ public:
     std::size_t silhouetteTrianglesTotal() const;
     // Why a replay input ended ("end after 795 frames", a decoder error); empty while it runs.
     const std::string& inputEnd() const { return inputEnd_; }  // all regions' lists, for reports
+    // File outputs that failed (a full disk, a folder gone read-only): the
+    // frame is still composited and shown, only its file is missing.
+    // Frames written before stay whole (PNGs are written beside and renamed).
+    std::uint64_t outputFailures() const { return outputFailures_; }
+    const std::string& lastOutputError() const { return lastOutputError_; }
 
 private:
     bool capture();
@@ -151,6 +156,8 @@ private:
     std::string inputEnd_;
     SourceState replayState_{SourceStatus::Opening, ""};
     std::uint64_t firstOutputIndex_ = 0;
+    std::uint64_t outputFailures_ = 0;
+    std::string lastOutputError_;
     FrameStats stats_;
     std::uint64_t frames_ = 0;
 };

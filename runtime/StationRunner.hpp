@@ -44,10 +44,14 @@ public:
     int statusPort() const { return server_ ? server_->port() : -1; }
     std::uint64_t frames() const { return frames_; }
     std::uint64_t reloads() const { return reloads_; }
+    // Frames whose file output failed (disk full, ...): each is logged
+    // (rate-limited) and counted in /status, and the frames go on.
+    std::uint64_t outputFailures() const { return outputFailures_; }
 
 private:
     void reload();
     void startStatusServer();
+    void reportOutputFailure();
 
     StationConfig cfg_;
     InputOpener openInput_;
@@ -56,6 +60,7 @@ private:
     std::unique_ptr<Station> station_;
     std::uint64_t frames_ = 0;
     std::uint64_t reloads_ = 0;
+    std::uint64_t outputFailures_ = 0;
     std::filesystem::path baseVideoFile_;  // reloads record into name.1.avi, name.2.avi, ...
     double lastStepStart_ = -1.0;  // seconds, steady clock; frame time is start to start
 };
