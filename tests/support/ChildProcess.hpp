@@ -7,6 +7,7 @@
 //   ChildResult r = runChild({ARCOMP_BINARY, "check", "bad.yaml"});
 //   EXPECT_FALSE(r.crashed()) << r.output;
 //   ChildResult full = runChild({ARCOMP_BINARY, "replay", ...}, {.fileSizeLimit = 200'000});
+//   ChildResult p = runForked([&] { loadSceneFile(file); return 0; });   // no exec: cheap
 
 #include <fcntl.h>
 #include <signal.h>
@@ -15,6 +16,8 @@
 #include <unistd.h>
 
 #include <array>
+#include <functional>
+#include <cstdio>
 #include <cstdlib>
 #include <optional>
 #include <string>
@@ -42,7 +45,10 @@ struct ChildResult {
     }
 };
 
-inline ChildResult runChild(const std::vector<std::string>& argv, ChildLimits limits = {}) {
+// Runs `body` in a forked child (its return value is the exit code) with
+// stdout and stderr captured.
+inline ChildResult runForked(const std::function<int()>& body, ChildLimits limits = {}) {
+    std::fflush(nullptr);
     int fds[2];
     if (::pipe(fds) != 0) std::abort();
     const pid_t pid = ::fork();
@@ -57,11 +63,9 @@ inline ChildResult runChild(const std::vector<std::string>& argv, ChildLimits li
             const rlimit cap{*limits.fileSizeLimit, *limits.fileSizeLimit};
             ::setrlimit(RLIMIT_FSIZE, &cap);
         }
-        std::vector<char*> args;
-        for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-        args.push_back(nullptr);
-        ::execv(args[0], args.data());
-        ::_exit(127);
+        const int code = body();
+        std::fflush(nullptr);
+        ::_exit(code);
     }
     ::close(fds[1]);
     ChildResult r;
@@ -75,6 +79,18 @@ inline ChildResult runChild(const std::vector<std::string>& argv, ChildLimits li
     r.code = r.exited ? WEXITSTATUS(status) : -1;
     r.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
     return r;
+}
+
+inline ChildResult runChild(const std::vector<std::string>& argv, ChildLimits limits = {}) {
+    return runForked(
+        [&argv] {
+            std::vector<char*> args;
+            for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+            args.push_back(nullptr);
+            ::execv(args[0], args.data());
+            return 127;
+        },
+        limits);
 }
 
 } // namespace arcomp::test
