@@ -296,7 +296,14 @@ bool Station::frame() {
 
     ++frames_;
     stats_.frame = frames_;
-    writeOutputs();
+    try {
+        writeOutputs();
+    } catch (const std::exception& e) {
+        // A kiosk keeps showing its frames when the disk fills; the runner
+        // reports the failure to the operator.
+        ++outputFailures_;
+        lastOutputError_ = e.what();
+    }
     stats_.outputMs = msSince(t);
     stats_.totalMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     return true;

@@ -140,6 +140,11 @@ public:
     std::size_t silhouetteTrianglesTotal() const;
     // Why a replay input ended ("end after 795 frames", a decoder error); empty while it runs.
     const std::string& inputEnd() const { return inputEnd_; }
+    // File outputs that failed (a full disk, a folder gone read-only): the
+    // frame is still composited and shown, only its file is missing.
+    // Frames written before stay whole (PNGs are written beside and renamed).
+    std::uint64_t outputFailures() const { return outputFailures_; }
+    const std::string& lastOutputError() const { return lastOutputError_; }
 
 private:
     bool capture();
@@ -177,6 +182,8 @@ private:
     std::uint64_t firstOutputIndex_ = 0;
     std::chrono::steady_clock::time_point clockStart_ = std::chrono::steady_clock::now();
     double videoSeconds_ = 0.0;  // the current frame's timestamp (replay)
+    std::uint64_t outputFailures_ = 0;
+    std::string lastOutputError_;
     FrameStats stats_;
     std::uint64_t frames_ = 0;
 };

@@ -65,7 +65,9 @@ bool StationRunner::step() {
     if (takeReloadRequest()) reload();
     if (ended_) return false;
     const double start = nowSeconds();
+    const std::uint64_t failedBefore = station_->outputFailures();
     const bool drawn = station_->frame();
+    if (station_->outputFailures() != failedBefore) reportOutputFailure();
     metrics_.setCamera(station_->inputName(), station_->inputState(), station_->inputDrops());
     if (!drawn) return false;
     ++frames_;
@@ -73,6 +75,15 @@ bool StationRunner::step() {
     metrics_.recordFrame(lastStepStart_ < 0.0 ? station_->stats().totalMs : (start - lastStepStart_) * 1000.0);
     lastStepStart_ = start;
     return true;
+}
+
+void StationRunner::reportOutputFailure() {
+    ++outputFailures_;
+    metrics_.recordError("output: " + station_->lastOutputError());
+    // The first failure, then one line per 100, so a full disk does not also fill the log.
+    if (outputFailures_ == 1 || outputFailures_ % 100 == 0)
+        spdlog::error("{} (output failures so far: {}; the station goes on compositing)", station_->lastOutputError(),
+                      outputFailures_);
 }
 
 void StationRunner::reload() {

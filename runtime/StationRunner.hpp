@@ -54,12 +54,16 @@ public:
     int statusPort() const { return server_ ? server_->port() : -1; }
     std::uint64_t frames() const { return frames_; }
     std::uint64_t reloads() const { return reloads_; }
+    // Frames whose file output failed (disk full, ...): each is logged
+    // (rate-limited) and counted in /status, and the frames go on.
+    std::uint64_t outputFailures() const { return outputFailures_; }
 
 private:
     void reload();
     void restart(StationConfig cfg, StationInput input);
     void startStatusServer();
     void reportWarnings();
+    void reportOutputFailure();
 
     StationConfig cfg_;
     ConfigOverride override_;
@@ -71,6 +75,7 @@ private:
     std::uint64_t reloads_ = 0;
     const std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();  // live movers' clock
     bool ended_ = false;           // a replay whose reload could not start
+    std::uint64_t outputFailures_ = 0;
     double lastStepStart_ = -1.0;  // seconds, steady clock; frame time is start to start
 };
 

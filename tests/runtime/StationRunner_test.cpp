@@ -140,3 +140,40 @@ TEST(StationRunner, commandLineOverridesSurviveAReload) {
     EXPECT_EQ(openedPaths, std::vector<std::string>{"recorded.avi"});
     EXPECT_EQ(runner.config().compositing.video->path, "recorded.avi");
 }
+
+TEST(StationRunner, aModelTurnedToGarbageAtReloadIsSkippedAndReportedAndFramesGoOn) {
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    test::TempDir dir;
+    dir.write("tri.obj", "v -1 -1 -4\nv 1 -1 -4\nv 0 1 -4\nf 1 2 3\n");
+    const fs::path file = dir.write("station.yaml", R"(scene:
+  objects:
+    - model: tri.obj
+      color: [0.9, 0.1, 0.1, 1]
+camera: {eye: [0, 0, 0], target: [0, 0, -1]}
+)");
+    StationRunner runner(loadStationConfig(file), nullptr,
+                         [](const StationConfig&) { return StationInput::fromReplay(std::make_unique<FailingCamera>(100), 30.0); });
+    ASSERT_TRUE(runner.step());
+    EXPECT_GT(runner.station().stats().cgTriangles, 0u);
+
+    dir.write("tri.obj", std::string("\x89PNG\r\n\x1a\n\0\0\0garbage", 18));
+    requestReload();
+    ASSERT_TRUE(runner.step());
+    ASSERT_TRUE(runner.step());
+    EXPECT_EQ(runner.reloads(), 1u);
+    EXPECT_EQ(runner.station().stats().cgTriangles, 0u) << "the broken model is skipped";
+    EXPECT_NE(runner.metrics().statusJson().find("tri.obj"), std::string::npos) << runner.metrics().statusJson();
+}
+
+TEST(StationRunner, anOutputThatCannotBeWrittenIsCountedAndReportedWhileFramesGoOn) {
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    test::TempDir dir;
+    StationConfig cfg = loadStationConfig(dir.write("station.yaml", kStation));
+    cfg.compositing.output.pngDir = dir.write("blocked", "a file where the output folder should be");
+    StationRunner runner(cfg, nullptr, [](const StationConfig&) { return StationInput::fromReplay(std::make_unique<FailingCamera>(5), 30.0); });
+    while (runner.step()) {}
+    EXPECT_EQ(runner.frames(), 5u);
+    EXPECT_EQ(runner.outputFailures(), 5u);
+    EXPECT_NE(runner.station().lastOutputError().find("blocked"), std::string::npos) << runner.station().lastOutputError();
+    EXPECT_NE(runner.metrics().statusJson().find("output: cannot write"), std::string::npos) << runner.metrics().statusJson();
+}

@@ -96,6 +96,12 @@ int replay(const ReplayOptions& o) {
               << " ms/frame) into " << o.out << "/frame-NNNNNN.png";
     if (!runner.config().compositing.output.videoFile.empty()) std::cout << " and " << runner.config().compositing.output.videoFile.string();
     std::cout << "\n";
+    if (runner.outputFailures() > 0) {
+        // Every frame was composited; some files are missing. The ones written are whole.
+        std::cerr << "error: " << runner.outputFailures() << " of " << done
+                  << " frames could not be written; last: " << station.lastOutputError() << "\n";
+        return kExitFailure;
+    }
     return done > 0 ? kExitOk : kExitFailure;
 }
 

@@ -1,0 +1,96 @@
+#pragma once
+// Runs a program in a child process and tells how it ended, so that a test
+// can count a crash instead of dying of it, and can give the child limits
+// (a file-size cap standing in for a full disk) that the test itself keeps
+// free of.
+//
+//   ChildResult r = runChild({ARCOMP_BINARY, "check", "bad.yaml"});
+//   EXPECT_FALSE(r.crashed()) << r.output;
+//   ChildResult full = runChild({ARCOMP_BINARY, "replay", ...}, {.fileSizeLimit = 200'000});
+//   ChildResult p = runForked([&] { loadSceneFile(file); return 0; });   // no exec: cheap
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <functional>
+#include <cstdio>
+#include <cstdlib>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace arcomp::test {
+
+struct ChildLimits {
+    // RLIMIT_FSIZE in bytes: writes beyond it fail with EFBIG, as on a full
+    // disk (SIGXFSZ is ignored in the child so it sees the error).
+    std::optional<rlim_t> fileSizeLimit;
+};
+
+struct ChildResult {
+    bool exited = false;  // false: killed by a signal
+    int code = -1;        // exit status when exited
+    int signal = 0;       // the signal when killed
+    std::string output;   // stdout and stderr together
+
+    // A signal, or a sanitizer's report (ASan and UBSan exit with 1 otherwise).
+    bool crashed() const {
+        return !exited || output.find("ERROR: AddressSanitizer") != std::string::npos ||
+               output.find("ERROR: LeakSanitizer") != std::string::npos ||
+               output.find("runtime error:") != std::string::npos;
+    }
+};
+
+// Runs `body` in a forked child (its return value is the exit code) with
+// stdout and stderr captured.
+inline ChildResult runForked(const std::function<int()>& body, ChildLimits limits = {}) {
+    std::fflush(nullptr);
+    int fds[2];
+    if (::pipe(fds) != 0) std::abort();
+    const pid_t pid = ::fork();
+    if (pid < 0) std::abort();
+    if (pid == 0) {
+        ::dup2(fds[1], STDOUT_FILENO);
+        ::dup2(fds[1], STDERR_FILENO);
+        ::close(fds[0]);
+        ::close(fds[1]);
+        if (limits.fileSizeLimit) {
+            ::signal(SIGXFSZ, SIG_IGN);
+            const rlimit cap{*limits.fileSizeLimit, *limits.fileSizeLimit};
+            ::setrlimit(RLIMIT_FSIZE, &cap);
+        }
+        const int code = body();
+        std::fflush(nullptr);
+        ::_exit(code);
+    }
+    ::close(fds[1]);
+    ChildResult r;
+    std::array<char, 4096> buffer;
+    ssize_t n;
+    while ((n = ::read(fds[0], buffer.data(), buffer.size())) > 0) r.output.append(buffer.data(), static_cast<std::size_t>(n));
+    ::close(fds[0]);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    r.exited = WIFEXITED(status);
+    r.code = r.exited ? WEXITSTATUS(status) : -1;
+    r.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+    return r;
+}
+
+inline ChildResult runChild(const std::vector<std::string>& argv, ChildLimits limits = {}) {
+    return runForked(
+        [&argv] {
+            std::vector<char*> args;
+            for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+            args.push_back(nullptr);
+            ::execv(args[0], args.data());
+            return 127;
+        },
+        limits);
+}
+
+} // namespace arcomp::test
