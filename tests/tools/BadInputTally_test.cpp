@@ -12,6 +12,7 @@
 #include "graph/ModelError.hpp"
 #include "runtime/ConfigError.hpp"
 #include "runtime/SceneFile.hpp"
+#include "tests/support/BoxStation.hpp"
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
@@ -74,14 +75,7 @@ ChildResult loadInChild(const fs::path& file) {
     });
 }
 
-const char* const kStation = R"(scene:
-  objects:
-    - shape: box
-      position: [0, 0, -4]
-camera:
-  eye: [0, 0, 0]
-  target: [0, 0, -1]
-)";
+const char* const kStation = arcomp::test::kBoxStation;
 
 // Configs broken in every way we could think of, each alone. Models they
 // name sit beside them: ok.obj (fine), garbage.obj (binary junk).

@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <sys/wait.h>
 #include "tests/support/Shell.hpp"
+#include "tests/support/BoxStation.hpp"
 
 using arcomp::test::TempDir;
 namespace fs = std::filesystem;
@@ -24,14 +25,7 @@ arcomp::test::ShellResult replay(const std::string& args) { return arcomp::test:
 
 
 
-const char* const kScene = R"(scene:
-  objects:
-    - shape: box
-      position: [0, 0, -4]
-camera:
-  eye: [0, 0, 0]
-  target: [0, 0, -1]
-)";
+const char* const kScene = arcomp::test::kBoxStation;
 
 std::size_t pngsIn(const fs::path& dir) {
     std::size_t n = 0;

@@ -6,6 +6,7 @@
 
 #include "../support/ChildProcess.hpp"
 #include "../support/TempDir.hpp"
+#include "tests/support/BoxStation.hpp"
 
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
@@ -18,14 +19,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* const kStation = R"(scene:
-  objects:
-    - shape: box
-      position: [0, 0, -4]
-camera:
-  eye: [0, 0, 0]
-  target: [0, 0, -1]
-)";
+const char* const kStation = arcomp::test::kBoxStation;
 
 // `flat` frames of one grey (their PNGs are a few kB), then `noisy` frames
 // of random pixels (their PNGs are tens of kB).
