@@ -45,7 +45,7 @@ struct BudgetSettings {
     bool changeLevel = true;
     bool changeShading = true;
     // Raising a setting must leave this fraction of the target unused.
-    double upgradeMargin = 0.05;
+    double upgradeMargin = 0.02;
     // Frames an object stays down after being lowered before it may rise.
     int holdFrames = 4;
     // Importance = screen area · (floor + (1 - floor) · k1(θ)); 1 ranks by

@@ -28,7 +28,7 @@ struct BudgetConfig {
     bool changeShading = true;
     std::filesystem::path calibration;
     bool refit = true;               // re-fit the cost model while running
-    double upgradeMarginPct = 5.0;   // hysteresis band below the target
+    double upgradeMarginPct = 2.0;   // hysteresis band below the target
     int holdFrames = 4;
     float eccentricityFloor = 0.25f; // 1: importance by screen size alone
 };

@@ -16,9 +16,6 @@ using arcomp::test::lastLine;
 // Only stdout: the JSON or summary the command prints.
 arcomp::test::ShellResult run(const std::string& args) { return arcomp::test::arcompCommand(args, false); }
 
-
-
-
 // The text of `key`'s object, `"key":{...}` without nested objects.
 std::string object(const std::string& json, const std::string& key) {
     const std::size_t at = json.find("\"" + key + "\":{");

@@ -5,19 +5,30 @@
 // frame-time controller with target T, in the same process. The baseline is
 // the unmanaged run.
 //
-//   arcomp bench budget --out build/bench-budget [--target-ms 33] [--frames 600]
+//   arcomp bench budget --out build/bench-budget [--target-ms T] [--frames 600]
 //
 // Frame time is what the timer (runtime/FrameTimer.hpp) gives for the
 // draw, clear to glFinish; select and the controller's own CPU time are
 // reported apart (apply_us). The cost model is calibrated in the same run
 // (or read with --calibration) and re-fitted online during the managed run.
-// The default target is 33 ms (30 Hz): the unmanaged run exceeds it on most
-// frames, and it lies above the controller's floor along the path (every
-// object at its coarsest level and unlit; the pixels of the range seen close
-// up cost that much whatever is drawn), which the JSON reports as
-// floor_ms_max_estimate: the calibrated floor scaled by the table's error in
-// the unmanaged run. On a busy machine the floor rises with everything else;
-// a target below it cannot be held by choosing level and shading.
+//
+// The default target is the unmanaged run's 3rd percentile: full detail
+// exceeds it on 97% of the path, so the controller has work to do nearly
+// everywhere, and the figure follows the machine's speed on the day (on
+// this shared host the same run varies by 2× from hour to hour, so no fixed
+// number is "most frames" every time). It is never set below the
+// controller's floor along the path (every object at its coarsest level and
+// unlit; the pixels seen close up cost that much whatever is drawn), which
+// the JSON reports as floor_ms_max_estimate: the calibrated floor scaled by
+// the table's error in the unmanaged run.
+//
+// llvmpipe's raster threads share the two cores with the thread that
+// issues the draws; with two of them the same frame drawn again varies by
+// +14% at the 95th percentile, more than the ±10% band the controller is
+// judged by. --raster-threads 1 (the default; 0 leaves the driver's choice)
+// keeps that under +6% at about the same speed. The JSON reports the
+// platform's own noise as repeat_jitter_p95_pct: one view at full detail,
+// drawn 60 times. Other drivers ignore LP_NUM_THREADS.
 //
 // Writes to --out: budget_frames.csv (per frame), budget_frame_time.png
 // (unmanaged, managed, target), budget_prediction.png (managed predicted vs
@@ -53,11 +64,15 @@ struct Options {
     std::string size = "1280x720";
     std::string timer = "finish";
     std::string calibration;
-    double targetMs = 33.0;
+    double targetMs = 0.0;  // 0: the unmanaged run's 3rd percentile
+    int rasterThreads = 1;  // LP_NUM_THREADS; 0: the driver's default
+    BudgetSettings controller{};
     int frames = 600;
     int mountains = 60;
     int sceneFrames = 150;
 };
+
+const glm::vec4 kSky(0.55f, 0.68f, 0.85f, 1.0f);
 
 struct Series {
     std::vector<double> ms, predicted, quality, applyUs;
@@ -97,7 +112,6 @@ Series fly(const FlightScene& flight, Renderer& renderer, FrameTimer& timer, int
     Series s;
     DrawList list;
     const LodAlternatives alternatives(flight.scene);
-    const glm::vec4 sky(0.55f, 0.68f, 0.85f, 1.0f);
     for (int f = 0; f < frames; ++f) {
         const View view = flightView(frames > 1 ? f / double(frames - 1) : 0.0, size);
         select(flight.scene, view, {.shading = Shading::Phong}, list);
@@ -118,7 +132,7 @@ Series fly(const FlightScene& flight, Renderer& renderer, FrameTimer& timer, int
             reduced = st.itemsReduced;
         }
         timer.begin();
-        renderer.draw(flight.scene, list, view, {.clearColor = sky});
+        renderer.draw(flight.scene, list, view, {.clearColor = kSky});
         const double ms = timer.end();
         if (budget) budget->observe(ms);
         s.ms.push_back(ms);
@@ -131,6 +145,22 @@ Series fly(const FlightScene& flight, Renderer& renderer, FrameTimer& timer, int
     return s;
 }
 
+// The platform's own noise: one view at full detail drawn again and again;
+// how far the 95th percentile lies above the median, in percent.
+double repeatJitterPct(const FlightScene& flight, Renderer& renderer, FrameTimer& timer, glm::ivec2 size) {
+    DrawList list;
+    const View view = flightView(0.0, size);
+    select(flight.scene, view, {.shading = Shading::Phong}, list);
+    std::vector<double> ms;
+    for (int k = 0; k < 60; ++k) {
+        timer.begin();
+        renderer.draw(flight.scene, list, view, {.clearColor = kSky});
+        ms.push_back(timer.end());
+    }
+    const double median = percentile(ms, 50);
+    return median > 0.0 ? 100.0 * (percentile(ms, 95) / median - 1.0) : 0.0;
+}
+
 std::vector<double> frameAxis(std::size_t n) {
     std::vector<double> x(n);
     std::iota(x.begin(), x.end(), 0.0);
@@ -141,13 +171,16 @@ int run(const Options& o) {
     const glm::ivec2 size = parseSize(o.size, "--size");
     if (o.frames < 2 || o.frames > 100000) throw InputError("--frames must lie in 2..100000");
     if (o.mountains < 1 || o.mountains > 10000) throw InputError("--mountains must lie in 1..10000");
-    if (!(o.targetMs > 0.0)) throw InputError("--target-ms must be positive");
+    if (!(o.targetMs >= 0.0)) throw InputError("--target-ms must be positive, or 0 for the default");
+    if (o.rasterThreads < 0 || o.rasterThreads > 64) throw InputError("--raster-threads must lie in 0..64");
     if (o.timer != "auto" && o.timer != "query" && o.timer != "finish")
         throw InputError("--timer '" + o.timer + "': expected auto, query or finish");
     const std::filesystem::path out(o.out);
     std::filesystem::create_directories(out);
 
     const FlightScene flight = buildFlightScene({.mountains = o.mountains});
+    // llvmpipe reads it when the context is made.
+    if (o.rasterThreads > 0) setenv("LP_NUM_THREADS", std::to_string(o.rasterThreads).c_str(), 1);
     auto context = HeadlessContext::create(GlRequest::Auto);
     RenderTarget target(size);
     target.bind();
@@ -188,6 +221,7 @@ int run(const Options& o) {
         writeCalibration(out / "calibration.yaml", table, {glDescription(), size});
     }
 
+    const double jitterPct = repeatJitterPct(flight, renderer, timer, size);
     std::cerr << "unmanaged run, " << o.frames << " frames\n";
     CostModel tableOnly = table;
     tableOnly.enableRefit(false);
@@ -200,10 +234,12 @@ int run(const Options& o) {
     const double gainU = tableGain.empty() ? 1.0 : std::max(0.25, percentile(tableGain, 50));
     double floorMs = 0.0;
     for (double items : unmanaged.floorItemsMs) floorMs = std::max(floorMs, gainU * items + table.overheadMs);
-    const double targetMs = o.targetMs;
+    const double targetMs = o.targetMs > 0.0 ? o.targetMs : std::max(percentile(unmanaged.ms, 3), floorMs);
 
     std::cerr << "managed run, target " << targetMs << " ms\n";
-    FrameBudget budget(table, {.targetMs = targetMs});
+    BudgetSettings settings = o.controller;
+    settings.targetMs = targetMs;
+    FrameBudget budget(table, settings);
     const Series managed = fly(flight, renderer, timer, o.frames, size, tableOnly, &budget);
 
     // Managed-run figures.
@@ -255,10 +291,12 @@ int run(const Options& o) {
     const bool met = p95Dev <= 10.0 && over20Pct <= 1.0 && predErr <= 10.0 && ratio >= 3.0;
     std::ostringstream json;
     json << "{\"bench\":\"budget\",\"device\":\"" << glDescription() << "\",\"timer\":\"" << timer.method()
-         << "\",\"size\":[" << size.x << "," << size.y << "],\"frames\":" << o.frames
+         << "\",\"raster_threads\":" << o.rasterThreads << ",\"repeat_jitter_p95_pct\":" << jitterPct
+         << ",\"size\":[" << size.x << "," << size.y << "],\"frames\":" << o.frames
          << ",\"mountains\":" << o.mountains << ",\"triangles_per_level\":[" << flight.trianglesPerLevel[0] << ","
          << flight.trianglesPerLevel[1] << "," << flight.trianglesPerLevel[2] << "],\"calibration_s\":"
-         << calibrationSeconds << ",\"target_ms\":" << targetMs << ",\"floor_ms_max_estimate\":" << floorMs
+         << calibrationSeconds << ",\"target_ms\":" << targetMs
+         << ",\"target_rule\":\"" << (o.targetMs > 0.0 ? "given" : "unmanaged_p3") << "\",\"floor_ms_max_estimate\":" << floorMs
          << ",\"unmanaged\":{" << frameStats(unmanaged.ms)
          << ",\"frames_over_target_pct\":" << 100.0 * static_cast<double>(unmanagedOver) / n
          << ",\"prediction_error_pct_median\":" << percentile(unmanagedPredictionError, 50) << "}"
@@ -277,7 +315,16 @@ const bool registered = registerBench(
      [](CLI::App& app) {
          auto o = std::make_shared<Options>();
          app.add_option("--out", o->out, "folder for the CSV, the plots and calibration.yaml")->capture_default_str();
-         app.add_option("--target-ms", o->targetMs, "target frame time")
+         app.add_option("--target-ms", o->targetMs,
+                        "target frame time; 0: the unmanaged run's 3rd percentile (not below the floor)")
+             ->capture_default_str();
+         app.add_option("--raster-threads", o->rasterThreads,
+                        "llvmpipe raster threads (LP_NUM_THREADS); 0: the driver's default")
+             ->capture_default_str();
+         app.add_option("--upgrade-margin", o->controller.upgradeMargin,
+                        "hysteresis: a raise must leave this fraction of the target unused")
+             ->capture_default_str();
+         app.add_option("--hold-frames", o->controller.holdFrames, "hysteresis: frames a lowered object stays down")
              ->capture_default_str();
          app.add_option("--frames", o->frames, "frames along the path, per run")->capture_default_str();
          app.add_option("--mountains", o->mountains, "mountains in the field")->capture_default_str();
