@@ -1,10 +1,12 @@
 // The station's life around its frames: the operator endpoint during a
-// replay, a camera fault showing in /status and /metrics, and reloading the
-// config at a frame boundary (good and bad configs).
+// replay, a camera fault showing in /status and /metrics, a status port
+// that another program holds, and reloading the config at a frame boundary
+// (good and bad configs).
 
 #include "runtime/GlContext.hpp"
 #include "runtime/ShutdownSignals.hpp"
 #include "runtime/StationRunner.hpp"
+#include "runtime/StatusServer.hpp"
 #include "tests/support/TempDir.hpp"
 
 #include <gtest/gtest.h>
@@ -71,6 +73,22 @@ TEST(StationRunner, cameraFaultShowsInStatusAndMetrics) {
     const std::string metrics = client.Get("/metrics")->body;
     EXPECT_NE(metrics.find("arcomp_camera_up{camera=\"front\"} 0"), std::string::npos) << metrics;
     EXPECT_NE(metrics.find("arcomp_frame_time_seconds_count 3"), std::string::npos) << metrics;
+}
+
+TEST(StationRunner, aStatusPortAlreadyInUseIsReportedAndFramesGoOnWithoutTheEndpoint) {
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    test::TempDir dir;
+    StationMetrics otherMetrics;
+    StatusServer squatter(otherMetrics, {.bind = "127.0.0.1", .port = 0});
+    StationConfig cfg = withStatus(dir.write("station.yaml", kStation));
+    cfg.operation.status.port = squatter.port();
+    StationRunner runner(std::move(cfg), nullptr,
+                         [](const StationConfig&) { return StationInput::fromReplay(std::make_unique<FailingCamera>(4), 30.0); });
+    EXPECT_EQ(runner.statusPort(), -1);
+    while (runner.step()) {}
+    EXPECT_EQ(runner.frames(), 4u);
+    const std::string status = runner.metrics().statusJson();
+    EXPECT_NE(status.find("127.0.0.1:" + std::to_string(squatter.port())), std::string::npos) << status;
 }
 
 TEST(StationRunner, reloadSwapsTheSceneAtAFrameBoundaryAndKeepsTheInput) {
