@@ -75,7 +75,7 @@ struct Options {
 const glm::vec4 kSky(0.55f, 0.68f, 0.85f, 1.0f);
 
 struct Series {
-    std::vector<double> ms, predicted, quality, applyUs;
+    std::vector<double> ms, predicted, quality, applyUs, gain;  // gain: the online fit's, as predicted
     std::vector<double> itemsMs, floorItemsMs;  // calibrated: as drawn, all coarsest and unlit
     std::vector<std::size_t> items, reduced;
 };
@@ -130,6 +130,7 @@ Series fly(const FlightScene& flight, Renderer& renderer, FrameTimer& timer, int
             predicted = st.predictedMs;
             quality = st.quality;
             reduced = st.itemsReduced;
+            s.gain.push_back(budget->model().gain());
         }
         timer.begin();
         renderer.draw(flight.scene, list, view, {.clearColor = kSky});
@@ -269,11 +270,11 @@ int run(const Options& o) {
     {
         std::ofstream csv(out / "budget_frames.csv");
         csv << "frame,target_ms,unmanaged_ms,unmanaged_predicted_ms,managed_ms,managed_predicted_ms,managed_quality,"
-               "items,items_reduced,apply_us\n";
+               "items,items_reduced,apply_us,managed_gain\n";
         for (std::size_t f = 0; f < managed.ms.size(); ++f)
             csv << f << ',' << targetMs << ',' << unmanaged.ms[f] << ',' << unmanaged.predicted[f] << ','
                 << managed.ms[f] << ',' << managed.predicted[f] << ',' << managed.quality[f] << ','
-                << managed.items[f] << ',' << managed.reduced[f] << ',' << managed.applyUs[f] << '\n';
+                << managed.items[f] << ',' << managed.reduced[f] << ',' << managed.applyUs[f] << ',' << managed.gain[f] << '\n';
         if (!csv) throw std::runtime_error((out / "budget_frames.csv").string() + ": write failed");
     }
     const std::vector<double> x = frameAxis(managed.ms.size());
