@@ -212,6 +212,8 @@ private:
         if (componentCount(a.type) == 0) fail(ptr("accessors", index, "type"), "unknown accessor type");
         if (componentSize(a.componentType) == 0)
             fail(ptr("accessors", index, "componentType"), "unknown component type " + std::to_string(a.componentType));
+        // The schema's minimum: an empty accessor would also hand null data on.
+        if (a.count == 0) fail(ptr("accessors", index, "count"), "count is 0; an accessor holds at least 1 element");
         if (a.bufferView < 0 && a.count > kMaxElements)
             fail(ptr("accessors", index, "count"), "count " + std::to_string(a.count) + " is larger than supported");
         return a;
