@@ -85,16 +85,34 @@ bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigne
     return false;
 }
 
-// An image that does not decode costs its texture, not the model.
+// Whether an image's buffer view lies inside its buffer. tinygltf hands a
+// view's bytes to the decoder without that check, so a view longer than its
+// buffer had the decoder read past the end (a fuzz finding).
+bool imageViewInsideBuffer(const tinygltf::Image& image, const tinygltf::Model& model) {
+    if (image.bufferView < 0) return true;  // a URI: tinygltf decoded it into a vector of its own
+    if (static_cast<std::size_t>(image.bufferView) >= model.bufferViews.size()) return false;
+    const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(image.bufferView)];
+    if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size()) return false;
+    const std::size_t length = model.buffers[static_cast<std::size_t>(view.buffer)].data.size();
+    return view.byteOffset <= length && view.byteLength <= length - view.byteOffset;
+}
+
+// An image that does not decode costs its texture, not the model. `user` is
+// the model being loaded.
 bool lenientImage(tinygltf::Image* image, const int index, std::string* err, std::string* warn, int w, int h,
                   const unsigned char* bytes, int size, void* user) {
-    std::string localErr;
-    if (tinygltf::LoadImageData(image, index, &localErr, warn, w, h, bytes, size, user)) return true;
-    if (warn) *warn += "image " + std::to_string(index) + " does not decode; drawn without it: " + localErr + "\n";
     (void)err;
-    image->image.clear();
-    image->width = image->height = 0;
-    return true;
+    const auto drawnWithout = [&](const std::string& why) {
+        if (warn) *warn += "image " + std::to_string(index) + " " + why + "; drawn without it\n";
+        image->image.clear();
+        image->width = image->height = 0;
+        return true;
+    };
+    if (!imageViewInsideBuffer(*image, *static_cast<const tinygltf::Model*>(user)))
+        return drawnWithout("has a buffer view that runs past its buffer");
+    std::string localErr;
+    if (tinygltf::LoadImageData(image, index, &localErr, warn, w, h, bytes, size, nullptr)) return true;
+    return drawnWithout("does not decode: " + localErr);
 }
 
 int componentCount(int type) {
@@ -420,8 +438,8 @@ ParsedModel parseGltf(const fs::path& file) {
     FileAccess access{file.parent_path().empty() ? fs::path(".") : file.parent_path(), {}};
     tinygltf::TinyGLTF loader;
     loader.SetFsCallbacks({&guardedExists, &identityExpand, &guardedRead, &refuseWrite, &access});
-    loader.SetImageLoader(&lenientImage, nullptr);
     tinygltf::Model model;
+    loader.SetImageLoader(&lenientImage, &model);
     std::string err, warn;
     std::ifstream probe(file, std::ios::binary);
     char magic[4] = {};
