@@ -3,8 +3,7 @@
 // one file in a private folder (per process, so parallel fuzzers never
 // share it) and gives its path.
 //
-//   const auto file = fuzzInputFile(data, size, "station.yaml");
-//   try { loadStationConfig(file); } catch (const ConfigError&) {}
+//   return parseAsFile<ConfigError>(data, size, "station.yaml", loadStationConfig);
 //
 // Only the exceptions a parser documents may be caught by a target; anything
 // else escaping (std::bad_alloc, std::out_of_range, ...) is a finding.
@@ -32,6 +31,18 @@ inline std::filesystem::path fuzzInputFile(const std::uint8_t* data, std::size_t
     out.close();
     if (!out) std::abort();  // the harness itself failed, not the parser
     return file;
+}
+
+// A target's whole body for a parser that reads a file: the bytes as file
+// `name`, through `parse`, with the parser's documented error caught.
+template <class DocumentedError, class Parse>
+int parseAsFile(const std::uint8_t* data, std::size_t size, const std::string& name, Parse&& parse) {
+    const auto file = fuzzInputFile(data, size, name);
+    try {
+        parse(file);
+    } catch (const DocumentedError&) {
+    }
+    return 0;
 }
 
 } // namespace arcomp::fuzz

@@ -4,10 +4,6 @@
 #include "tools/fuzz/FuzzInput.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    const auto file = arcomp::fuzz::fuzzInputFile(data, size, "calibration.yaml");
-    try {
-        arcomp::readCalibration(file);
-    } catch (const arcomp::ConfigError&) {
-    }
-    return 0;
+    return arcomp::fuzz::parseAsFile<arcomp::ConfigError>(
+        data, size, "calibration.yaml", [](const std::filesystem::path& file) { arcomp::readCalibration(file); });
 }

@@ -4,10 +4,6 @@
 #include "tools/fuzz/FuzzInput.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    const auto file = arcomp::fuzz::fuzzInputFile(data, size, "station.yaml");
-    try {
-        arcomp::loadStationConfig(file);
-    } catch (const arcomp::ConfigError&) {
-    }
-    return 0;
+    return arcomp::fuzz::parseAsFile<arcomp::ConfigError>(
+        data, size, "station.yaml", [](const std::filesystem::path& file) { arcomp::loadStationConfig(file); });
 }

@@ -5,10 +5,6 @@
 #include "tools/fuzz/FuzzInput.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    const auto file = arcomp::fuzz::fuzzInputFile(data, size, "model.gltf");
-    try {
-        arcomp::parseGltf(file);
-    } catch (const arcomp::ModelError&) {
-    }
-    return 0;
+    return arcomp::fuzz::parseAsFile<arcomp::ModelError>(
+        data, size, "model.gltf", [](const std::filesystem::path& file) { arcomp::parseGltf(file); });
 }

@@ -3,10 +3,6 @@
 #include "tools/fuzz/FuzzInput.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    const auto file = arcomp::fuzz::fuzzInputFile(data, size, "model.obj");
-    try {
-        arcomp::parseObj(file);
-    } catch (const arcomp::ModelError&) {
-    }
-    return 0;
+    return arcomp::fuzz::parseAsFile<arcomp::ModelError>(
+        data, size, "model.obj", [](const std::filesystem::path& file) { arcomp::parseObj(file); });
 }
