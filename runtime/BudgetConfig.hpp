@@ -21,16 +21,17 @@
 
 namespace arcomp {
 
+// Defaults are the controller's own.
 struct BudgetConfig {
     bool enabled = false;
-    double targetMs = 1000.0 / 30.0;
-    bool changeLevel = true;
-    bool changeShading = true;
+    double targetMs = BudgetSettings{}.targetMs;
+    bool changeLevel = BudgetSettings{}.changeLevel;
+    bool changeShading = BudgetSettings{}.changeShading;
     std::filesystem::path calibration;
-    bool refit = true;               // re-fit the cost model while running
-    double upgradeMarginPct = 2.0;   // hysteresis band below the target
-    int holdFrames = 4;
-    float eccentricityFloor = 0.25f; // 1: importance by screen size alone
+    bool refit = true;                                              // re-fit the cost model while running
+    double upgradeMarginPct = 100.0 * BudgetSettings{}.upgradeMargin;  // hysteresis band below the target
+    int holdFrames = BudgetSettings{}.holdFrames;
+    float eccentricityFloor = BudgetSettings{}.eccentricityFloor;   // 1: importance by screen size alone
 };
 
 void readBudgetConfig(YamlMap& root, BudgetConfig& out);
