@@ -1,11 +1,21 @@
 #include "runtime/FrameTimer.hpp"
 
+#include <ctime>
+
 namespace arcomp {
 
 using namespace gl;
 
-FrameTimer::FrameTimer(TimerMode mode) {
-    if (mode != TimerMode::Finish && hasTimerQueries()) glGenQueries(1, &query_);
+namespace {
+double processCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
+}
+} // namespace
+
+FrameTimer::FrameTimer(TimerMode mode) : processCpu_(mode == TimerMode::ProcessCpu) {
+    if ((mode == TimerMode::Auto || mode == TimerMode::Query) && hasTimerQueries()) glGenQueries(1, &query_);
 }
 
 FrameTimer::~FrameTimer() {
@@ -19,6 +29,7 @@ void FrameTimer::begin() {
     }
     glFinish();
     start_ = std::chrono::steady_clock::now();
+    startCpuMs_ = processCpuMs();
 }
 
 double FrameTimer::end() {
@@ -29,6 +40,7 @@ double FrameTimer::end() {
         return static_cast<double>(ns) * 1e-6;
     }
     glFinish();
+    if (processCpu_) return processCpuMs() - startCpuMs_;
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
 }
 

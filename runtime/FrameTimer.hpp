@@ -10,7 +10,11 @@
 // On Mesa's llvmpipe the "GPU" is the CPU: vertex work runs inside the draw
 // calls on the calling thread and only rasterization is deferred, so a
 // timer query there can leave out part of what the frame costs. Finish mode
-// measures what a viewer waits for.
+// measures what a viewer waits for. ProcessCpu mode counts the CPU time
+// this process (all its threads, the rasterizer's included) spent between
+// the two glFinish calls: on a software rasterizer that is the device's busy
+// time, as a timer query gives it on a GPU, and time other programs took
+// from the machine's cores is left out of it, as it is on a GPU.
 
 #include "runtime/GlApi.hpp"
 
@@ -19,7 +23,7 @@
 
 namespace arcomp {
 
-enum class TimerMode { Auto, Query, Finish };
+enum class TimerMode { Auto, Query, Finish, ProcessCpu };
 
 class FrameTimer {
 public:
@@ -34,10 +38,14 @@ public:
     // Waits for the work issued since begin() and gives its milliseconds.
     double end();
     bool usesQueries() const { return query_ != 0; }
-    std::string_view method() const { return usesQueries() ? "gl_time_elapsed" : "wall_glfinish"; }
+    std::string_view method() const {
+        return usesQueries() ? "gl_time_elapsed" : processCpu_ ? "process_cpu_glfinish" : "wall_glfinish";
+    }
 
 private:
     GLuint query_ = 0;
+    bool processCpu_ = false;
+    double startCpuMs_ = 0.0;
     std::chrono::steady_clock::time_point start_{};
 };
 

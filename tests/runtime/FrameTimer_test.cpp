@@ -8,8 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstring>
+#include <thread>
 
 using namespace arcomp;
 
@@ -52,6 +54,25 @@ TEST_P(FrameTimerOnEachApi, usesQueriesOnlyWhereTheDriverHasThemAndTimesTheWork)
         EXPECT_TRUE(std::isfinite(ms));
         EXPECT_GE(ms, 0.0);
     }
+}
+
+// A wait inside the frame is a viewer's time but not the device's: the
+// wall clock counts it, the process's CPU time does not.
+TEST_P(FrameTimerOnEachApi, processCpuModeLeavesOutTimeTheProcessDidNotRun) {
+    auto context = HeadlessContext::create(GetParam());
+    FrameTimer cpu(TimerMode::ProcessCpu), wall(TimerMode::Finish);
+    EXPECT_FALSE(cpu.usesQueries());
+    EXPECT_EQ(cpu.method(), "process_cpu_glfinish");
+    EXPECT_EQ(wall.method(), "wall_glfinish");
+    const auto frameWithAWait = [](FrameTimer& t) {
+        t.begin();
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        return t.end();
+    };
+    EXPECT_GE(frameWithAWait(wall), 200.0);
+    const double cpuMs = frameWithAWait(cpu);
+    EXPECT_GE(cpuMs, 0.0);
+    EXPECT_LT(cpuMs, 100.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Apis, FrameTimerOnEachApi, ::testing::Values(GlRequest::Gl33, GlRequest::Es3),

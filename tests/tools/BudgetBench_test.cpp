@@ -68,3 +68,11 @@ TEST(BudgetBench, badOptionsAreBadInput) {
     EXPECT_EQ(run("bench budget --frames 1 --out " + std::string(ARCOMP_TEST_OUTPUT) + "/bench-budget-bad").code, 2);
     EXPECT_EQ(run("bench budget --timer sundial --out " + std::string(ARCOMP_TEST_OUTPUT) + "/bench-budget-bad").code, 2);
 }
+
+TEST(BudgetBench, cpuTimerIsTheOneTheRunUsesAndReports) {
+    const std::filesystem::path out = std::filesystem::path(ARCOMP_TEST_OUTPUT) / "bench-budget-cpu";
+    const auto r = run("bench budget --timer cpu --frames 4 --size 160x90 --mountains 4 --scene-frames 2 --target-ms 5 --out " +
+                       out.string());
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_NE(lastLine(r.out).find("\"timer\":\"process_cpu_glfinish\""), std::string::npos) << r.out;
+}

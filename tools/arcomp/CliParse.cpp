@@ -40,4 +40,12 @@ glm::vec3 parseVec3(const std::string& text, const std::string& option) {
     return v;
 }
 
+TimerMode parseTimerMode(const std::string& text, const std::string& option) {
+    if (text == "finish") return TimerMode::Finish;
+    if (text == "cpu") return TimerMode::ProcessCpu;
+    if (text == "query") return TimerMode::Query;
+    if (text == "auto") return TimerMode::Auto;
+    throw InputError(option + " '" + text + "': expected finish, cpu, query or auto");
+}
+
 } // namespace arcomp

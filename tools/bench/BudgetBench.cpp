@@ -178,8 +178,7 @@ int run(const Options& o) {
     if (!(o.controller.upgradeMargin >= 0.0 && o.controller.upgradeMargin <= 0.5))
         throw InputError("--upgrade-margin must lie in 0..0.5");
     if (o.controller.holdFrames < 0 || o.controller.holdFrames > 10000) throw InputError("--hold-frames must lie in 0..10000");
-    if (o.timer != "auto" && o.timer != "query" && o.timer != "finish")
-        throw InputError("--timer '" + o.timer + "': expected auto, query or finish");
+    const TimerMode timerMode = parseTimerMode(o.timer, "--timer");
     const std::filesystem::path out(o.out);
     std::filesystem::create_directories(out);
 
@@ -190,7 +189,7 @@ int run(const Options& o) {
     RenderTarget target(size);
     target.bind();
     Renderer renderer;
-    FrameTimer timer(o.timer == "finish" ? TimerMode::Finish : o.timer == "query" ? TimerMode::Query : TimerMode::Auto);
+    FrameTimer timer(timerMode);
 
     // Every level of every mountain reaches the GPU before anything is timed.
     {
@@ -336,7 +335,7 @@ const bool registered = registerBench(
          app.add_option("--frames", o->frames, "frames along the path, per run")->capture_default_str();
          app.add_option("--mountains", o->mountains, "mountains in the field")->capture_default_str();
          app.add_option("--size", o->size, "output size WIDTHxHEIGHT")->capture_default_str();
-         app.add_option("--timer", o->timer, "finish (wall clock to glFinish), auto or query (GL_TIME_ELAPSED where available; on llvmpipe it leaves out most of the work)")
+         app.add_option("--timer", o->timer, kTimerModeHelp)
              ->capture_default_str();
          app.add_option("--scene-frames", o->sceneFrames, "whole frames of the flight scene in the calibration")
              ->capture_default_str();

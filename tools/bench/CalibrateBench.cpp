@@ -32,14 +32,13 @@ struct Options {
 int run(const Options& o) {
     const glm::ivec2 size = parseSize(o.size, "--size");
     if (o.repeats < 1 || o.repeats > 100) throw InputError("--repeats must lie in 1..100");
-    if (o.timer != "auto" && o.timer != "query" && o.timer != "finish")
-        throw InputError("--timer '" + o.timer + "': expected auto, query or finish");
+    const TimerMode timerMode = parseTimerMode(o.timer, "--timer");
     const FlightScene flight = buildFlightScene({.mountains = 1});
     auto context = HeadlessContext::create(GlRequest::Auto);
     RenderTarget target(size);
     target.bind();
     Renderer renderer;
-    FrameTimer timer(o.timer == "finish" ? TimerMode::Finish : o.timer == "query" ? TimerMode::Query : TimerMode::Auto);
+    FrameTimer timer(timerMode);
     const auto t0 = std::chrono::steady_clock::now();
     CalibrationOptions options;
     options.viewport = size;
@@ -73,7 +72,7 @@ const bool registered = registerBench(
          auto o = std::make_shared<Options>();
          app.add_option("--out", o->out, "folder for calibration.yaml")->capture_default_str();
          app.add_option("--size", o->size, "output size WIDTHxHEIGHT")->capture_default_str();
-         app.add_option("--timer", o->timer, "finish (wall clock to glFinish), auto or query (GL_TIME_ELAPSED where available; on llvmpipe it leaves out most of the work)")
+         app.add_option("--timer", o->timer, kTimerModeHelp)
              ->capture_default_str();
          app.add_option("--repeats", o->repeats, "frames per sample (median)")->capture_default_str();
          return [o] { return run(*o); };
