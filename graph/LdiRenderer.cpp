@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <barrier>
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -13,6 +14,9 @@
 namespace arcomp {
 
 namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
 constexpr float kMinRadius = 0.71f;      // reaches the nearest pixel centre from anywhere
 constexpr float kFootprint = 0.71f;      // half a face's diagonal, in point sizes: closes the gaps of a square grid
@@ -322,12 +326,14 @@ void LdiRenderer::frame(const View& view, bool depthSorted) {
         cutBands();
         if (!depthSorted) return;
         // The reference: every drawn point sorted by view depth, farthest first.
+        const Clock::time_point sortStart = Clock::now();
         byDepth_.clear();
         for (std::size_t i = 0; i < n; ++i)
             if (projected_[i].depth >= 0.0f) byDepth_.emplace_back(projected_[i].depth, static_cast<std::uint32_t>(i));
         std::sort(byDepth_.begin(), byDepth_.end(), std::greater<>());
         order_[0].clear();
         for (const auto& [z, id] : byDepth_) order_[0].push_back(id);
+        orderMs_ = msSince(sortStart);
     };
     std::barrier projected(threads_, afterProjection);
     std::barrier ordered(threads_);
@@ -335,11 +341,15 @@ void LdiRenderer::frame(const View& view, bool depthSorted) {
         project(view, worker);
         projected.arrive_and_wait();
         if (!depthSorted) {
+            // Every worker leaves the barriers together: worker 0's clock
+            // spans the whole phase.
+            const Clock::time_point orderStart = Clock::now();
             for (std::size_t l = worker; l < ldis; l += bands_.size()) {
                 order_[l].clear();
                 appendSlotsBackToFront(set_.ldis[l], view.eye, slotBase_[l], order_[l]);
             }
             ordered.arrive_and_wait();
+            if (worker == 0) orderMs_ = msSince(orderStart);
         }
         Band& band = bands_[worker];
         if (merge) {

@@ -67,6 +67,9 @@ public:
 
     // Splats written in the last frame (all buffers together).
     std::size_t lastSplatCount() const { return splatCount_; }
+    // Wall milliseconds the last frame spent putting its points in back-to-
+    // front order: the McMillan walks, or the reference's sort.
+    double lastOrderMs() const { return orderMs_; }
 
 private:
     // What the merge needs of one splat, packed so that it reads the
@@ -137,6 +140,7 @@ private:
     std::vector<std::pair<float, std::uint32_t>> byDepth_;
     std::vector<Band> bands_;
     std::size_t splatCount_ = 0;
+    double orderMs_ = 0.0;
 };
 
 } // namespace arcomp

@@ -14,7 +14,10 @@
 // Times: render_ms_per_frame is the wall-clock median (the issue's figure);
 // render_min_ms the fastest frame; render_cpu_ms_per_frame the median CPU
 // time of the process over the frame (all threads), which a machine shared
-// with other busy users inflates far less than wall time. build_s is the
+// with other busy users inflates far less than wall time. order_ms_per_frame
+// is the part of the frame spent ordering the points (the McMillan walks;
+// for the reference, depth_sort_order_ms_per_frame, its sort): the rest,
+// projection and splatting, is the same work in both. build_s is the
 // registration into the LDIs (the paper's "LDI generation"), not the
 // voxelization.
 
@@ -103,7 +106,7 @@ struct Options {
 
 struct Measured {
     int ldis;
-    double buildS, renderMs, renderMinMs, renderCpuMs, wrongPct;
+    double buildS, renderMs, renderMinMs, renderCpuMs, orderMs, wrongPct;
     std::size_t splats;
 };
 
@@ -126,15 +129,15 @@ int benchLdi(const Options& o) {
     for (int n : counts) {
         t0 = Clock::now();
         sets.push_back(buildLdis(cloud, ldiCamerasAround(bound, n, cloud.pointSize)));
-        measured.push_back({n, msSince(t0) / 1000.0, 0, 0, 0, 0, 0});
+        measured.push_back({n, msSince(t0) / 1000.0, 0, 0, 0, 0, 0, 0});
         std::fprintf(stderr, "%d LDIs built in %.3f s (%zu points unregistered)\n", n, measured.back().buildS,
                      sets.back().unregistered);
     }
     LdiRenderer reference(sets[0], o.threads);
     std::vector<std::unique_ptr<LdiRenderer>> renderers;
     for (const LdiSet& s : sets) renderers.push_back(std::make_unique<LdiRenderer>(s, o.threads));
-    std::vector<std::vector<double>> times(counts.size()), cpuTimes(counts.size());
-    std::vector<double> sortTimes, sortCpuTimes;
+    std::vector<std::vector<double>> times(counts.size()), cpuTimes(counts.size()), orderTimes(counts.size());
+    std::vector<double> sortTimes, sortCpuTimes, sortOrderTimes;
     std::vector<Difference> diffs(counts.size());
     reference.renderDepthSorted(circlingView(bound, 0, o.frames, o.size));  // warm the buffers
     for (auto& r : renderers) r->render(circlingView(bound, 0, o.frames, o.size));
@@ -145,12 +148,14 @@ int benchLdi(const Options& o) {
         const PointImage& ref = reference.renderDepthSorted(view);
         sortCpuTimes.push_back(cpuMs() - c0);
         sortTimes.push_back(msSince(t0));
+        sortOrderTimes.push_back(reference.lastOrderMs());
         for (std::size_t i = 0; i < counts.size(); ++i) {
             t0 = Clock::now();
             c0 = cpuMs();
             const PointImage& img = renderers[i]->render(view);
             cpuTimes[i].push_back(cpuMs() - c0);
             times[i].push_back(msSince(t0));
+            orderTimes[i].push_back(renderers[i]->lastOrderMs());
             compare(img, ref, diffs[i]);
             measured[i].splats = renderers[i]->lastSplatCount();
         }
@@ -158,11 +163,12 @@ int benchLdi(const Options& o) {
     }
     std::fprintf(stderr, "\n");
     const double sortMs = median(sortTimes), sortMinMs = *std::min_element(sortTimes.begin(), sortTimes.end());
-    const double sortCpuMs = median(sortCpuTimes);
+    const double sortCpuMs = median(sortCpuTimes), sortOrderMs = median(sortOrderTimes);
     for (std::size_t i = 0; i < counts.size(); ++i) {
         measured[i].renderMs = median(times[i]);
         measured[i].renderMinMs = *std::min_element(times[i].begin(), times[i].end());
         measured[i].renderCpuMs = median(cpuTimes[i]);
+        measured[i].orderMs = median(orderTimes[i]);
         measured[i].wrongPct = diffs[i].pct();
     }
 
@@ -216,12 +222,14 @@ int benchLdi(const Options& o) {
     json << "{\"bench\":\"ldi\",\"voxels\":" << grid.size() << ",\"grid\":" << o.resolution << ",\"output\":\"" << o.size
          << "x" << o.size << "\",\"frames\":" << o.frames << ",\"threads\":" << o.threads
          << ",\"tolerance_levels\":" << kTolerance << ",\"depth_sort_ms_per_frame\":" << sortMs
-         << ",\"depth_sort_min_ms\":" << sortMinMs << ",\"depth_sort_cpu_ms_per_frame\":" << sortCpuMs << ",\"ldi\":[";
+         << ",\"depth_sort_min_ms\":" << sortMinMs << ",\"depth_sort_cpu_ms_per_frame\":" << sortCpuMs
+         << ",\"depth_sort_order_ms_per_frame\":" << sortOrderMs << ",\"ldi\":[";
     for (std::size_t i = 0; i < measured.size(); ++i) {
         const Measured& m = measured[i];
         json << (i ? "," : "") << "{\"ldis\":" << m.ldis << ",\"build_s\":" << m.buildS
              << ",\"render_ms_per_frame\":" << m.renderMs << ",\"render_min_ms\":" << m.renderMinMs
              << ",\"render_cpu_ms_per_frame\":" << m.renderCpuMs << ",\"speedup_vs_depth_sort\":" << sortMs / m.renderMs
+             << ",\"order_ms_per_frame\":" << m.orderMs << ",\"order_speedup_vs_depth_sort\":" << sortOrderMs / m.orderMs
              << ",\"wrong_pixels_pct\":" << m.wrongPct << ",\"splats\":" << m.splats << "}";
     }
     json << "],\"red_black\":{\"wrong_pixels_pct_1_ldi\":" << rbDiff1.pct() << ",\"wrong_pixels_pct_6_ldis\":" << rbDiff6.pct()
