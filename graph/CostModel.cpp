@@ -59,18 +59,10 @@ double CostModel::frameMs(double itemsMs) const { return gain() * itemsMs + over
 // changed later needs no reset.
 void CostModel::observe(double itemsMs, double measuredMs) {
     if (!refit_ || !std::isfinite(measuredMs) || !std::isfinite(itemsMs) || itemsMs < kMinItemsMs) return;
-    // The frame's own gain, (measured - overhead) / items; the median of the
-    // last three, kept within a factor kMaxSampleRatio of the current gain
-    // and within the bounds.
-    recent_[recentCount_++ % recent_.size()] = (measuredMs - overheadMs) / itemsMs;
-    double median = recent_[(recentCount_ - 1) % recent_.size()];
-    if (recentCount_ >= recent_.size()) {
-        std::array<double, 3> sorted = recent_;
-        std::sort(sorted.begin(), sorted.end());
-        median = sorted[1];
-    }
+    // The frame's own gain, (measured - overhead) / items, kept within a
+    // factor kMaxSampleRatio of the current gain and within the bounds.
     const double current = gain();
-    const double sample = std::clamp(median, std::max(kMinGain, current / kMaxSampleRatio),
+    const double sample = std::clamp((measuredMs - overheadMs) / itemsMs, std::max(kMinGain, current / kMaxSampleRatio),
                                      std::min(kMaxGain, current * kMaxSampleRatio));
     const double weight = std::sqrt(itemsMs / (itemsMs + std::max(overheadMs, 0.0)));
     fit_.add(std::array{weight}, weight * sample);
@@ -84,7 +76,6 @@ void CostModel::enableRefit(bool on, double forgetting) {
 
 void CostModel::resetFit() {
     fit_.reset(std::array{1.0}, std::array{kGainVariance});
-    recentCount_ = 0;
 }
 
 double CostModel::gain() const { return refit_ ? std::clamp(fit_.parameters()[0], kMinGain, kMaxGain) : 1.0; }
