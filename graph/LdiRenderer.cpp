@@ -1,5 +1,6 @@
 #include "graph/LdiRenderer.hpp"
 
+#include "graph/ElapsedTime.hpp"
 #include "graph/McMillanOrder.hpp"
 
 #include <algorithm>
@@ -14,9 +15,6 @@
 namespace arcomp {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
 constexpr float kMinRadius = 0.71f;      // reaches the nearest pixel centre from anywhere
 constexpr float kFootprint = 0.71f;      // half a face's diagonal, in point sizes: closes the gaps of a square grid
@@ -326,7 +324,7 @@ void LdiRenderer::frame(const View& view, bool depthSorted) {
         cutBands();
         if (!depthSorted) return;
         // The reference: every drawn point sorted by view depth, farthest first.
-        const Clock::time_point sortStart = Clock::now();
+        const auto sortStart = std::chrono::steady_clock::now();
         byDepth_.clear();
         for (std::size_t i = 0; i < n; ++i)
             if (projected_[i].depth >= 0.0f) byDepth_.emplace_back(projected_[i].depth, static_cast<std::uint32_t>(i));
@@ -343,7 +341,7 @@ void LdiRenderer::frame(const View& view, bool depthSorted) {
         if (!depthSorted) {
             // Every worker leaves the barriers together: worker 0's clock
             // spans the whole phase.
-            const Clock::time_point orderStart = Clock::now();
+            const auto orderStart = std::chrono::steady_clock::now();
             for (std::size_t l = worker; l < ldis; l += bands_.size()) {
                 order_[l].clear();
                 appendSlotsBackToFront(set_.ldis[l], view.eye, slotBase_[l], order_[l]);

@@ -1,18 +1,10 @@
 #include "runtime/FrameTimer.hpp"
 
-#include <ctime>
+#include "graph/ElapsedTime.hpp"
 
 namespace arcomp {
 
 using namespace gl;
-
-namespace {
-double processCpuMs() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
-}
-} // namespace
 
 FrameTimer::FrameTimer(TimerMode mode) : processCpu_(mode == TimerMode::ProcessCpu) {
     if ((mode == TimerMode::Auto || mode == TimerMode::Query) && hasTimerQueries()) glGenQueries(1, &query_);

@@ -8,6 +8,7 @@
 // Targets (issue 4): build < 1 s at 10,000 objects and < 20 s at 100,000;
 // select <= 2 ms a frame and rebuild <= 5 ms a frame at 100,000.
 
+#include "graph/ElapsedTime.hpp"
 #include "graph/GroupingNodes.hpp"
 #include "graph/SelectPass.hpp"
 #include "tools/arcomp/Command.hpp"
@@ -31,7 +32,6 @@ struct Options {
 };
 
 using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 constexpr float kSpacing = 200.0f;  // cm between grid points
 constexpr float kFrameSeconds = 1.0f / 30.0f;

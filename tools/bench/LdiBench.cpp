@@ -21,6 +21,7 @@
 // registration into the LDIs (the paper's "LDI generation"), not the
 // voxelization.
 
+#include "graph/ElapsedTime.hpp"
 #include "graph/LdiRenderer.hpp"
 #include "graph/ProceduralTree.hpp"
 #include "graph/Voxelizer.hpp"
@@ -32,7 +33,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -45,15 +45,6 @@ namespace {
 constexpr int kTolerance = 8;
 
 using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
-
-// CPU time of the whole process (all its threads): under contention from
-// other users of the machine it grows far less than wall time does.
-double cpuMs() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
-}
 
 // --- Measuring ------------------------------------------------------------
 
@@ -144,16 +135,16 @@ int benchLdi(const Options& o) {
     for (int f = 0; f < o.frames; ++f) {
         const View view = circlingView(bound, f, o.frames, o.size);
         t0 = Clock::now();
-        double c0 = cpuMs();
+        double c0 = processCpuMs();
         const PointImage& ref = reference.renderDepthSorted(view);
-        sortCpuTimes.push_back(cpuMs() - c0);
+        sortCpuTimes.push_back(processCpuMs() - c0);
         sortTimes.push_back(msSince(t0));
         sortOrderTimes.push_back(reference.lastOrderMs());
         for (std::size_t i = 0; i < counts.size(); ++i) {
             t0 = Clock::now();
-            c0 = cpuMs();
+            c0 = processCpuMs();
             const PointImage& img = renderers[i]->render(view);
-            cpuTimes[i].push_back(cpuMs() - c0);
+            cpuTimes[i].push_back(processCpuMs() - c0);
             times[i].push_back(msSince(t0));
             orderTimes[i].push_back(renderers[i]->lastOrderMs());
             compare(img, ref, diffs[i]);

@@ -14,6 +14,7 @@
 // With --config, that station's video is forced to loop and its file
 // outputs are dropped, so a soak never fills a disk.
 
+#include "graph/ElapsedTime.hpp"
 #include "runtime/GlContext.hpp"
 #include "runtime/ReplayInput.hpp"
 #include "runtime/StationRunner.hpp"
@@ -56,12 +57,6 @@ double residentMb() {
     long pages = 0, resident = 0;
     statm >> pages >> resident;
     return static_cast<double>(resident) * static_cast<double>(::sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
-}
-
-double processCpuMs() {
-    timespec t{};
-    ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
 }
 
 int openFds() {

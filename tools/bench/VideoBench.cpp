@@ -11,6 +11,7 @@
 //  - drops: the same source with a consumer at 10 Hz; the slot holds one
 //    frame, so everything in between is dropped and counted, never queued.
 
+#include "graph/ElapsedTime.hpp"
 #include "tools/arcomp/Command.hpp"
 #include "video/CaptureThread.hpp"
 #include "video/FileSource.hpp"
@@ -33,8 +34,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 namespace fs = std::filesystem;
-
-double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 struct DecodeTiming {
     int frames = 0;
