@@ -55,6 +55,8 @@ TEST(BudgetBench, tinyFlightWritesJsonWithTheIssuesFieldsAndCsvAndPlots) {
                               "prediction_error_pct_median"})
         EXPECT_NE(managed.find(std::string("\"") + field + "\":"), std::string::npos) << field << " in " << managed;
     EXPECT_NE(json.find("\"targets_met\":"), std::string::npos) << json;
+    // The default rasterizes on the drawing thread, and the JSON says so.
+    EXPECT_NE(json.find("\"raster_threads\":0,"), std::string::npos) << json;
 
     EXPECT_EQ(lines(out / "budget_frames.csv"), 1u + 8u);  // header and one row per frame
     for (const char* png : {"budget_frame_time.png", "budget_prediction.png"}) {
@@ -67,6 +69,12 @@ TEST(BudgetBench, tinyFlightWritesJsonWithTheIssuesFieldsAndCsvAndPlots) {
 TEST(BudgetBench, badOptionsAreBadInput) {
     EXPECT_EQ(run("bench budget --frames 1 --out " + std::string(ARCOMP_TEST_OUTPUT) + "/bench-budget-bad").code, 2);
     EXPECT_EQ(run("bench budget --timer sundial --out " + std::string(ARCOMP_TEST_OUTPUT) + "/bench-budget-bad").code, 2);
+    for (const char* threads : {"-2", "65", "two"})
+        EXPECT_EQ(run(std::string("bench budget --raster-threads ") + threads + " --out " + ARCOMP_TEST_OUTPUT +
+                      "/bench-budget-bad")
+                      .code,
+                  2)
+            << threads;
 }
 
 TEST(BudgetBench, cpuTimerIsTheOneTheRunUsesAndReports) {
