@@ -31,8 +31,6 @@ int ceilToInt(float v) {
     return i + (static_cast<float>(i) < v);
 }
 
-std::uint8_t toByte(float v) { return static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); }
-
 } // namespace
 
 std::size_t PointImage::coveredPixels() const {
@@ -42,22 +40,19 @@ std::size_t PointImage::coveredPixels() const {
 }
 
 LdiRenderer::LdiRenderer(const LdiSet& set, int threads) : set_(set), threads_(std::max(1, threads)) {
-    const auto rgb8 = [](const glm::vec4& c, std::size_t ldi) {
-        return glm::u8vec4(glm::round(glm::clamp(glm::vec3(c), 0.0f, 1.0f) * 255.0f), static_cast<std::uint8_t>(ldi));
-    };
     const PointCloud& cloud = set_.cloud;
-    points_.positions = cloud.positions;
-    for (const glm::vec4& c : cloud.colors) {
-        points_.colors.push_back(rgb8(c, 0));
-        points_.alphas.push_back(c.a);
-    }
+    const auto add = [&](Items& items, std::uint32_t id, std::size_t ldi) {
+        const glm::vec4& c = cloud.colors[id];
+        const glm::u8vec4 rgb8(glm::round(glm::clamp(glm::vec3(c), 0.0f, 1.0f) * 255.0f), static_cast<std::uint8_t>(ldi));
+        items.positions.push_back(cloud.positions[id]);
+        items.colors.push_back(rgb8);
+        items.alphas.push_back(c.a);
+        items.premultiplied.push_back(Accumulator::premultiply(rgb8, c.a));
+    };
+    for (std::uint32_t id = 0; id < cloud.positions.size(); ++id) add(points_, id, 0);
     for (std::size_t l = 0; l < set_.ldis.size(); ++l) {
         slotBase_.push_back(static_cast<std::uint32_t>(slots_.positions.size()));
-        for (std::uint32_t id : set_.ldis[l].points) {
-            slots_.positions.push_back(cloud.positions[id]);
-            slots_.colors.push_back(rgb8(cloud.colors[id], l));
-            slots_.alphas.push_back(cloud.colors[id].a);
-        }
+        for (std::uint32_t id : set_.ldis[l].points) add(slots_, id, l);
     }
 }
 
@@ -185,19 +180,23 @@ void LdiRenderer::compositeInOrder(Band& band, const std::vector<std::uint32_t>&
     clearRowsOutsideReach(band);
     const std::size_t w = static_cast<std::size_t>(image_.width);
     const std::size_t p0 = static_cast<std::size_t>(band.reach0) * w, p1 = static_cast<std::size_t>(band.reach1) * w;
-    band.accumulators.assign(p1 - p0, Accumulator{});
-    Accumulator* acc = band.accumulators.data() - p0;
+    band.colors.assign(p1 - p0, Float4{0.0f, 0.0f, 0.0f, 0.0f});
+    band.depths.assign(p1 - p0, std::numeric_limits<float>::infinity());
+    Float4* color = band.colors.data() - p0;
+    float* depth = band.depths.data() - p0;
     std::size_t n = 0;
     for (std::uint32_t id : ids) {
-        const glm::u8vec4 c = items_->colors[id];
-        const float a = items_->alphas[id], z = projected_[id].depth;
+        const Float4 src = items_->premultiplied[id];
+        const float z = projected_[id].depth;
         footprint(id, band.reach0, band.reach1, [&](std::uint32_t pixel, float weight) {
-            acc[pixel].over(c, a * weight, z);
+            const Float4 s = src * weight;
+            color[pixel] = s + color[pixel] * (1.0f - s[3]);
+            depth[pixel] = z < depth[pixel] ? z : depth[pixel];
             ++n;
         });
     }
     band.splats = n;
-    for (std::size_t p = p0; p < p1; ++p) store(p, acc[p]);
+    for (std::size_t p = p0; p < p1; ++p) store(p, color[p], depth[p]);
 }
 
 // The band's n projection buffers: count each pixel's splats, turn the
@@ -283,15 +282,20 @@ void LdiRenderer::mergeBuffers(Band& band) {
             }
             for (std::uint32_t k = runs[0].next; k < runs[0].end; ++k) acc.over(e[k].colorLdi, e[k].alpha, e[k].depth);
         }
-        store(p, acc);
+        store(p, acc.color, acc.depth);
     }
 }
 
-inline void LdiRenderer::store(std::size_t p, const Accumulator& acc) {
+// Each channel clamped to [0, 1] and rounded to the nearest of 0..255, all four at once.
+inline void LdiRenderer::store(std::size_t p, Float4 color, float depth) {
+    using Int4 = std::int32_t __attribute__((vector_size(16)));
+    Float4 v = color * 255.0f + 0.5f;
+    v = v < 0.0f ? Float4{} : v;
+    v = v > 255.0f ? Float4{} + 255.0f : v;
+    const Int4 bytes = __builtin_convertvector(v, Int4);
     std::uint8_t* out = &image_.rgba[p * 4];
-    for (int c = 0; c < 3; ++c) out[c] = toByte(acc.color[c]);
-    out[3] = toByte(acc.alpha);
-    image_.depth[p] = acc.depth;
+    for (int c = 0; c < 4; ++c) out[c] = static_cast<std::uint8_t>(bytes[c]);
+    image_.depth[p] = depth;
 }
 
 inline void LdiRenderer::clearPixel(std::size_t p) {
