@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <barrier>
+#include <bit>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <numeric>
@@ -29,6 +31,25 @@ int floorToInt(float v) {
 int ceilToInt(float v) {
     const int i = static_cast<int>(v);
     return i + (static_cast<float>(i) < v);
+}
+
+using Float4 = LdiRenderer::Float4;
+using Int4 = std::int32_t __attribute__((vector_size(16)));
+
+// Each lane clamped to [0, 1] and rounded to the nearest of 0..255.
+Int4 toBytes(Float4 v) {
+    v = v * 255.0f + 0.5f;
+    v = v < 0.0f ? Float4{} : v;
+    v = v > 255.0f ? Float4{} + 255.0f : v;
+    return __builtin_convertvector(v, Int4);
+}
+
+// Bytes 0..255 of R, G, B and A as one RGBA8 pixel in memory order (lanes
+// of four pixels at once, or one); stored through memcpy, not byte by byte,
+// which stalled on reading back what had just been written.
+template <class T> T packRgba8(T r, T g, T b, T a) {
+    static_assert(std::endian::native == std::endian::little, "RGBA8 packing assumes a little-endian machine");
+    return r | g << 8 | b << 16 | a << 24;
 }
 
 } // namespace
@@ -176,27 +197,79 @@ template <class Emit> void LdiRenderer::footprint(std::uint32_t id, int rowLo, i
 // One stream already in back-to-front order needs no buffers: splats are
 // composited as they come. Each thread owns a band of rows and walks the
 // whole stream, which keeps the order without any locking.
+//
+// A splat covers a few pixels in each of a few rows, a different number for
+// each point: walking them one by one mispredicted a branch at the end of
+// nearly every row. Here the colour channels lie in planes, and four
+// neighbouring pixels of a row are composited at once, the pixels outside
+// the disc with weight 0, which "over" leaves as they were. Rows are
+// kPlanePad pixels wider than the image, so that the last group of a row
+// never reaches into the next (another thread's, at a band's edge).
 void LdiRenderer::compositeInOrder(Band& band, const std::vector<std::uint32_t>& ids) {
+    const auto load = [](const float* p) {
+        Float4 v;
+        std::memcpy(&v, p, sizeof v);
+        return v;
+    };
+    const auto save = [](float* p, Float4 v) { std::memcpy(p, &v, sizeof v); };
     clearRowsOutsideReach(band);
-    const std::size_t w = static_cast<std::size_t>(image_.width);
-    const std::size_t p0 = static_cast<std::size_t>(band.reach0) * w, p1 = static_cast<std::size_t>(band.reach1) * w;
-    band.colors.assign(p1 - p0, Float4{0.0f, 0.0f, 0.0f, 0.0f});
-    band.depths.assign(p1 - p0, std::numeric_limits<float>::infinity());
-    Float4* color = band.colors.data() - p0;
-    float* depth = band.depths.data() - p0;
+    const int w = image_.width, rowLo = band.reach0, rowHi = band.reach1;
+    const std::size_t stride = static_cast<std::size_t>(w + kPlanePad), rows = static_cast<std::size_t>(rowHi - rowLo);
+    const std::size_t plane = rows * stride;
+    band.planes.assign(plane * 5, 0.0f);
+    std::fill(band.planes.begin() + static_cast<std::ptrdiff_t>(plane * 4), band.planes.end(),
+              std::numeric_limits<float>::infinity());
+    float* const r = band.planes.data() - static_cast<std::size_t>(rowLo) * stride;
+    float *const g = r + plane, *const b = g + plane, *const a = b + plane, *const depth = a + plane;
+    const Float4 lane{0.5f, 1.5f, 2.5f, 3.5f};
     std::size_t n = 0;
     for (std::uint32_t id : ids) {
+        const Projected& q = projected_[id];
+        if (q.depth < 0.0f) continue;
+        const glm::vec2 s = q.screen;
+        const float radius = q.radius, r2 = radius * radius;
+        if (s.x + radius < 0.0f || s.y + radius < static_cast<float>(rowLo) || s.x - radius > static_cast<float>(w) ||
+            s.y - radius > static_cast<float>(rowHi))
+            continue;
+        // Pixels whose centres lie in the disc, as in rowSpans.
+        const int y0 = std::max(rowLo, ceilToInt(s.y - radius - 0.5f));
+        const int y1 = std::min(rowHi - 1, floorToInt(s.y + radius - 0.5f));
+        const int x0 = std::max(0, ceilToInt(s.x - radius - 0.5f));
+        const int x1 = std::min(w - 1, floorToInt(s.x + radius - 0.5f));
         const Float4 src = items_->premultiplied[id];
-        const float z = projected_[id].depth;
-        footprint(id, band.reach0, band.reach1, [&](std::uint32_t pixel, float weight) {
-            const Float4 s = src * weight;
-            color[pixel] = s + color[pixel] * (1.0f - s[3]);
-            depth[pixel] = z < depth[pixel] ? z : depth[pixel];
-            ++n;
-        });
+        const float invR2 = kRimFalloff / r2, z = q.depth;
+        for (int x = x0; x <= x1; x += 4) {
+            const Float4 dx = lane + static_cast<float>(x) - s.x;
+            const Float4 dx2 = dx * dx;
+            const Int4 inRow = Int4{0, 1, 2, 3} + x <= x1;
+            for (int y = y0; y <= y1; ++y) {
+                const float dy = static_cast<float>(y) + 0.5f - s.y;
+                const Float4 d2 = dx2 + dy * dy;
+                const Int4 inside = (d2 <= r2) & inRow;
+                const Float4 weight = inside ? 1.0f - d2 * invR2 : Float4{};
+                const Float4 alpha = weight * src[3], keep = 1.0f - alpha;
+                const std::size_t at = static_cast<std::size_t>(y) * stride + static_cast<std::size_t>(x);
+                save(r + at, load(r + at) * keep + weight * src[0]);
+                save(g + at, load(g + at) * keep + weight * src[1]);
+                save(b + at, load(b + at) * keep + weight * src[2]);
+                save(a + at, load(a + at) * keep + alpha);
+                const Float4 d = load(depth + at);
+                save(depth + at, inside && z < d ? Float4{} + z : d);
+                n -= static_cast<std::size_t>(static_cast<std::int64_t>(inside[0] + inside[1] + inside[2] + inside[3]));
+            }
+        }
     }
     band.splats = n;
-    for (std::size_t p = p0; p < p1; ++p) store(p, color[p], depth[p]);
+    // Four pixels at a time into the image; the padding is read, not written.
+    for (int y = rowLo; y < rowHi; ++y)
+        for (int x = 0; x < w; x += 4) {
+            const std::size_t at = static_cast<std::size_t>(y) * stride + static_cast<std::size_t>(x);
+            const std::size_t pixel = static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x);
+            const Int4 rgba = packRgba8(toBytes(load(r + at)), toBytes(load(g + at)), toBytes(load(b + at)), toBytes(load(a + at)));
+            const std::size_t lanes = static_cast<std::size_t>(std::min(4, w - x));
+            std::memcpy(&image_.rgba[pixel * 4], &rgba, lanes * 4);
+            std::memcpy(&image_.depth[pixel], depth + at, lanes * sizeof(float));
+        }
 }
 
 // The band's n projection buffers: count each pixel's splats, turn the
@@ -286,15 +359,10 @@ void LdiRenderer::mergeBuffers(Band& band) {
     }
 }
 
-// Each channel clamped to [0, 1] and rounded to the nearest of 0..255, all four at once.
 inline void LdiRenderer::store(std::size_t p, Float4 color, float depth) {
-    using Int4 = std::int32_t __attribute__((vector_size(16)));
-    Float4 v = color * 255.0f + 0.5f;
-    v = v < 0.0f ? Float4{} : v;
-    v = v > 255.0f ? Float4{} + 255.0f : v;
-    const Int4 bytes = __builtin_convertvector(v, Int4);
-    std::uint8_t* out = &image_.rgba[p * 4];
-    for (int c = 0; c < 4; ++c) out[c] = static_cast<std::uint8_t>(bytes[c]);
+    const Int4 v = toBytes(color);
+    const std::int32_t rgba = packRgba8(v[0], v[1], v[2], v[3]);
+    std::memcpy(&image_.rgba[p * 4], &rgba, sizeof rgba);
     image_.depth[p] = depth;
 }
 

@@ -30,7 +30,8 @@
 //
 // With one LDI (and for the depth-sorted reference) there is one stream,
 // already back to front, so its splats are composited as they come and
-// the buffers are skipped.
+// the buffers are skipped; colour and depth then lie in planes, and each
+// splat is composited four pixels of a row at a time.
 //
 // Two threads by default: each frame is one parallel region (projection,
 // then McMillan order with LDIs spread over the threads, then the bands).
@@ -60,6 +61,11 @@ struct PointImage {
 
 class LdiRenderer {
 public:
+    // Four floats in one SIMD register (SSE on x86-64, NEON on Arm), by the
+    // compiler's vector extension: one splat's "over" is then three vector
+    // operations instead of a dozen scalar ones.
+    using Float4 = float __attribute__((vector_size(16)));
+
     explicit LdiRenderer(const LdiSet& set, int threads = 2);
 
     const PointImage& render(const View& view);
@@ -79,10 +85,6 @@ private:
         float alpha;          // the point's alpha times the footprint weight
         glm::u8vec4 colorLdi; // straight RGB8, and the LDI it came from in .w
     };
-    // Four floats in one SIMD register (SSE on x86-64, NEON on Arm), by the
-    // compiler's vector extension: one splat's "over" is then three vector
-    // operations instead of a dozen scalar ones.
-    using Float4 = float __attribute__((vector_size(16)));
     struct Accumulator {
         Float4 color{0.0f, 0.0f, 0.0f, 0.0f};  // premultiplied RGB, alpha in [3]
         float depth = std::numeric_limits<float>::infinity();
@@ -103,8 +105,9 @@ private:
         int reach0 = 0, reach1 = 0;  // rows of the band any splat reaches (projection: of its points)
         std::vector<std::uint32_t> start;  // per pixel of the band, + 1: offsets into entries
         std::vector<Entry> entries;
-        std::vector<Float4> colors;             // single-stream path: premultiplied, per pixel
-        std::vector<float> depths;
+        // Single-stream path: premultiplied R, G, B, A and depth, one plane
+        // each, rows kPlanePad wider than the image (see compositeInOrder).
+        std::vector<float> planes;
         std::vector<float> rowWeight;           // projection's histogram, per image row
         std::size_t splats = 0;
     };
@@ -119,6 +122,7 @@ private:
     void fillBuffers(Band& band);
     void mergeBuffers(Band& band);
     void store(std::size_t pixel, Float4 color, float depth);
+    static constexpr int kPlanePad = 3;
     void clearPixel(std::size_t pixel);
     void clearRowsOutsideReach(const Band& band);
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 using namespace arcomp;
 
@@ -125,4 +126,46 @@ TEST(LdiRenderer, pixelsNoLongerReachedAreClearedInTheNextFrame) {
             EXPECT_EQ(img.coveredPixels(), top) << "nothing left below the first rows";
         }
     }
+}
+
+TEST(LdiRenderer, singleStreamMatchesTheProjectionBuffersPixelForPixel) {
+    // The single stream composites four pixels of a row at once from colour
+    // planes; the projection buffers take each splat alone. The same points
+    // in one LDI, and in the first of two LDIs (the second empty), must give
+    // the same image: at the right edge of a width that is no multiple of
+    // four, and across the rows where two threads' bands meet.
+    PointCloud cloud;
+    cloud.pointSize = 0.35f;
+    std::uint32_t seed = 7;
+    const auto unit = [&] { return static_cast<float>((seed = seed * 1664525u + 1013904223u) >> 8) / 16777216.0f; };
+    // Some beyond every edge of the view.
+    for (int i = 0; i < 800; ++i) {
+        cloud.positions.push_back({unit() * 10.0f - 5.0f, unit() * 6.0f - 3.0f, unit() * 2.0f - 1.0f});
+        cloud.colors.push_back({unit(), unit(), unit(), 0.2f + 0.7f * unit()});
+    }
+    std::vector<std::uint32_t> all(cloud.positions.size());
+    std::iota(all.begin(), all.end(), 0u);
+    const LdiCamera front = LdiCamera::lookAt({0, 0, 12}, {0, 0, 0}, {0, 1, 0}, 40.0f, 32, 32);
+    const LdiCamera back = LdiCamera::lookAt({0, 0, -12}, {0, 0, 0}, {0, 1, 0}, 40.0f, 32, 32);
+    LdiSet one, two;
+    one.cloud = two.cloud = cloud;
+    one.pointLdi.assign(all.size(), 0);
+    two.pointLdi = one.pointLdi;
+    one.ldis = {ldiHolding(front, cloud, all)};
+    two.ldis = {ldiHolding(front, cloud, all), ldiHolding(back, cloud, {})};
+    const View eye = View::lookAt({1.5f, 0.8f, 9.0f}, {0, 0, 0}, {0, 1, 0}, 30.0f, {37, 23}, 0.1f, 100.0f);
+    LdiRenderer single(one, 2), merged(two, 2);
+    const PointImage& a = single.render(eye);
+    const PointImage& b = merged.render(eye);
+    ASSERT_EQ(single.lastSplatCount(), merged.lastSplatCount());
+    ASSERT_GT(a.coveredPixels(), 37u * 23u / 2u) << "the points must cover most of the image";
+    std::size_t rightEdge = 0;
+    for (int y = 0; y < 23; ++y)
+        for (int x = 0; x < 37; ++x) {
+            const glm::ivec4 d = glm::abs(glm::ivec4(pixel(a, x, y)) - glm::ivec4(pixel(b, x, y)));
+            EXPECT_LE(std::max({d.x, d.y, d.z, d.w}), 1) << "pixel " << x << "," << y;
+            EXPECT_EQ(a.depth[static_cast<std::size_t>(y * 37 + x)], b.depth[static_cast<std::size_t>(y * 37 + x)]);
+            rightEdge += x == 36 && pixel(a, x, y).a != 0;
+        }
+    EXPECT_GT(rightEdge, 0u) << "some points must reach the last column";
 }
