@@ -61,8 +61,10 @@ template <class Put> void walkBackToFront(const Ldi& ldi, const glm::vec3& eye, 
     AxisRun columns[2], rows[2];
     axisRuns(e.pixel.x, cam.width, e.inFront, columns);
     axisRuns(e.pixel.y, cam.height, e.inFront, rows);
-    const glm::vec3 offset = eye - cam.eye;
-    const glm::mat3 toWorld = glm::transpose(cam.rotation);
+    // The place on pixel (x, y)'s ray nearest to e1 lies at depth
+    // dot(e1 - e0, ray direction), and in e0's camera axes the ray runs along
+    // (lx, ly, 1) / |(lx, ly, 1)|: one square root a pixel, no rotation.
+    const glm::vec3 offset = cam.toCamera(eye);
     const glm::vec2 principal = cam.principal();
     for (const AxisRun& rs : rows) {
         if (emptyRun(rs)) continue;
@@ -70,13 +72,14 @@ template <class Put> void walkBackToFront(const Ldi& ldi, const glm::vec3& eye, 
             if (emptyRun(cs)) continue;
             for (int y = rs.first;; y += rs.step) {
                 const std::uint32_t rowBase = static_cast<std::uint32_t>(y) * static_cast<std::uint32_t>(cam.width);
+                const float ly = (static_cast<float>(y) + 0.5f - principal.y) / cam.focal;
+                const float rowOffset = offset.y * ly + offset.z, rowLength2 = ly * ly + 1.0f;
                 for (int x = cs.first;; x += cs.step) {
                     const std::uint32_t pixel = rowBase + static_cast<std::uint32_t>(x);
                     const std::uint32_t begin = ldi.pixelStart[pixel], end = ldi.pixelStart[pixel + 1];
                     if (begin != end) {
-                        const glm::vec3 local((static_cast<float>(x) + 0.5f - principal.x) / cam.focal,
-                                              (static_cast<float>(y) + 0.5f - principal.y) / cam.focal, 1.0f);
-                        const float nearest = glm::dot(offset, glm::normalize(toWorld * local));
+                        const float lx = (static_cast<float>(x) + 0.5f - principal.x) / cam.focal;
+                        const float nearest = (offset.x * lx + rowOffset) / std::sqrt(lx * lx + rowLength2);
                         // Points before `nearest` along the ray, ascending, meet those
                         // after it, descending; the farther from it goes first.
                         std::uint32_t lo = begin, hi = end;
@@ -105,7 +108,11 @@ void appendBackToFront(const Ldi& ldi, const glm::vec3& eye, std::vector<std::ui
 }
 
 void appendSlotsBackToFront(const Ldi& ldi, const glm::vec3& eye, std::uint32_t base, std::vector<std::uint32_t>& out) {
-    walkBackToFront(ldi, eye, [&](std::uint32_t k) { out.push_back(base + k); });
+    // Every slot comes exactly once: write them in place.
+    const std::size_t at = out.size();
+    out.resize(at + ldi.points.size());
+    std::uint32_t* next = out.data() + at;
+    walkBackToFront(ldi, eye, [&](std::uint32_t k) { *next++ = base + k; });
 }
 
 } // namespace arcomp
