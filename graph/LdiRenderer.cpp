@@ -417,6 +417,8 @@ void LdiRenderer::frame(const View& view, bool depthSorted) {
         // The barrier's completion step must not throw: allocate here.
         byDepth_.reserve(n);
         order_[0].reserve(n);
+    } else {
+        for (std::size_t l = 0; l < ldis; ++l) order_[l].resize(set_.ldis[l].points.size());
     }
 
     auto afterProjection = [&]() noexcept {
@@ -440,10 +442,10 @@ void LdiRenderer::frame(const View& view, bool depthSorted) {
             // Every worker leaves the barriers together: worker 0's clock
             // spans the whole phase.
             const auto orderStart = std::chrono::steady_clock::now();
-            for (std::size_t l = worker; l < ldis; l += bands_.size()) {
-                order_[l].clear();
-                appendSlotsBackToFront(set_.ldis[l], view.eye, slotBase_[l], order_[l]);
-            }
+            // Each worker walks its share of every LDI: one LDI's walk is cut
+            // between the threads too.
+            for (std::size_t l = 0; l < ldis; ++l)
+                writeSlotsBackToFront(set_.ldis[l], view.eye, slotBase_[l], order_[l], worker, bands_.size());
             ordered.arriveAndWait();
             if (worker == 0) orderMs_ = msSince(orderStart);
         }

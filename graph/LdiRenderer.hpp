@@ -34,7 +34,7 @@
 // splat is composited four pixels of a row at a time.
 //
 // Two threads by default: each frame is one parallel region (projection,
-// then McMillan order with LDIs spread over the threads, then the bands).
+// then McMillan order, each LDI's walk cut between the threads, then the bands).
 // The renderer keeps its buffers between frames, so it allocates nothing
 // once warm; one renderer serves one caller thread. It copies the cloud's
 // positions and colours once, when constructed (the point size is read

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace arcomp {
 
@@ -54,8 +55,13 @@ Epipole epipoleOf(const LdiCamera& camera, const glm::vec3& eye) {
 
 namespace {
 
-// The walk itself; put(k) receives the LDI slots (indices into ldi.points).
-template <class Put> void walkBackToFront(const Ldi& ldi, const glm::vec3& eye, Put&& put) {
+// The walk itself, or one of `parts` pieces of it: put(position, k)
+// receives each LDI slot k (an index into ldi.points) with its position in
+// the whole walk's output. The walk runs row by row through the sheets, and
+// a row's points fill a known stretch of the output (pixelStart gives their
+// count), so each piece can find its rows alone: those starting within its
+// equal share of the positions.
+template <class Put> void walkBackToFront(const Ldi& ldi, const glm::vec3& eye, std::size_t part, std::size_t parts, Put&& put) {
     const LdiCamera& cam = ldi.camera;
     const Epipole e = epipoleOf(cam, eye);
     AxisRun columns[2], rows[2];
@@ -66,35 +72,46 @@ template <class Put> void walkBackToFront(const Ldi& ldi, const glm::vec3& eye, 
     // (lx, ly, 1) / |(lx, ly, 1)|: one square root a pixel, no rotation.
     const glm::vec3 offset = cam.toCamera(eye);
     const glm::vec2 principal = cam.principal();
+    const std::size_t total = ldi.points.size();
+    const std::size_t from = total * part / parts, to = total * (part + 1) / parts;
+    std::size_t position = 0;  // of the current row's first point in the whole walk
     for (const AxisRun& rs : rows) {
         if (emptyRun(rs)) continue;
         for (const AxisRun& cs : columns) {
             if (emptyRun(cs)) continue;
+            const auto lowColumn = static_cast<std::uint32_t>(std::min(cs.first, cs.last));
+            const auto highColumn = static_cast<std::uint32_t>(std::max(cs.first, cs.last));
             for (int y = rs.first;; y += rs.step) {
+                if (position >= to) return;
                 const std::uint32_t rowBase = static_cast<std::uint32_t>(y) * static_cast<std::uint32_t>(cam.width);
-                const float ly = (static_cast<float>(y) + 0.5f - principal.y) / cam.focal;
-                const float rowOffset = offset.y * ly + offset.z, rowLength2 = ly * ly + 1.0f;
-                for (int x = cs.first;; x += cs.step) {
-                    const std::uint32_t pixel = rowBase + static_cast<std::uint32_t>(x);
-                    const std::uint32_t begin = ldi.pixelStart[pixel], end = ldi.pixelStart[pixel + 1];
-                    if (begin != end) {
-                        const float lx = (static_cast<float>(x) + 0.5f - principal.x) / cam.focal;
-                        const float nearest = (offset.x * lx + rowOffset) / std::sqrt(lx * lx + rowLength2);
-                        // Points before `nearest` along the ray, ascending, meet those
-                        // after it, descending; the farther from it goes first.
-                        std::uint32_t lo = begin, hi = end;
-                        std::uint32_t split = static_cast<std::uint32_t>(
-                            std::upper_bound(ldi.rayDepth.begin() + begin, ldi.rayDepth.begin() + end, nearest) -
-                            ldi.rayDepth.begin());
-                        while (lo < split && hi > split) {
-                            if (nearest - ldi.rayDepth[lo] >= ldi.rayDepth[hi - 1] - nearest) put(lo++);
-                            else put(--hi);
+                const std::size_t count = ldi.pixelStart[rowBase + highColumn + 1] - ldi.pixelStart[rowBase + lowColumn];
+                if (position >= from && count > 0) {
+                    std::size_t next = position;
+                    const float ly = (static_cast<float>(y) + 0.5f - principal.y) / cam.focal;
+                    const float rowOffset = offset.y * ly + offset.z, rowLength2 = ly * ly + 1.0f;
+                    for (int x = cs.first;; x += cs.step) {
+                        const std::uint32_t pixel = rowBase + static_cast<std::uint32_t>(x);
+                        const std::uint32_t begin = ldi.pixelStart[pixel], end = ldi.pixelStart[pixel + 1];
+                        if (begin != end) {
+                            const float lx = (static_cast<float>(x) + 0.5f - principal.x) / cam.focal;
+                            const float nearest = (offset.x * lx + rowOffset) / std::sqrt(lx * lx + rowLength2);
+                            // Points before `nearest` along the ray, ascending, meet those
+                            // after it, descending; the farther from it goes first.
+                            std::uint32_t lo = begin, hi = end;
+                            std::uint32_t split = static_cast<std::uint32_t>(
+                                std::upper_bound(ldi.rayDepth.begin() + begin, ldi.rayDepth.begin() + end, nearest) -
+                                ldi.rayDepth.begin());
+                            while (lo < split && hi > split) {
+                                if (nearest - ldi.rayDepth[lo] >= ldi.rayDepth[hi - 1] - nearest) put(next++, lo++);
+                                else put(next++, --hi);
+                            }
+                            while (lo < split) put(next++, lo++);
+                            while (hi > split) put(next++, --hi);
                         }
-                        while (lo < split) put(lo++);
-                        while (hi > split) put(--hi);
+                        if (x == cs.last) break;
                     }
-                    if (x == cs.last) break;
                 }
+                position += count;
                 if (y == rs.last) break;
             }
         }
@@ -104,15 +121,15 @@ template <class Put> void walkBackToFront(const Ldi& ldi, const glm::vec3& eye, 
 } // namespace
 
 void appendBackToFront(const Ldi& ldi, const glm::vec3& eye, std::vector<std::uint32_t>& out) {
-    walkBackToFront(ldi, eye, [&](std::uint32_t k) { out.push_back(ldi.points[k]); });
-}
-
-void appendSlotsBackToFront(const Ldi& ldi, const glm::vec3& eye, std::uint32_t base, std::vector<std::uint32_t>& out) {
-    // Every slot comes exactly once: write them in place.
     const std::size_t at = out.size();
     out.resize(at + ldi.points.size());
-    std::uint32_t* next = out.data() + at;
-    walkBackToFront(ldi, eye, [&](std::uint32_t k) { *next++ = base + k; });
+    walkBackToFront(ldi, eye, 0, 1, [&](std::size_t i, std::uint32_t k) { out[at + i] = ldi.points[k]; });
+}
+
+void writeSlotsBackToFront(const Ldi& ldi, const glm::vec3& eye, std::uint32_t base, std::span<std::uint32_t> slots,
+                           std::size_t part, std::size_t parts) {
+    if (slots.size() != ldi.points.size() || parts == 0 || part >= parts) std::abort();
+    walkBackToFront(ldi, eye, part, parts, [&](std::size_t i, std::uint32_t k) { slots[i] = base + k; });
 }
 
 } // namespace arcomp

@@ -21,6 +21,7 @@
 #include "graph/Ldi.hpp"
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace arcomp {
@@ -38,9 +39,13 @@ Epipole epipoleOf(const LdiCamera& camera, const glm::vec3& eye);
 
 // Appends the LDI's point ids in back-to-front order as seen from `eye`.
 void appendBackToFront(const Ldi& ldi, const glm::vec3& eye, std::vector<std::uint32_t>& out);
-// The same order as LDI slots (positions in ldi.points) plus `base`: a
-// renderer that keeps its per-point data in slot order reads it almost
-// sequentially along this walk.
-void appendSlotsBackToFront(const Ldi& ldi, const glm::vec3& eye, std::uint32_t base, std::vector<std::uint32_t>& out);
+// The same order as LDI slots (positions in ldi.points) plus `base`, into
+// `slots` (ldi.points.size() of them): a renderer that keeps its per-point
+// data in slot order reads it almost sequentially along this walk. The
+// walk is cut into `parts` pieces of about equal size, so that several
+// threads can share it: piece `part` fills its share of `slots`, and all
+// pieces together give the whole order.
+void writeSlotsBackToFront(const Ldi& ldi, const glm::vec3& eye, std::uint32_t base, std::span<std::uint32_t> slots,
+                           std::size_t part = 0, std::size_t parts = 1);
 
 } // namespace arcomp

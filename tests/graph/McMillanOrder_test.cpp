@@ -127,6 +127,16 @@ void expectBackToFront(glm::vec2 epipole, float eyeDepth, EpipoleSide column, Ep
         });
         ASSERT_EQ(drawn, sorted) << "pixel " << px;
     }
+
+    // Cut into pieces for several threads, the walk gives the same order.
+    std::vector<std::uint32_t> whole(ldi.points.size());
+    writeSlotsBackToFront(ldi, eye, 5, whole);
+    for (std::size_t i = 0; i < whole.size(); ++i) ASSERT_EQ(ldi.points[whole[i] - 5], order[i]) << "slot " << i;
+    for (std::size_t parts : {2u, 3u, 7u}) {
+        std::vector<std::uint32_t> pieces(whole.size(), UINT32_MAX);
+        for (std::size_t part = 0; part < parts; ++part) writeSlotsBackToFront(ldi, eye, 5, pieces, part, parts);
+        EXPECT_EQ(pieces, whole) << parts << " pieces";
+    }
 }
 
 // Epipole positions on the pixel-centre lattice: before, on and after the screen.
