@@ -178,24 +178,37 @@ void LdiRenderer::clearRowsOutsideReach(const Band& band) {
     }
 }
 
+// The pixels whose centres may lie in the point's disc: those of its
+// bounding square, within rows [rowLo, rowHi) and the image. False when it
+// is not drawn or reaches none of them.
+inline bool LdiRenderer::reach(std::uint32_t id, int rowLo, int rowHi, PixelBox& box) const {
+    const Projected& q = projected_[id];
+    if (q.depth < 0.0f) return false;
+    const glm::vec2 s = q.screen;
+    const float r = q.radius;
+    // Off-screen points would overflow int; they reach no pixel anyway.
+    if (s.x + r < 0.0f || s.y + r < static_cast<float>(rowLo) || s.x - r > static_cast<float>(image_.width) ||
+        s.y - r > static_cast<float>(rowHi))
+        return false;
+    box.y0 = std::max(rowLo, ceilToInt(s.y - r - 0.5f));
+    box.y1 = std::min(rowHi - 1, floorToInt(s.y + r - 0.5f));
+    box.x0 = std::max(0, ceilToInt(s.x - r - 0.5f));
+    box.x1 = std::min(image_.width - 1, floorToInt(s.x + r - 0.5f));
+    return true;
+}
+
 // Calls span(y, xa, xb, dy) for each row y within [rowLo, rowHi) that the
 // point's footprint reaches, covering the pixels xa..xb of that row whose
 // centres lie in the disc (dy: the row centre's offset from the point).
 // Solving the disc for each row's ends leaves no per-pixel test, whose
 // branch mispredicted about as often as it was taken.
 template <class Span> void LdiRenderer::rowSpans(std::uint32_t id, int rowLo, int rowHi, Span&& span) const {
-    const Projected& q = projected_[id];
-    if (q.depth < 0.0f) return;
+    PixelBox box;
+    if (!reach(id, rowLo, rowHi, box)) return;
     const int w = image_.width;
-    const glm::vec2 s = q.screen;
-    const float r = q.radius, r2 = r * r;
-    // Off-screen points would overflow int; they reach no pixel anyway.
-    if (s.x + r < 0.0f || s.y + r < static_cast<float>(rowLo) || s.x - r > static_cast<float>(w) ||
-        s.y - r > static_cast<float>(rowHi))
-        return;
-    const int y0 = std::max(rowLo, ceilToInt(s.y - r - 0.5f));
-    const int y1 = std::min(rowHi - 1, floorToInt(s.y + r - 0.5f));
-    for (int y = y0; y <= y1; ++y) {
+    const glm::vec2 s = projected_[id].screen;
+    const float r2 = projected_[id].radius * projected_[id].radius;
+    for (int y = box.y0; y <= box.y1; ++y) {
         const float dy = static_cast<float>(y) + 0.5f - s.y;
         const float h2 = r2 - dy * dy;
         if (h2 < 0.0f) continue;
@@ -251,25 +264,18 @@ void LdiRenderer::compositeInOrder(Band& band, const std::vector<std::uint32_t>&
     const Float4 lane{0.5f, 1.5f, 2.5f, 3.5f};
     std::size_t n = 0;
     for (std::uint32_t id : ids) {
+        PixelBox box;
+        if (!reach(id, rowLo, rowHi, box)) continue;
         const Projected& q = projected_[id];
-        if (q.depth < 0.0f) continue;
         const glm::vec2 s = q.screen;
-        const float radius = q.radius, r2 = radius * radius;
-        if (s.x + radius < 0.0f || s.y + radius < static_cast<float>(rowLo) || s.x - radius > static_cast<float>(w) ||
-            s.y - radius > static_cast<float>(rowHi))
-            continue;
-        // Pixels whose centres lie in the disc, as in rowSpans.
-        const int y0 = std::max(rowLo, ceilToInt(s.y - radius - 0.5f));
-        const int y1 = std::min(rowHi - 1, floorToInt(s.y + radius - 0.5f));
-        const int x0 = std::max(0, ceilToInt(s.x - radius - 0.5f));
-        const int x1 = std::min(w - 1, floorToInt(s.x + radius - 0.5f));
+        const float r2 = q.radius * q.radius, invR2 = kRimFalloff / r2, z = q.depth;
         const Float4 src = items_->premultiplied[id];
-        const float invR2 = kRimFalloff / r2, z = q.depth;
-        for (int x = x0; x <= x1; x += 4) {
+        const int x1 = box.x1;
+        for (int x = box.x0; x <= x1; x += 4) {
             const Float4 dx = lane + static_cast<float>(x) - s.x;
             const Float4 dx2 = dx * dx;
             const Int4 inRow = Int4{0, 1, 2, 3} + x <= x1;
-            for (int y = y0; y <= y1; ++y) {
+            for (int y = box.y0; y <= box.y1; ++y) {
                 const float dy = static_cast<float>(y) + 0.5f - s.y;
                 const Float4 d2 = dx2 + dy * dy;
                 const Int4 inside = (d2 <= r2) & inRow;

@@ -116,6 +116,10 @@ private:
     void frame(const View& view, bool depthSorted);
     void project(const View& view, std::size_t worker);
     void cutBands();
+    struct PixelBox {
+        int x0, x1, y0, y1;  // inclusive
+    };
+    bool reach(std::uint32_t id, int rowLo, int rowHi, PixelBox& box) const;
     template <class Span> void rowSpans(std::uint32_t id, int rowLo, int rowHi, Span&& span) const;
     template <class Emit> void footprint(std::uint32_t id, int rowLo, int rowHi, Emit&& emit) const;
     void compositeInOrder(Band& band, const std::vector<std::uint32_t>& ids);
