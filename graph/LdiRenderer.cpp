@@ -288,7 +288,7 @@ void LdiRenderer::compositeInOrder(Band& band, const std::vector<std::uint32_t>&
                 save(a + at, load(a + at) * keep + alpha);
                 const Float4 d = load(depth + at);
                 save(depth + at, inside && z < d ? Float4{} + z : d);
-                n -= static_cast<std::size_t>(static_cast<std::int64_t>(inside[0] + inside[1] + inside[2] + inside[3]));
+                n += static_cast<std::size_t>(-(inside[0] + inside[1] + inside[2] + inside[3]));  // lanes in: -1
             }
         }
     }
