@@ -3,6 +3,7 @@
 // is checked against its target here (speed belongs in the benchmark).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -22,6 +23,13 @@ std::string object(const std::string& json, const std::string& key) {
     if (at == std::string::npos) return {};
     const std::size_t open = json.find('{', at);
     return json.substr(open, json.find('}', open) - open + 1);
+}
+
+// The number after `"key":` in json.
+double number(const std::string& json, const std::string& key) {
+    const std::size_t at = json.find("\"" + key + "\":");
+    if (at == std::string::npos) return std::nan("");
+    return std::stod(json.substr(at + key.size() + 3));
 }
 
 std::size_t lines(const std::filesystem::path& file) {
@@ -83,4 +91,20 @@ TEST(BudgetBench, cpuTimerIsTheOneTheRunUsesAndReports) {
                        out.string());
     ASSERT_EQ(r.code, 0) << r.out;
     EXPECT_NE(lastLine(r.out).find("\"timer\":\"process_cpu_glfinish\""), std::string::npos) << r.out;
+}
+
+TEST(BudgetBench, defaultTargetLiesUnderTheUnmanagedRunsFastestFrameAndNotUnderTheFloor) {
+    const std::filesystem::path out = std::filesystem::path(ARCOMP_TEST_OUTPUT) / "bench-budget-default-target";
+    const auto r = run("bench budget --frames 6 --size 160x90 --mountains 6 --scene-frames 4 --out " + out.string());
+    ASSERT_EQ(r.code, 0) << r.out;
+    const std::string json = lastLine(r.out);
+    const double target = number(json, "target_ms"), floor = number(json, "floor_ms_max_estimate");
+    const double fastest = number(object(json, "unmanaged"), "frame_ms_min");
+    ASSERT_GT(target, 0.0) << json;
+    ASSERT_GT(fastest, 0.0) << json;
+    // The JSON carries six significant digits.
+    EXPECT_NEAR(target, std::max(0.85 * fastest, floor), 1e-4 * target) << json;
+    const bool underFastest = json.find("\"target_rule\":\"under_unmanaged_fastest\"") != std::string::npos;
+    const bool atFloor = json.find("\"target_rule\":\"floor\"") != std::string::npos;
+    EXPECT_TRUE(underFastest ? 0.85 * fastest >= floor : atFloor && floor > 0.85 * fastest) << json;
 }

@@ -12,11 +12,16 @@
 // reported apart (apply_us). The cost model is calibrated in the same run
 // (or read with --calibration) and re-fitted online during the managed run.
 //
-// The default target is the unmanaged run's 3rd percentile: full detail
-// exceeds it on 97% of the path, so the controller has work to do nearly
+// The default target is 0.85 of the unmanaged run's fastest frame: full
+// detail exceeds it on the whole path, so the controller has work to do
 // everywhere, and the figure follows the machine's speed on the day (on
 // this shared host the same run varies by 2× from hour to hour, so no fixed
-// number is "most frames" every time). It is never set below the
+// number is "most frames" every time). The margin is for the machine's
+// speed drifting between the two runs: with the unmanaged run's 3rd
+// percentile as the target, one managed run drew the path's cheapest
+// stretch (frames 232-267) at full detail in 22-25 ms where the unmanaged
+// run had taken 29-31, under a target of 29.4 that nothing could then
+// meet, and 68 frames fell outside ±10%. It is never set below the
 // controller's floor along the path (every object at its coarsest level and
 // unlit; the pixels seen close up cost that much whatever is drawn), which
 // the JSON reports as floor_ms_max_estimate: the calibrated floor scaled by
@@ -70,7 +75,7 @@ struct Options {
     std::string size = "1280x720";
     std::string timer = "finish";
     std::string calibration;
-    double targetMs = 0.0;  // 0: the unmanaged run's 3rd percentile
+    double targetMs = 0.0;  // 0: kTargetUnderFastest of the unmanaged run's fastest frame
     int rasterThreads = 0;  // LP_NUM_THREADS (0: on the drawing thread); -1: the driver's default
     BudgetSettings controller{};
     int frames = 600;
@@ -79,6 +84,7 @@ struct Options {
 };
 
 const glm::vec4 kSky(0.55f, 0.68f, 0.85f, 1.0f);
+constexpr double kTargetUnderFastest = 0.85;
 
 struct Series {
     std::vector<double> ms, predicted, quality, applyUs, gain;  // gain: the online fit's, as predicted
@@ -244,9 +250,9 @@ int run(const Options& o) {
     const double gainU = tableGain.empty() ? 1.0 : std::max(0.25, percentile(tableGain, 50));
     double floorMs = 0.0;
     for (double items : unmanaged.floorItemsMs) floorMs = std::max(floorMs, gainU * items + table.overheadMs);
-    const double unmanagedP3 = percentile(unmanaged.ms, 3);
-    const double targetMs = o.targetMs > 0.0 ? o.targetMs : std::max(unmanagedP3, floorMs);
-    const char* targetRule = o.targetMs > 0.0 ? "given" : unmanagedP3 >= floorMs ? "unmanaged_p3" : "floor";
+    const double underFastest = kTargetUnderFastest * *std::min_element(unmanaged.ms.begin(), unmanaged.ms.end());
+    const double targetMs = o.targetMs > 0.0 ? o.targetMs : std::max(underFastest, floorMs);
+    const char* targetRule = o.targetMs > 0.0 ? "given" : underFastest >= floorMs ? "under_unmanaged_fastest" : "floor";
 
     std::cerr << "managed run, target " << targetMs << " ms\n";
     BudgetSettings settings = o.controller;
@@ -328,7 +334,7 @@ const bool registered = registerBench(
          auto o = std::make_shared<Options>();
          app.add_option("--out", o->out, "folder for the CSV, the plots and calibration.yaml")->capture_default_str();
          app.add_option("--target-ms", o->targetMs,
-                        "target frame time; 0: the unmanaged run's 3rd percentile (not below the floor)")
+                        "target frame time; 0: 0.85 of the unmanaged run's fastest frame (not below the floor)")
              ->capture_default_str();
          app.add_option("--raster-threads", o->rasterThreads,
                         "llvmpipe raster threads (LP_NUM_THREADS); 0: on the drawing thread; -1: the driver's default")
