@@ -190,10 +190,11 @@ inline bool LdiRenderer::reach(std::uint32_t id, int rowLo, int rowHi, PixelBox&
     if (s.x + r < 0.0f || s.y + r < static_cast<float>(rowLo) || s.x - r > static_cast<float>(image_.width) ||
         s.y - r > static_cast<float>(rowHi))
         return false;
-    box.y0 = std::max(rowLo, ceilToInt(s.y - r - 0.5f));
-    box.y1 = std::min(rowHi - 1, floorToInt(s.y + r - 0.5f));
-    box.x0 = std::max(0, ceilToInt(s.x - r - 0.5f));
-    box.x1 = std::min(image_.width - 1, floorToInt(s.x + r - 0.5f));
+    // Clamped before they become ints: a huge footprint would overflow.
+    box.y0 = ceilToInt(std::max(s.y - r - 0.5f, static_cast<float>(rowLo)));
+    box.y1 = floorToInt(std::min(s.y + r - 0.5f, static_cast<float>(rowHi - 1)));
+    box.x0 = ceilToInt(std::max(s.x - r - 0.5f, 0.0f));
+    box.x1 = floorToInt(std::min(s.x + r - 0.5f, static_cast<float>(image_.width - 1)));
     return true;
 }
 
@@ -213,8 +214,8 @@ template <class Span> void LdiRenderer::rowSpans(std::uint32_t id, int rowLo, in
         const float h2 = r2 - dy * dy;
         if (h2 < 0.0f) continue;
         const float half = std::sqrt(h2);
-        const int xa = std::max(0, ceilToInt(s.x - half - 0.5f));
-        const int xb = std::min(w - 1, floorToInt(s.x + half - 0.5f));
+        const int xa = ceilToInt(std::max(s.x - half - 0.5f, 0.0f));
+        const int xb = floorToInt(std::min(s.x + half - 0.5f, static_cast<float>(w - 1)));
         if (xa <= xb) span(y, xa, xb, dy);
     }
 }

@@ -169,3 +169,20 @@ TEST(LdiRenderer, singleStreamMatchesTheProjectionBuffersPixelForPixel) {
         }
     EXPECT_GT(rightEdge, 0u) << "some points must reach the last column";
 }
+
+TEST(LdiRenderer, anEnormousPointCoversTheImageOnBothPaths) {
+    // A footprint far wider than int can count (the point size of a broken
+    // voxel file, say) is clipped to the image before it becomes pixels.
+    for (const auto owner : {std::array<std::uint8_t, 3>{0, 0, 0}, std::array<std::uint8_t, 3>{0, 1, 0}}) {
+        LdiSet set = threeOnTheAxis(owner);
+        if (owner[1] == 0) set.ldis.pop_back();  // one LDI: the single stream
+        for (float size : {1e12f, 1e30f}) {
+            set.cloud.pointSize = size;
+            LdiRenderer renderer(set, 2);
+            const PointImage& img = renderer.render(kEye);
+            EXPECT_EQ(img.coveredPixels(), 81u) << size;
+            EXPECT_EQ(renderer.lastSplatCount(), 3u * 81u) << size;
+            EXPECT_EQ(pixel(img, 0, 8), glm::u8vec4(32, 64, 128, 223)) << size << ", owners " << int(owner[1]);
+        }
+    }
+}
