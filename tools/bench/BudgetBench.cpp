@@ -38,8 +38,9 @@
 // 1.5-1.9x as long (nothing overlaps), the table's one-step error at the
 // 95th percentile fell from 8.8% to 6.1%, and the floor fell from about
 // 0.8 of the target to 0.6, which leaves the controller more room. With the
-// target rule below, 8 of 9 runs met every target (p95 |dev| 8.0-9.6%, the
-// miss 10.05%). -1 leaves the driver's choice. The JSON reports the platform's own
+// target rule below, 5 of 6 runs at the defaults met every target (p95
+// |dev| 8.0-9.1%, the miss 10.05%), 3 of 3 with --scene-frames 300
+// (9.3-9.6%). -1 leaves the driver's choice. The JSON reports the platform's own
 // noise as repeat_jitter_p95_pct: one view at full detail, drawn 60 times.
 // Other drivers ignore LP_NUM_THREADS.
 //
