@@ -445,8 +445,15 @@ ParsedModel parseGltf(const fs::path& file) {
     char magic[4] = {};
     probe.read(magic, 4);
     const bool binary = probe.gcount() == 4 && std::equal(magic, magic + 4, "glTF");
-    const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, name)
-                           : loader.LoadASCIIFromFile(&model, &err, &warn, name);
+    bool ok = false;
+    try {
+        ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, name) : loader.LoadASCIIFromFile(&model, &err, &warn, name);
+    } catch (const std::exception& e) {
+        // tinygltf checks some inputs with vector::at: a GLB buffer with
+        // byteLength 0 (the schema's minimum is 1) next to a BIN chunk threw
+        // std::out_of_range from its copy (fuzz finding).
+        throw ModelError(name, "", std::string("malformed glTF, the loader stopped: ") + e.what());
+    }
     if (!access.refusal.empty()) throw ModelError(name, "", access.refusal);
     if (!ok) {
         while (!err.empty() && err.back() == '\n') err.pop_back();
