@@ -28,14 +28,14 @@ const fs::path kDemo = fs::path(ARCOMP_SOURCE_DIR) / "configs/demo-replay.yaml";
 } // namespace
 
 TEST(RunCommand, showsTheCompositedStationInAWindowAndExitsAfterItsFrames) {
-    if (arcomp::test::shell("command -v xvfb-run").code != 0) GTEST_SKIP() << "xvfb-run not installed";
+    if (arcomp::test::shell("command -v Xvfb").code != 0) GTEST_SKIP() << "Xvfb not installed";
     TempDir dir;
     const fs::path shot = dir.path() / "shot.png";
-    // Our own display number range: concurrent xvfb-run calls starting at the
-    // same number race for it (the WindowContext twin starts at 120).
-    const std::string display = std::to_string(200 + getpid() % 100);
-    const auto [code, out] = arcomp::test::shell("xvfb-run -a -n " + display + " -s '-screen 0 1024x768x24' " + std::string(ARCOMP_BINARY) + " run " + kDemo.string() +
-                               " --windowed --size 640x480 --frames 30 --overlay --screenshot " + shot.string());
+    // with-xvfb takes a free display once the server is ready, so concurrent
+    // window tests do not race for one.
+    const auto [code, out] = arcomp::test::shell(std::string(ARCOMP_SOURCE_DIR) + "/scripts/with-xvfb " + std::string(ARCOMP_BINARY) +
+                                                 " run " + kDemo.string() + " --windowed --size 640x480 --frames 30 --overlay --screenshot " +
+                                                 shot.string());
     ASSERT_EQ(code, 0) << out;
     const cv::Mat image = cv::imread(shot.string());
     ASSERT_FALSE(image.empty()) << out;
