@@ -1,7 +1,13 @@
 #pragma once
-// What the select pass decided to draw this frame, in the order it found it.
-// The frame-time controller edits level and shading in place before the
-// renderer reads the list.
+// What the select pass decided to draw this frame, sorted into bins in the
+// order it found them:
+// - items: the CG, opaque and blended (the renderer orders each by depth);
+//   the frame-time controller edits level and shading in place before the
+//   renderer reads them;
+// - holdouts: the CG items that also cut a person out of the video
+//   (graph/HoldoutMeshes.hpp), with their depth, so that the compositor can
+//   decide per person which of them stand in front;
+// - pointClouds: the visible point-cloud nodes, drawn as layers after the CG.
 
 #include "graph/Scene.hpp"
 #include "graph/Shading.hpp"
@@ -31,12 +37,32 @@ struct DrawItem {
     glm::vec4 tint{1.0f};
 };
 
+// A CG item with a holdout mesh. It names the item rather than holding the
+// silhouette range: the controller may still move the item to a coarser
+// level, whose own silhouette is then the one to draw.
+struct HoldoutItem {
+    std::uint32_t cgItem;  // index into DrawList::items
+    float depth;           // eye to bounding-sphere centre along the view axis
+};
+
+struct PointCloudItem {
+    NodeId node;
+    float viewDistance;  // eye to bounding-sphere centre
+};
+
 struct DrawList {
     std::vector<DrawItem> items;
+    std::vector<HoldoutItem> holdouts;
+    std::vector<PointCloudItem> pointClouds;
     std::size_t nodesVisited = 0;
     std::size_t nodesCulled = 0;
 
-    void clear() { items.clear(); nodesVisited = nodesCulled = 0; }
+    void clear() {
+        items.clear();
+        holdouts.clear();
+        pointClouds.clear();
+        nodesVisited = nodesCulled = 0;
+    }
 };
 
 } // namespace arcomp

@@ -36,8 +36,13 @@ struct SelectPass {
         }
         switch (scene.kind(node)) {
         case NodeKind::Mesh:
+            if (settings.holdouts && settings.holdouts->has(node))
+                out.holdouts.push_back({static_cast<std::uint32_t>(out.items.size()), glm::dot(bound.center - view.eye, view.forward)});
             out.items.push_back({node, scene.meshPart(node), glm::length(bound.center - view.eye),
                                  view.projectedArea(bound), level, settings.shading, fade});
+            break;
+        case NodeKind::PointCloud:
+            out.pointClouds.push_back({node, glm::length(bound.center - view.eye)});
             break;
         case NodeKind::Lod:
             visitLod(pos, node, bound, inside, fade);

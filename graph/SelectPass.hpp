@@ -1,13 +1,15 @@
 #pragma once
 // The select pass: one walk over the scene that culls against the view
-// frustum and decides, per node, what to draw. Later node kinds add their
-// decision (LOD level, grouping cut, silhouette region) to the same walk.
+// frustum and decides, per node, what to draw: LOD level, grouping cut,
+// silhouette region. It sorts what it finds into the draw list's bins: CG
+// items, holdouts, point clouds (graph/DrawList.hpp).
 //
 //   scene.update();
 //   DrawList list;
 //   select(scene, view, {.shading = Shading::Phong}, list);
 
 #include "graph/DrawList.hpp"
+#include "graph/HoldoutMeshes.hpp"
 #include "graph/SilhouetteNodes.hpp"
 #include "graph/View.hpp"
 
@@ -33,6 +35,10 @@ struct SelectSettings {
     // Grouping nodes' trees (graph/GroupingNodes.hpp); the pass writes the
     // proxies' matrices there. Without it every object is drawn.
     GroupingNodes* grouping = nullptr;
+    // Holdout meshes of the CG meshes; a mesh item with one is also put in
+    // the holdout bin. Grouping proxies have none: a group far enough to be
+    // drawn as its translucent proxy cuts no one out.
+    const HoldoutMeshes* holdouts = nullptr;
 };
 
 void select(const Scene& scene, const View& view, const SelectSettings& settings, DrawList& out);

@@ -1,7 +1,5 @@
 #include "runtime/PointCloudLayer.hpp"
 
-#include "graph/Frustum.hpp"
-
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
@@ -74,15 +72,13 @@ LdiRenderer& PointCloudLayer::rendererFor(const LdiSet& set) {
     return *renderers_.back().second;
 }
 
-void PointCloudLayer::draw(const Scene& scene, const PointCloudNodes& clouds, const View& view) {
+void PointCloudLayer::draw(const Scene& scene, const PointCloudNodes& clouds, std::span<const PointCloudItem> visible,
+                           const View& view) {
     cloudsDrawn_ = splatsDrawn_ = 0;
-    const Frustum frustum = Frustum::fromViewProjection(view.viewProjection());
-    std::vector<std::pair<float, NodeId>> visible;
-    for (NodeId n = 0; n < scene.nodeCount(); ++n)
-        if (scene.kind(n) == NodeKind::PointCloud && frustum.classify(scene.worldBound(n)) != Containment::Outside)
-            visible.emplace_back(glm::distance(scene.worldBound(n).center, view.eye), n);
     if (visible.empty()) return;
-    std::sort(visible.begin(), visible.end(), std::greater<>());  // farthest first
+    farthestFirst_.assign(visible.begin(), visible.end());
+    std::sort(farthestFirst_.begin(), farthestFirst_.end(),
+              [](const PointCloudItem& a, const PointCloudItem& b) { return a.viewDistance > b.viewDistance; });
 
     const glm::ivec2 size = view.viewport;
     if (size != textureSize_) {
@@ -111,7 +107,7 @@ void PointCloudLayer::draw(const Scene& scene, const PointCloudNodes& clouds, co
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied "over"
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    for (const auto& [distance, node] : visible) {
+    for (const auto& [node, distance] : farthestFirst_) {
         const glm::mat4& world = scene.world(node);
         LdiRenderer& renderer = rendererFor(clouds.at(scene, node));
         const PointImage& img = renderer.render(localView(view, world));

@@ -5,8 +5,8 @@
 // and drawn over the bound framebuffer with "over", depth-tested against
 // what the Renderer left in the depth buffer.
 //
-//   renderer.draw(scene, list, view, settings);   // CG first
-//   layer.draw(scene, clouds, view);              // then the clouds
+//   renderer.draw(scene, list, view, settings);                // CG first
+//   layer.draw(scene, clouds, list.pointClouds, view);         // then the clouds the select pass found
 //
 // Depth: every layer pixel carries the view depth of the nearest point
 // drawn there, written as gl_FragDepth. A CG surface in front of that
@@ -19,6 +19,7 @@
 // A cloud under a transform is drawn with the view taken into its local
 // space; the transform must be rigid with a uniform scale.
 
+#include "graph/DrawList.hpp"
 #include "graph/LdiRenderer.hpp"
 #include "graph/PointCloudNodes.hpp"
 #include "graph/View.hpp"
@@ -26,6 +27,7 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace arcomp {
@@ -37,8 +39,8 @@ public:
     PointCloudLayer(const PointCloudLayer&) = delete;
     PointCloudLayer& operator=(const PointCloudLayer&) = delete;
 
-    // Needs a current context; call scene.update() first.
-    void draw(const Scene& scene, const PointCloudNodes& clouds, const View& view);
+    // Needs a current context. `visible`: the select pass's point-cloud bin.
+    void draw(const Scene& scene, const PointCloudNodes& clouds, std::span<const PointCloudItem> visible, const View& view);
 
     std::size_t cloudsDrawn() const { return cloudsDrawn_; }
     std::size_t splatsDrawn() const { return splatsDrawn_; }
@@ -51,6 +53,7 @@ private:
     GLuint vao_ = 0, color_ = 0, depth_ = 0;
     glm::ivec2 textureSize_{0, 0};
     std::vector<std::pair<const LdiSet*, std::unique_ptr<LdiRenderer>>> renderers_;
+    std::vector<PointCloudItem> farthestFirst_;
     std::vector<float> ndcDepth_;
     std::size_t cloudsDrawn_ = 0, splatsDrawn_ = 0;
 };

@@ -29,6 +29,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// The frame's GL stages, timed on the GPU (runtime/GpuStageTimes.hpp).
+enum GpuStage { kGpuBackdrop, kGpuRender, kGpuHoldout, kGpuPerson, kGpuStageCount };
+
 double msSince(Clock::time_point& t) {
     const Clock::time_point now = Clock::now();
     const double ms = std::chrono::duration<double, std::milli>(now - t).count();
@@ -92,8 +95,8 @@ Station::Station(const StationConfig& cfg, StationInput input) : cfg_(cfg), inpu
         budget_->model().enableRefit(cfg_.budget.refit);
     }
 
-    cgRenderer_ = std::make_unique<Renderer>();
-    holdoutRenderer_ = std::make_unique<Renderer>();
+    renderer_ = std::make_unique<Renderer>();
+    gpuTimes_ = std::make_unique<GpuStageTimes>(kGpuStageCount);
     if (pointClouds_.size()) cloudLayer_ = std::make_unique<PointCloudLayer>();
     compositor_ = std::make_unique<Compositor>(size);
 
@@ -106,32 +109,31 @@ Station::Station(const StationConfig& cfg, StationInput input) : cfg_(cfg), inpu
 Station::~Station() { finish(); }
 
 void Station::buildHoldouts() {
-    // Every CG mesh gets a twin in the holdout scene: the same place, its
-    // silhouette mesh baked for the box of eyes around the camera (in the
-    // mesh's own space), drawn unlit white into the mask.
+    // Every CG mesh, each LOD level included, gets a holdout: its silhouette
+    // mesh baked for the box of eyes around the camera (in the mesh's own
+    // space), drawn unlit into the mask with the CG node's own matrix.
     Material white;
     white.name = "holdout";
     white.baseColor = glm::vec4(1.0f);
     white.unlit = true;
     white.doubleSided = true;
-    const std::uint32_t material = holdoutScene_.addMaterial(white);
+    const std::uint32_t material = scene_.addMaterial(white);
     const float r = cfg_.compositing.compositor.holdoutRegionMetres;
     const bool full = cfg_.compositing.compositor.holdout == HoldoutMesh::Full;
-    std::set<NodeId> lodsSeen;
     auto moves = [&](NodeId n) {
         for (; n != kNoNode; n = scene_.parent(n))
             for (const ObjectMotion& m : motions_)
                 if (m.node == n) return true;
         return false;
     };
-    for (const NodeId n : scene_.order()) {
-        if (scene_.kind(n) != NodeKind::Mesh) continue;
-        // An LOD node's children are its levels, finest first; the coarser
-        // ones lie inside the finest one's silhouette.
-        const NodeId parent = scene_.parent(n);
-        if (parent != kNoNode && scene_.kind(parent) == NodeKind::Lod && !lodsSeen.insert(parent).second) continue;
-        const glm::mat4& world = scene_.world(n);
-        const glm::mat4 toLocal = glm::inverse(world);
+    const std::vector<NodeId> meshes = [&] {
+        std::vector<NodeId> m;
+        for (const NodeId n : scene_.order())
+            if (scene_.kind(n) == NodeKind::Mesh) m.push_back(n);
+        return m;
+    }();
+    for (const NodeId n : meshes) {
+        const glm::mat4 toLocal = glm::inverse(scene_.world(n));
         std::vector<glm::vec3> corners;
         for (int i = 0; i < 8; ++i) {
             const glm::vec3 offset((i & 1) ? r : -r, (i & 2) ? r : -r, (i & 4) ? r : -r);
@@ -141,12 +143,8 @@ void Station::buildHoldouts() {
         std::vector<ViewRegion> regions;
         // A mover leaves the region it was baked for: its full mesh is the holdout.
         if (!full && !moves(n)) regions.push_back(ViewRegion::fromVertices(corners));
-        const SilhouetteMesh mesh = bakeSilhouetteMesh(g.positions, g.indices, std::move(regions));
-        const NodeId place = holdoutScene_.addTransform(holdoutScene_.root(), world, scene_.name(n));
-        addSilhouetteNode(holdoutScene_, place, silhouettes_, mesh, material, scene_.name(n));
-        holdoutPlaces_.emplace_back(n, place);
+        holdouts_.add(scene_, n, bakeSilhouetteMesh(g.positions, g.indices, std::move(regions)), material);
     }
-    holdoutScene_.update();
 }
 
 void Station::moveObjects(double seconds) {
@@ -158,22 +156,16 @@ void Station::moveObjects(double seconds) {
     for (const ObjectMotion& m : motions_)
         if (m.groupingNode != kNoNode) moved[m.groupingNode].push_back({m.groupingObject, motionVelocity(m, seconds)});
     for (const auto& [node, objects] : moved) regroupMoved(scene_, node, grouping_, objects);
-    for (const auto& [mesh, place] : holdoutPlaces_) holdoutScene_.setLocal(place, scene_.world(mesh));
 }
 
 Image Station::readHoldout() {
     if (!holdoutMask_) holdoutMask_ = std::make_unique<RenderTarget>(compositor_->size());
     holdoutMask_->bind();
-    holdoutRenderer_->draw(holdoutScene_, holdoutList_, view_, {.clearColor = glm::vec4(0.0f)});
+    renderer_->draw(scene_, holdoutList_, view_, {.clearColor = glm::vec4(0.0f)});
     return holdoutMask_->read();
 }
 
-std::size_t Station::silhouetteTrianglesTotal() const {
-    std::size_t n = 0;
-    for (const SilhouetteNode& s : silhouettes_.nodes)
-        for (const SilhouetteRange& r : s.ranges) n += r.indexCount / 3;
-    return n;
-}
+std::size_t Station::silhouetteTrianglesTotal() const { return holdouts_.triangles(); }
 
 void Station::setCamera(const glm::vec3& eye, const glm::vec3& target) {
     CameraConfig camera = cfg_.camera;
@@ -235,67 +227,62 @@ bool Station::frame() {
     const double seconds = input_.replay ? videoSeconds_ : std::chrono::duration<double>(Clock::now() - clockStart_).count();
     if (!motions_.empty()) moveObjects(seconds);
     scene_.update();
-    holdoutScene_.update();
     stats_.updateMs = msSince(t);
 
     glm::vec3 gaze(0.0f);  // zero: the screen centre
     if (gaze_)
         if (const std::optional<GazeSample> g = gaze_->sample(seconds)) gaze = g->direction;
     select(scene_, view_,
-           {.shading = cfg_.render.shading, .lod = lods_.size() ? &lods_ : nullptr, .gaze = gaze, .timeSeconds = seconds, .grouping = &grouping_},
+           {.shading = cfg_.render.shading, .lod = lods_.size() ? &lods_ : nullptr, .gaze = gaze, .timeSeconds = seconds,
+            .grouping = &grouping_, .holdouts = &holdouts_},
            cgList_);
-    select(holdoutScene_, view_, {.shading = Shading::Unlit, .silhouettes = &silhouettes_}, holdoutCandidates_);
-    // In front of the person: the object's centre is nearer than the person
-    // plane along the view axis.
-    holdoutList_.clear();
-    const float plane = cfg_.compositing.compositor.personPlaneMetres;
-    stats_.objectsInFront = stats_.objectsBehind = 0;
-    for (const DrawItem& item : holdoutCandidates_.items) {
-        const float depth = glm::dot(holdoutScene_.worldBound(item.node).center - view_.eye, view_.forward);
-        if (depth < plane) {
-            holdoutList_.items.push_back(item);
-            ++stats_.objectsInFront;
-        } else {
-            ++stats_.objectsBehind;
-        }
-    }
     stats_.selectMs = msSince(t);
 
+    gpuTimes_->collect();  // the previous frame's GL stages
+    stats_.renderMs = gpuTimes_->ms(kGpuRender);
+    stats_.holdoutMs = gpuTimes_->ms(kGpuHoldout);
+    stats_.compositeMs = gpuTimes_->ms(kGpuBackdrop) + gpuTimes_->ms(kGpuPerson);
     if (budget_) {
-        // The controller steers the CG render stage only: its share of the
-        // target is what the other stages left of it last frame.
+        // The controller steers the CG draw only. It learns from the
+        // previous frame's draw before it plans this one; its share of the
+        // target is what the rest of the previous frame left.
+        if (stats_.frame > 0) budget_->observe(stats_.renderMs);
         const double others = stats_.totalMs - stats_.renderMs - stats_.budgetMs;
-        budget_->setTarget(std::max(1.0, cfg_.budget.targetMs - (stats_.frame > 0 ? others : 0.0)));
+        budget_->setTarget(std::max(1.0, cfg_.budget.targetMs - (stats_.frame > 0 ? std::max(0.0, others) : 0.0)));
         stats_.budget = budget_->apply(scene_, cgList_, view_, gaze);
         stats_.budgetMs = msSince(t);
     }
 
     const CompositorConfig& comp = cfg_.compositing.compositor;
+    gpuTimes_->begin(kGpuBackdrop);
     compositor_->begin(frame_, {.backdropVideo = comp.backdropVideo, .backdropColor = comp.backdropColor});
-    glFinish();
-    stats_.compositeMs = msSince(t);
+    gpuTimes_->end(kGpuBackdrop);
 
-    cgRenderer_->draw(scene_, cgList_, view_, {.clearColor = std::nullopt});
-    if (cloudLayer_) cloudLayer_->draw(scene_, pointClouds_, view_);
-    glFinish();
-    stats_.cgTriangles = cgRenderer_->trianglesDrawn();
-    stats_.renderMs = msSince(t);
-    if (budget_) budget_->observe(stats_.renderMs);
+    gpuTimes_->begin(kGpuRender);
+    renderer_->draw(scene_, cgList_, view_, {.clearColor = std::nullopt});
+    gpuTimes_->end(kGpuRender);
+    stats_.cgTriangles = renderer_->trianglesDrawn();
+    msSince(t);
+    if (cloudLayer_) cloudLayer_->draw(scene_, pointClouds_, cgList_.pointClouds, view_);
+    stats_.pointCloudMs = msSince(t);
 
+    chooseHoldouts();
+    gpuTimes_->begin(kGpuHoldout);
     compositor_->beginHoldout();
-    holdoutRenderer_->draw(holdoutScene_, holdoutList_, view_, {.clearColor = std::nullopt});
+    renderer_->draw(scene_, holdoutList_, view_, {.clearColor = std::nullopt});
     compositor_->endHoldout();
-    glFinish();
-    stats_.holdoutTriangles = holdoutRenderer_->trianglesDrawn();
-    stats_.holdoutMs = msSince(t);
+    gpuTimes_->end(kGpuHoldout);
+    stats_.holdoutTriangles = renderer_->trianglesDrawn();
 
+    gpuTimes_->begin(kGpuPerson);
     compositor_->person(person_);
-    glFinish();
-    stats_.compositeMs += msSince(t);
+    gpuTimes_->end(kGpuPerson);
+    gpuTimes_->endFrame();
     stats_.personTiles = compositor_->personTiles();
 
     ++frames_;
     stats_.frame = frames_;
+    msSince(t);
     try {
         writeOutputs();
     } catch (const std::exception& e) {
@@ -307,6 +294,24 @@ bool Station::frame() {
     stats_.outputMs = msSince(t);
     stats_.totalMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     return true;
+}
+
+void Station::chooseHoldouts() {
+    // In front of the person: the object's centre is nearer than the person
+    // plane along the view axis. The CG item is read after the controller,
+    // so the holdout is the silhouette of the level actually drawn.
+    holdoutList_.clear();
+    const float plane = cfg_.compositing.compositor.personPlaneMetres;
+    stats_.objectsInFront = stats_.objectsBehind = 0;
+    for (const HoldoutItem& h : cgList_.holdouts) {
+        if (h.depth >= plane) {
+            ++stats_.objectsBehind;
+            continue;
+        }
+        ++stats_.objectsInFront;
+        if (const std::optional<DrawItem> item = holdouts_.itemFor(scene_, cgList_.items[h.cgItem], view_))
+            holdoutList_.items.push_back(*item);
+    }
 }
 
 void Station::writeOutputs() {

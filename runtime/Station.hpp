@@ -28,9 +28,10 @@
 #include "graph/ObjectMotion.hpp"
 #include "graph/PointCloudNodes.hpp"
 #include "graph/Scene.hpp"
-#include "graph/SilhouetteNodes.hpp"
+#include "graph/HoldoutMeshes.hpp"
 #include "runtime/Compositor.hpp"
 #include "runtime/GazeConfig.hpp"
+#include "runtime/GpuStageTimes.hpp"
 #include "runtime/Renderer.hpp"
 #include "runtime/StationConfig.hpp"
 #include "video/FrameGrabber.hpp"
@@ -60,20 +61,23 @@ struct StationInput {
     static StationInput fromLive(std::unique_ptr<FrameSource> s, double fps);
 };
 
-// Per frame: stage times (wall clock, ms; GL stages end with glFinish so the
-// GPU's share lands in its own stage) and counters.
+// Per frame: stage times (ms) and counters. CPU stages are wall time of
+// this frame. GL stages are the GPU's time from timer queries, of the
+// previous frame: they are read one frame late so that timing never stalls
+// the GPU (where there are no timer queries, the CPU time to submit them).
 struct FrameStats {
     std::uint64_t frame = 0;   // frames composited so far, this one included
-    double captureMs = 0;      // wait for / decode the frame
-    double matteMs = 0;        // person layer on the CPU
-    double updateMs = 0;       // transforms and bounds
-    double selectMs = 0;       // culling, LOD, silhouette region, in front / behind
-    double budgetMs = 0;       // the frame-time controller (0 when it is off)
-    double renderMs = 0;       // CG, all objects, shaded
-    double holdoutMs = 0;      // holdout mask from the front objects' meshes
-    double compositeMs = 0;    // backdrop and person uploads, person tiles drawn
-    double outputMs = 0;       // read back and write files (0 without file outputs)
-    double totalMs = 0;
+    double captureMs = 0;      // CPU: wait for / decode the frame
+    double matteMs = 0;        // CPU: person layer
+    double updateMs = 0;       // CPU: transforms and bounds
+    double selectMs = 0;       // CPU: culling, LOD, grouping cut, silhouette region, bins
+    double budgetMs = 0;       // CPU: the frame-time controller (0 when it is off)
+    double renderMs = 0;       // GL: CG, all objects, shaded (what the controller observes)
+    double pointCloudMs = 0;   // CPU: point clouds splatted and laid over the CG (0 without)
+    double holdoutMs = 0;      // GL: holdout mask from the front objects' silhouette meshes
+    double compositeMs = 0;    // GL: backdrop upload, person upload and tiles
+    double outputMs = 0;       // CPU: read back and write files (0 without file outputs)
+    double totalMs = 0;        // wall time of the whole frame on the CPU
     std::size_t cgTriangles = 0;
     std::size_t holdoutTriangles = 0;
     std::size_t objectsInFront = 0;
@@ -150,6 +154,7 @@ private:
     bool capture();
     bool grabNext();
     void buildHoldouts();
+    void chooseHoldouts();
     void moveObjects(double timeSeconds);
     void writeOutputs();
 
@@ -161,14 +166,12 @@ private:
     LodTable lods_;
     std::vector<ObjectMotion> motions_;
     std::unique_ptr<GazeSource> gaze_;
-    // Each CG mesh and its holdout twin's placing transform, so twins follow movers.
-    std::vector<std::pair<NodeId, NodeId>> holdoutPlaces_;
     PointCloudNodes pointClouds_;
-    Scene holdoutScene_;
-    SilhouetteNodes silhouettes_;
+    HoldoutMeshes holdouts_;
     View view_;
-    DrawList cgList_, holdoutCandidates_, holdoutList_;
-    std::unique_ptr<Renderer> cgRenderer_, holdoutRenderer_;
+    DrawList cgList_, holdoutList_;
+    std::unique_ptr<Renderer> renderer_;  // CG and holdouts: one scene, one set of GPU buffers
+    std::unique_ptr<GpuStageTimes> gpuTimes_;
     std::unique_ptr<PointCloudLayer> cloudLayer_;  // only with point clouds
     std::unique_ptr<Compositor> compositor_;
     std::unique_ptr<RenderTarget> holdoutMask_;  // only for readHoldout()

@@ -56,11 +56,11 @@ protected:
         renderer.draw(file_->scene, list, view, {.clearColor = glm::vec4(0.0f)});
         renders_->cgOnly = target.read();
         renderer.draw(file_->scene, none, view, {.clearColor = glm::vec4(0.0f)});
-        layer.draw(file_->scene, file_->pointClouds, view);
+        layer.draw(file_->scene, file_->pointClouds, list.pointClouds, view);
         renders_->cloudsOnly = target.read();
         clouds_ = layer.cloudsDrawn();
         renderer.draw(file_->scene, list, view, {.clearColor = glm::vec4(0.0f)});
-        layer.draw(file_->scene, file_->pointClouds, view);
+        layer.draw(file_->scene, file_->pointClouds, list.pointClouds, view);
         renders_->both = target.read();
     }
     static void TearDownTestSuite() {

@@ -60,7 +60,7 @@ int render(const RenderOptions& o) {
     std::optional<PointCloudLayer> clouds;
     if (file.pointClouds.size()) {
         clouds.emplace();
-        clouds->draw(scene, file.pointClouds, view);
+        clouds->draw(scene, file.pointClouds, list.pointClouds, view);
     }
     const Image image = target.read();
     writePng(o.out, image);

@@ -1,0 +1,52 @@
+#pragma once
+// The GPU milliseconds of a frame's GL stages, read one frame late so that
+// timing never stalls the pipeline: each stage is bracketed by a
+// GL_TIME_ELAPSED query, and frame N's results are collected during frame
+// N+1, when the GPU has long finished them. Where the context has no timer
+// queries (some ES 3.0 drivers), each stage's CPU submission time stands in.
+//
+//   GpuStageTimes gpu(kStageCount);   // a context must be current
+//   // each frame:
+//   gpu.collect();                    // ms(s) now holds the previous frame
+//   gpu.begin(kRender); renderer.draw(...); gpu.end(kRender);
+//   gpu.endFrame();
+//
+// Stages must not overlap: GL allows one TIME_ELAPSED query at a time.
+
+#include "runtime/GlApi.hpp"
+
+#include <array>
+#include <chrono>
+#include <vector>
+
+namespace arcomp {
+
+class GpuStageTimes {
+public:
+    explicit GpuStageTimes(int stages);
+    ~GpuStageTimes();
+    GpuStageTimes(const GpuStageTimes&) = delete;
+    GpuStageTimes& operator=(const GpuStageTimes&) = delete;
+
+    void begin(int stage);
+    void end(int stage);
+    // Closes this frame's set of queries; the next frame uses the other set.
+    void endFrame();
+    // Reads the previous frame's results into ms(). Call once a frame,
+    // before that frame's first begin().
+    void collect();
+    // The previous frame's milliseconds for `stage` (0 for a stage it skipped).
+    double ms(int stage) const { return ms_[static_cast<std::size_t>(stage)]; }
+    bool usesQueries() const { return !queries_[0].empty(); }
+
+private:
+    using Clock = std::chrono::steady_clock;
+    std::array<std::vector<GLuint>, 2> queries_;  // one set per frame parity
+    std::array<std::vector<bool>, 2> issued_;
+    std::vector<double> cpuMs_;  // without queries: this frame's submission times
+    std::vector<double> ms_;
+    std::vector<Clock::time_point> started_;
+    int current_ = 0;
+};
+
+} // namespace arcomp
