@@ -1,7 +1,7 @@
 // Inputs that once broke a scene-graph parser (found by the fuzzers in
 // tools/fuzz, kept under tests/fuzz-regressions/<target>/), fed to it
 // again: each must load or be refused with the parser's own error, under
-// the sanitizers as well (scripts/test-sanitize runs this suite).
+// the sanitizers as well (scripts/test runs this suite).
 
 #include "graph/GazeSource.hpp"
 #include "graph/LodFile.hpp"
