@@ -309,3 +309,36 @@ TEST(Station, moversFollowVideoTimeAndLodObjectsPickTheirLevel) {
         }
     EXPECT_TRUE(found);
 }
+
+// The holdout comes from the same select pass as the CG: an LOD object in
+// front of the person is cut out with the silhouette of the level drawn.
+TEST(Station, holdoutIsTheSilhouetteOfTheLevelTheCgDraws) {
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    auto run = [](float levelTwoBeyond) {
+        StationConfig cfg;
+        cfg.file = "lod-holdout.yaml";
+        ObjectConfig sphere;
+        sphere.name = "sphere";
+        sphere.shape = "sphere";
+        sphere.position = {0.0f, 0.0f, -30.0f};
+        sphere.lodRatios = {1.0f, 0.25f, 0.05f};
+        sphere.lodThresholds = {levelTwoBeyond / 2.0f, levelTwoBeyond};
+        cfg.objects.push_back(sphere);
+        cfg.camera.given = true;
+        cfg.camera.eye = {0.0f, 0.0f, 0.0f};
+        cfg.camera.target = {0.0f, 0.0f, -1.0f};
+        cfg.compositing.compositor.personPlaneMetres = 100.0f;  // everything stands in front
+        cfg.compositing.compositor.holdout = HoldoutMesh::Full;
+        Station station(cfg, pattern({160, 120}));
+        EXPECT_TRUE(station.frame());
+        EXPECT_EQ(station.stats().objectsInFront, 1u);
+        EXPECT_EQ(station.drawList().holdouts.size(), 1u);
+        return std::pair{station.drawList().items.at(0).level, station.stats().holdoutTriangles};
+    };
+    const auto [fineLevel, fineTriangles] = run(1000.0f);
+    const auto [coarseLevel, coarseTriangles] = run(20.0f);
+    EXPECT_EQ(fineLevel, 0);
+    EXPECT_EQ(coarseLevel, 2);
+    EXPECT_GT(coarseTriangles, 0u);
+    EXPECT_LT(coarseTriangles * 5, fineTriangles);  // a twentieth of the triangles, as the ratios say
+}
