@@ -1,6 +1,6 @@
 #pragma once
 // The station config's `budget` section: the frame-time controller
-// (graph/FrameBudget.hpp) on or off, its target, what it may change and the
+// (graph/budget/FrameBudget.hpp) on or off, its target, what it may change and the
 // calibration it predicts from. Documented in configs/README.md.
 //
 //   budget:
@@ -14,7 +14,7 @@
 // An absent section leaves the controller off: objects are drawn as the
 // select pass chose them, as before.
 
-#include "graph/FrameBudget.hpp"
+#include "graph/budget/FrameBudget.hpp"
 #include "runtime/YamlMap.hpp"
 
 #include <filesystem>

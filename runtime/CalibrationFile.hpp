@@ -12,7 +12,7 @@
 //   writeCalibration("calib.yaml", model, {glDescription(), {1280, 720}});
 //   CostModel m = readCalibration("calib.yaml");   // throws ConfigError with line:column
 
-#include "graph/CostModel.hpp"
+#include "graph/budget/CostModel.hpp"
 
 #include <glm/glm.hpp>
 

@@ -1,8 +1,8 @@
 #include "runtime/CostCalibration.hpp"
 
-#include "graph/LodAlternatives.hpp"
-#include "graph/RecursiveLeastSquares.hpp"
-#include "graph/View.hpp"
+#include "graph/lod/LodAlternatives.hpp"
+#include "graph/budget/RecursiveLeastSquares.hpp"
+#include "graph/core/View.hpp"
 
 #include <algorithm>
 #include <array>

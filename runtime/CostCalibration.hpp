@@ -13,8 +13,8 @@
 // projected disc of the bounding sphere), so the fit maps that very number
 // to time. A frame's overhead is the time of a frame that draws nothing.
 
-#include "graph/CostModel.hpp"
-#include "graph/Scene.hpp"
+#include "graph/budget/CostModel.hpp"
+#include "graph/core/Scene.hpp"
 #include "runtime/FrameTimer.hpp"
 #include "runtime/Renderer.hpp"
 

@@ -1,6 +1,6 @@
 #include "runtime/FrameTimer.hpp"
 
-#include "graph/ElapsedTime.hpp"
+#include "graph/core/ElapsedTime.hpp"
 
 namespace arcomp {
 

@@ -8,7 +8,7 @@
 //
 //   std::unique_ptr<GazeSource> g = makeGazeSource(cfg.gaze, view);   // null: screen centre
 
-#include "graph/GazeSource.hpp"
+#include "runtime/GazeSource.hpp"
 
 #include <filesystem>
 #include <memory>
@@ -22,7 +22,7 @@ enum class GazeKind { ScreenCentre, Fixed, Track };
 struct GazeConfig {
     GazeKind kind = GazeKind::ScreenCentre;
     glm::vec3 direction{0.0f, 0.0f, -1.0f};  // fixed: world space
-    std::filesystem::path track;             // track: CSV (graph/GazeSource.hpp)
+    std::filesystem::path track;             // track: CSV (runtime/GazeSource.hpp)
 };
 
 void readGazeConfig(YamlMap& root, GazeConfig& out);

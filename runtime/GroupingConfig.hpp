@@ -5,8 +5,8 @@
 //
 //   readGroupingConfig(root, cfg.grouping);   // from loadStationConfig
 
-#include "graph/GroupingNodes.hpp"
-#include "graph/PaperForest.hpp"
+#include "graph/grouping/GroupingNodes.hpp"
+#include "graph/scenes/PaperForest.hpp"
 
 #include <optional>
 

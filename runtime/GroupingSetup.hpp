@@ -8,7 +8,7 @@
 //   ... objects, under g when cfg.grouping.objects ...
 //   finishGrouping(cfg.grouping, scene, g, table, lods);
 
-#include "graph/Lod.hpp"
+#include "graph/lod/Lod.hpp"
 #include "runtime/GroupingConfig.hpp"
 
 namespace arcomp {

@@ -5,7 +5,7 @@
 //
 //   double db = psnr(readPng("full.png"), readPng("grouped.png"));
 
-#include "graph/Material.hpp"
+#include "graph/core/Material.hpp"
 
 namespace arcomp {
 

@@ -3,7 +3,7 @@
 //
 //   writePng("out/frame-0001.png", target.read());
 
-#include "graph/Material.hpp"
+#include "graph/core/Material.hpp"
 
 #include <filesystem>
 

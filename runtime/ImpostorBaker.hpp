@@ -4,7 +4,7 @@
 // rendered once, at load time, orthographically around the group's sphere
 // from the station camera's direction into an RGBA image that becomes an
 // unlit, blended material; the select pass then draws the group as one
-// quad facing the eye (graph/GroupingNodes.hpp). A GL context must be
+// quad facing the eye (graph/grouping/GroupingNodes.hpp). A GL context must be
 // current.
 //
 //   bakeImpostors(scene, groupingNode, table, {.pixelsPerUnit = 0.5f});
@@ -13,7 +13,7 @@
 // Objects are drawn at their finest LOD level. Groups made later by a
 // rebuild have no image and fall back to the box until baked again.
 
-#include "graph/GroupingNodes.hpp"
+#include "graph/grouping/GroupingNodes.hpp"
 
 #include <optional>
 

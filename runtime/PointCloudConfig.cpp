@@ -1,9 +1,9 @@
 #include "runtime/PointCloudConfig.hpp"
 
-#include "graph/LdiCamera.hpp"
-#include "graph/ProceduralTree.hpp"
-#include "graph/VoxelFile.hpp"
-#include "graph/Voxelizer.hpp"
+#include "graph/points/LdiCamera.hpp"
+#include "graph/scenes/ProceduralTree.hpp"
+#include "graph/io/VoxelFile.hpp"
+#include "graph/points/Voxelizer.hpp"
 #include "runtime/YamlMap.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>

@@ -6,7 +6,7 @@
 //   readPointCloudConfig(root, cfg.pointClouds);   // from loadStationConfig
 //   addPointClouds(cfg.pointClouds, scene, clouds, warnings);
 
-#include "graph/PointCloudNodes.hpp"
+#include "graph/points/PointCloudNodes.hpp"
 
 #include <glm/glm.hpp>
 

@@ -19,10 +19,10 @@
 // A cloud under a transform is drawn with the view taken into its local
 // space; the transform must be rigid with a uniform scale.
 
-#include "graph/DrawList.hpp"
-#include "graph/LdiRenderer.hpp"
-#include "graph/PointCloudNodes.hpp"
-#include "graph/View.hpp"
+#include "graph/core/DrawList.hpp"
+#include "graph/points/LdiRenderer.hpp"
+#include "graph/points/PointCloudNodes.hpp"
+#include "graph/core/View.hpp"
 #include "runtime/ShaderProgram.hpp"
 
 #include <memory>

@@ -7,7 +7,7 @@
 //   target.bind();  ... draw ...
 //   Image img = target.read();   // rows top to bottom, premultiplied RGBA
 
-#include "graph/Material.hpp"
+#include "graph/core/Material.hpp"
 #include "runtime/GlApi.hpp"
 
 #include <glm/glm.hpp>

@@ -12,8 +12,8 @@
 // says) and is encoded once at the end, so the compositor can blend layers
 // with "over" directly.
 
-#include "graph/DrawList.hpp"
-#include "graph/View.hpp"
+#include "graph/core/DrawList.hpp"
+#include "graph/core/View.hpp"
 #include "runtime/ShaderProgram.hpp"
 
 #include <array>

@@ -1,7 +1,7 @@
 #include "runtime/SceneFile.hpp"
 
-#include "graph/LodLevels.hpp"
-#include "graph/ModelLoader.hpp"
+#include "graph/lod/LodLevels.hpp"
+#include "graph/io/ModelLoader.hpp"
 #include "runtime/GroupingSetup.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>

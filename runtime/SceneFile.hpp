@@ -5,12 +5,12 @@
 //   SceneFile f = loadSceneFile("bunny.obj");          // throws ModelError
 //   SceneFile g = loadSceneFile("station.yaml");       // throws ConfigError
 
-#include "graph/GroupingNodes.hpp"
-#include "graph/Lod.hpp"
-#include "graph/ObjectMotion.hpp"
-#include "graph/PointCloudNodes.hpp"
-#include "graph/Scene.hpp"
-#include "graph/View.hpp"
+#include "graph/grouping/GroupingNodes.hpp"
+#include "graph/lod/Lod.hpp"
+#include "graph/core/ObjectMotion.hpp"
+#include "graph/points/PointCloudNodes.hpp"
+#include "graph/core/Scene.hpp"
+#include "graph/core/View.hpp"
 #include "runtime/StationConfig.hpp"
 
 #include <optional>

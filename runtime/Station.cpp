@@ -1,7 +1,7 @@
 #include "runtime/Station.hpp"
 
-#include "graph/SelectPass.hpp"
-#include "graph/SilhouetteMesh.hpp"
+#include "graph/core/SelectPass.hpp"
+#include "graph/silhouette/SilhouetteMesh.hpp"
 #include "runtime/CalibrationFile.hpp"
 #include "runtime/ImageFile.hpp"
 #include "runtime/ImpostorBaker.hpp"

@@ -12,7 +12,7 @@
 //   while (station.frame()) {}                              // false at the end of the input
 //   station.finish();                                       // closes the video file
 //
-// With `budget` on, the controller (graph/FrameBudget.hpp) edits the CG draw
+// With `budget` on, the controller (graph/budget/FrameBudget.hpp) edits the CG draw
 // list between select and render so that the whole frame meets the target.
 // The composited frame stays in compositedFrame() after frame(): an RGBA8
 // colour texture (colorTexture(), rows bottom-up as GL keeps them) in an FBO
@@ -21,14 +21,14 @@
 // Replay pulls frames in order with no thread and no drops, so the same
 // input gives bit-identical output images on the same machine.
 
-#include "graph/DrawList.hpp"
-#include "graph/FrameBudget.hpp"
-#include "graph/GroupingNodes.hpp"
-#include "graph/Lod.hpp"
-#include "graph/ObjectMotion.hpp"
-#include "graph/PointCloudNodes.hpp"
-#include "graph/Scene.hpp"
-#include "graph/HoldoutMeshes.hpp"
+#include "graph/core/DrawList.hpp"
+#include "graph/budget/FrameBudget.hpp"
+#include "graph/grouping/GroupingNodes.hpp"
+#include "graph/lod/Lod.hpp"
+#include "graph/core/ObjectMotion.hpp"
+#include "graph/points/PointCloudNodes.hpp"
+#include "graph/core/Scene.hpp"
+#include "graph/silhouette/HoldoutMeshes.hpp"
 #include "runtime/Compositor.hpp"
 #include "runtime/GazeConfig.hpp"
 #include "runtime/GpuStageTimes.hpp"

@@ -5,8 +5,8 @@
 //
 //   StationConfig cfg = loadStationConfig("configs/demo-replay.yaml");
 
-#include "graph/Lod.hpp"
-#include "graph/Shading.hpp"
+#include "graph/lod/Lod.hpp"
+#include "graph/core/Shading.hpp"
 #include "runtime/CompositingConfig.hpp"
 #include "runtime/OperatorConfig.hpp"
 #include "runtime/BudgetConfig.hpp"
@@ -34,13 +34,13 @@ struct ObjectConfig {
     glm::vec3 position{0.0f};
     glm::vec3 rotationDegrees{0.0f};
     glm::vec3 scale{1.0f};
-    // Generated levels of detail (graph/LodLevels.hpp), one LOD node per
+    // Generated levels of detail (graph/lod/LodLevels.hpp), one LOD node per
     // mesh, chosen by `policy`; empty ratios: no LOD.
     std::vector<float> lodRatios;      // finest first; the first is 1
     std::vector<float> lodThresholds;  // ratios.size() - 1 boundaries
     LodPolicy lodPolicy = LodPolicy::Distance;
     float lodFadeSeconds = 0.0f;
-    // A mover (graph/ObjectMotion.hpp): back and forth along the velocity.
+    // A mover (graph/core/ObjectMotion.hpp): back and forth along the velocity.
     glm::vec3 velocity{0.0f};
     float rangeMetres = 0.0f;
     int line = 0;  // where it was declared, for messages about it later

@@ -10,7 +10,7 @@
 //   overlay.add(station.stats(), station.drawList(), camera);   // each frame
 //   const cv::Mat& rgba = overlay.image();
 
-#include "graph/DrawList.hpp"
+#include "graph/core/DrawList.hpp"
 #include "runtime/Station.hpp"
 #include "video/SourceStatus.hpp"
 

@@ -1,5 +1,5 @@
-#include "graph/Bounds.hpp"
-#include "graph/Frustum.hpp"
+#include "graph/core/Bounds.hpp"
+#include "graph/core/Frustum.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

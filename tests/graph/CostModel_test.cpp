@@ -1,5 +1,5 @@
 // The per-object cost model t = A·pixels + B and its online re-fit.
-#include "graph/CostModel.hpp"
+#include "graph/budget/CostModel.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "graph/CoverageRaster.hpp"
+#include "graph/silhouette/CoverageRaster.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-#include "graph/FacingClass.hpp"
-#include "graph/Geometry.hpp"
-#include "graph/ViewRegion.hpp"
+#include "graph/silhouette/FacingClass.hpp"
+#include "graph/core/Geometry.hpp"
+#include "graph/silhouette/ViewRegion.hpp"
 
 #include <gtest/gtest.h>
 

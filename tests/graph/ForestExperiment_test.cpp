@@ -1,4 +1,4 @@
-#include "graph/ForestExperiment.hpp"
+#include "graph/scenes/ForestExperiment.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // The frame-time controller on synthetic cost tables: the paper's order of
 // degradation and upgrade, convergence on a machine unlike its table,
 // hysteresis, importance.
-#include "graph/FrameBudget.hpp"
+#include "graph/budget/FrameBudget.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

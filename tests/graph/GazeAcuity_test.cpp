@@ -1,4 +1,4 @@
-#include "graph/GazeAcuity.hpp"
+#include "graph/lod/GazeAcuity.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

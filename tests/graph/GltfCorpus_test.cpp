@@ -1,7 +1,7 @@
 // Every file of the Khronos glTF-Validator corpus through our loader, against
 // the validator's verdict. Prints the tally.
 
-#include "graph/ModelLoader.hpp"
+#include "graph/io/ModelLoader.hpp"
 
 #include "../support/TempDir.hpp"
 

@@ -1,4 +1,4 @@
-#include "graph/GroupingMeasure.hpp"
+#include "graph/grouping/GroupingMeasure.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "graph/GroupingTree.hpp"
+#include "graph/grouping/GroupingTree.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-#include "graph/HoldoutMeshes.hpp"
-#include "graph/Lod.hpp"
-#include "graph/SelectPass.hpp"
+#include "graph/silhouette/HoldoutMeshes.hpp"
+#include "graph/lod/Lod.hpp"
+#include "graph/core/SelectPass.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "graph/LdiRenderer.hpp"
+#include "graph/points/LdiRenderer.hpp"
 
 #include <gtest/gtest.h>
 

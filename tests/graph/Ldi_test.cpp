@@ -1,4 +1,4 @@
-#include "graph/Ldi.hpp"
+#include "graph/points/Ldi.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Which mesh nodes are the other levels of an LOD node.
-#include "graph/LodAlternatives.hpp"
+#include "graph/lod/LodAlternatives.hpp"
 
 #include <gtest/gtest.h>
 

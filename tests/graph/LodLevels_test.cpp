@@ -1,5 +1,5 @@
-#include "graph/LodFile.hpp"
-#include "graph/ModelLoader.hpp"
+#include "graph/io/LodFile.hpp"
+#include "graph/io/ModelLoader.hpp"
 
 #include <gtest/gtest.h>
 

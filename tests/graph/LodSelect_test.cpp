@@ -1,7 +1,7 @@
 // The select pass with LOD nodes: the level is chosen while culling, and
 // only the chosen level's subtree is visited.
-#include "graph/Lod.hpp"
-#include "graph/SelectPass.hpp"
+#include "graph/lod/Lod.hpp"
+#include "graph/core/SelectPass.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "graph/Lod.hpp"
+#include "graph/lod/Lod.hpp"
 
 #include <gtest/gtest.h>
 

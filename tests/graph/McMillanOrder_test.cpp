@@ -1,4 +1,4 @@
-#include "graph/McMillanOrder.hpp"
+#include "graph/points/McMillanOrder.hpp"
 
 #include <gtest/gtest.h>
 

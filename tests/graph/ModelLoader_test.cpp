@@ -1,4 +1,4 @@
-#include "graph/ModelLoader.hpp"
+#include "graph/io/ModelLoader.hpp"
 
 #include "../support/TempDir.hpp"
 

@@ -1,4 +1,4 @@
-#include "graph/ObjectMotion.hpp"
+#include "graph/core/ObjectMotion.hpp"
 
 #include <gtest/gtest.h>
 

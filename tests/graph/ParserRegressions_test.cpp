@@ -3,11 +3,11 @@
 // again: each must load or be refused with the parser's own error, under
 // the sanitizers as well (scripts/test runs this suite).
 
-#include "graph/GazeSource.hpp"
-#include "graph/LodFile.hpp"
-#include "graph/ModelLoader.hpp"
-#include "graph/SilhouetteFile.hpp"
-#include "graph/VoxelFile.hpp"
+#include "graph/io/LodFile.hpp"
+#include "graph/io/ModelLoader.hpp"
+#include "graph/io/SilhouetteFile.hpp"
+#include "graph/io/VoxelFile.hpp"
+#include "tests/support/ParserRegressions.hpp"
 
 #include <gtest/gtest.h>
 
@@ -18,37 +18,14 @@
 #include <vector>
 
 using namespace arcomp;
+using arcomp::test::eachLoadsOrIsRefused;
 namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<fs::path> regressionInputs(const std::string& target) {
-    std::vector<fs::path> files;
-    const fs::path dir = fs::path(ARCOMP_SOURCE_DIR) / "tests/fuzz-regressions" / target;
-    if (fs::exists(dir))
-        for (const auto& e : fs::directory_iterator(dir))
-            if (e.is_regular_file()) files.push_back(e.path());
-    return files;
-}
-
 std::vector<unsigned char> bytesOf(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), {}};
-}
-
-// Runs `parse` on every input of `target`; only `Expected` may escape it.
-template <class Expected>
-void eachLoadsOrIsRefused(const std::string& target, const std::function<void(const fs::path&)>& parse) {
-    const auto files = regressionInputs(target);
-    ASSERT_FALSE(files.empty()) << "tests/fuzz-regressions/" << target << " holds no inputs";
-    for (const fs::path& file : files) {
-        try {
-            parse(file);
-        } catch (const Expected&) {
-        } catch (const std::exception& e) {
-            ADD_FAILURE() << file << ": escaped as " << typeid(e).name() << ": " << e.what();
-        }
-    }
 }
 
 } // namespace
@@ -74,8 +51,4 @@ TEST(ParserRegressions, silhouetteInputsLoadOrAreRefusedWithModelError) {
 
 TEST(ParserRegressions, voxelInputsLoadOrAreRefusedWithModelError) {
     eachLoadsOrIsRefused<ModelError>("voxel", [](const fs::path& f) { decodeVoxels(bytesOf(f), f.string()); });
-}
-
-TEST(ParserRegressions, gazeTrackInputsLoadOrAreRefusedWithGazeTrackError) {
-    eachLoadsOrIsRefused<GazeTrackError>("gaze", [](const fs::path& f) { readGazeTrackCsv(f); });
 }

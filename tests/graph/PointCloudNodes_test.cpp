@@ -1,5 +1,5 @@
-#include "graph/PointCloudNodes.hpp"
-#include "graph/SelectPass.hpp"
+#include "graph/points/PointCloudNodes.hpp"
+#include "graph/core/SelectPass.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -1,6 +1,6 @@
 // Recursive least squares with forgetting: the online re-fit of the
 // frame-time cost model.
-#include "graph/RecursiveLeastSquares.hpp"
+#include "graph/budget/RecursiveLeastSquares.hpp"
 
 #include <gtest/gtest.h>
 

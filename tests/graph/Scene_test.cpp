@@ -1,5 +1,5 @@
-#include "graph/Scene.hpp"
-#include "graph/SelectPass.hpp"
+#include "graph/core/Scene.hpp"
+#include "graph/core/SelectPass.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

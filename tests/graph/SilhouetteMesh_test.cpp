@@ -1,9 +1,9 @@
-#include "graph/CoverageRaster.hpp"
-#include "graph/FlatMesh.hpp"
-#include "graph/SelectPass.hpp"
-#include "graph/SilhouetteMesh.hpp"
-#include "graph/SilhouetteNodes.hpp"
-#include "graph/View.hpp"
+#include "graph/silhouette/CoverageRaster.hpp"
+#include "graph/silhouette/FlatMesh.hpp"
+#include "graph/core/SelectPass.hpp"
+#include "graph/silhouette/SilhouetteMesh.hpp"
+#include "graph/silhouette/SilhouetteNodes.hpp"
+#include "graph/core/View.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "graph/ViewRegion.hpp"
+#include "graph/silhouette/ViewRegion.hpp"
 
 #include <gtest/gtest.h>
 

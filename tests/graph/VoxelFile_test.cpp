@@ -1,4 +1,4 @@
-#include "graph/VoxelFile.hpp"
+#include "graph/io/VoxelFile.hpp"
 
 #include <gtest/gtest.h>
 

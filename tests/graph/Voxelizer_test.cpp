@@ -1,4 +1,4 @@
-#include "graph/Voxelizer.hpp"
+#include "graph/points/Voxelizer.hpp"
 
 #include <gtest/gtest.h>
 

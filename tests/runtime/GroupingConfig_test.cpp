@@ -1,7 +1,7 @@
 // The station config's grouping section and the grouped scene it builds.
 
-#include "graph/ForestExperiment.hpp"
-#include "graph/SelectPass.hpp"
+#include "graph/scenes/ForestExperiment.hpp"
+#include "graph/core/SelectPass.hpp"
 #include "runtime/ConfigError.hpp"
 #include "runtime/SceneFile.hpp"
 #include "runtime/StationConfig.hpp"

@@ -1,7 +1,7 @@
 // Grouping proxies on screen: boxes are blended over what is behind them,
 // impostors show the baked members, and both draw far fewer triangles.
 
-#include "graph/ForestExperiment.hpp"
+#include "graph/scenes/ForestExperiment.hpp"
 #include "runtime/GlContext.hpp"
 #include "runtime/ImageDifference.hpp"
 #include "runtime/ImageFile.hpp"

@@ -2,9 +2,9 @@
 // gaze on the leftmost; each level has its own colour, so the written image
 // shows where the levels fall off, and the pixels are checked against k1.
 
-#include "graph/GazeAcuity.hpp"
-#include "graph/Lod.hpp"
-#include "graph/SelectPass.hpp"
+#include "graph/lod/GazeAcuity.hpp"
+#include "graph/lod/Lod.hpp"
+#include "graph/core/SelectPass.hpp"
 #include "runtime/GlContext.hpp"
 #include "runtime/ImageFile.hpp"
 #include "runtime/RenderTarget.hpp"

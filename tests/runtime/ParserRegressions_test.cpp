@@ -1,10 +1,11 @@
-// Inputs that once broke the config or calibration reader (found by the
-// fuzzers in tools/fuzz, kept under tests/fuzz-regressions/<target>/), fed
-// to it again: each must load or be refused with ConfigError.
+// Inputs that once broke the config, calibration or gaze-track reader
+// (tests/support/ParserRegressions.hpp), fed to it again.
 
 #include "runtime/CalibrationFile.hpp"
 #include "runtime/ConfigError.hpp"
+#include "runtime/GazeSource.hpp"
 #include "runtime/StationConfig.hpp"
+#include "tests/support/ParserRegressions.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,33 +14,17 @@
 #include <vector>
 
 using namespace arcomp;
+using arcomp::test::eachLoadsOrIsRefused;
 namespace fs = std::filesystem;
 
-namespace {
-
-void eachLoadsOrIsRefused(const std::string& target, const std::function<void(const fs::path&)>& parse) {
-    const fs::path dir = fs::path(ARCOMP_SOURCE_DIR) / "tests/fuzz-regressions" / target;
-    int inputs = 0;
-    if (fs::exists(dir))
-        for (const auto& e : fs::directory_iterator(dir)) {
-            if (!e.is_regular_file()) continue;
-            ++inputs;
-            try {
-                parse(e.path());
-            } catch (const ConfigError&) {
-            } catch (const std::exception& x) {
-                ADD_FAILURE() << e.path() << ": escaped as " << typeid(x).name() << ": " << x.what();
-            }
-        }
-    EXPECT_GT(inputs, 0) << dir << " holds no inputs";
-}
-
-} // namespace
-
 TEST(ParserRegressions, configInputsLoadOrAreRefusedWithConfigError) {
-    eachLoadsOrIsRefused("config", [](const fs::path& f) { loadStationConfig(f); });
+    eachLoadsOrIsRefused<ConfigError>("config", [](const fs::path& f) { loadStationConfig(f); });
 }
 
 TEST(ParserRegressions, calibrationInputsLoadOrAreRefusedWithConfigError) {
-    eachLoadsOrIsRefused("calibration", [](const fs::path& f) { readCalibration(f); });
+    eachLoadsOrIsRefused<ConfigError>("calibration", [](const fs::path& f) { readCalibration(f); });
+}
+
+TEST(ParserRegressions, gazeTrackInputsLoadOrAreRefusedWithGazeTrackError) {
+    eachLoadsOrIsRefused<GazeTrackError>("gaze", [](const fs::path& f) { readGazeTrackCsv(f); });
 }

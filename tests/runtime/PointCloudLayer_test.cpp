@@ -2,7 +2,7 @@
 // three ways (CG only, clouds only, both) and compared where the config
 // puts a box in front of a tree and a ball behind one.
 
-#include "graph/SelectPass.hpp"
+#include "graph/core/SelectPass.hpp"
 #include "runtime/GlContext.hpp"
 #include "runtime/PointCloudLayer.hpp"
 #include "runtime/RenderTarget.hpp"

@@ -1,7 +1,7 @@
 // Headless rendering under both context kinds: coverage, colour at known
 // points, the four shading levels, and GL 3.3 against ES 3.0.
 
-#include "graph/SelectPass.hpp"
+#include "graph/core/SelectPass.hpp"
 #include "runtime/GlContext.hpp"
 #include "runtime/ImageFile.hpp"
 #include "runtime/RenderTarget.hpp"

@@ -3,7 +3,7 @@
 // with its full mesh); silhouette against full-mesh holdouts along a camera
 // path; replay determinism.
 
-#include "graph/SelectPass.hpp"
+#include "graph/core/SelectPass.hpp"
 #include "runtime/CalibrationFile.hpp"
 #include "runtime/GlContext.hpp"
 #include "runtime/ImageFile.hpp"

@@ -1,7 +1,7 @@
 // The windowed path: a GLFW window (under Xvfb in CI, registered by
 // tests/CMakeLists.txt through xvfb-run) drawn by the same renderer.
 
-#include "graph/SelectPass.hpp"
+#include "graph/core/SelectPass.hpp"
 #include "runtime/Renderer.hpp"
 #include "runtime/WindowContext.hpp"
 

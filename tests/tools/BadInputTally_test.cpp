@@ -9,7 +9,7 @@
 
 #include "../support/ChildProcess.hpp"
 #include "../support/TempDir.hpp"
-#include "graph/ModelError.hpp"
+#include "graph/io/ModelError.hpp"
 #include "runtime/ConfigError.hpp"
 #include "runtime/SceneFile.hpp"
 #include "tests/support/BoxStation.hpp"

@@ -1,5 +1,5 @@
 // `arcomp bake lod` end to end: the acceptance command on the bunny.
-#include "graph/LodFile.hpp"
+#include "graph/io/LodFile.hpp"
 
 #include <gtest/gtest.h>
 

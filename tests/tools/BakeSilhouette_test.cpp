@@ -1,4 +1,4 @@
-#include "graph/SilhouetteFile.hpp"
+#include "graph/io/SilhouetteFile.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,8 @@
 // LOD levels of a model's meshes, merged into one mesh in model space,
 // with the triangle counts reached and the geometric error of each.
 
-#include "graph/LodFile.hpp"
-#include "graph/ModelLoader.hpp"
+#include "graph/io/LodFile.hpp"
+#include "graph/io/ModelLoader.hpp"
 #include "tools/arcomp/Command.hpp"
 
 #include <cmath>
@@ -114,7 +114,7 @@ const bool registered = registerBake({"lod", "Simplified LOD levels of a model (
     auto out = std::make_shared<std::string>();
     app.add_option("model", *model, "Model file (.obj, .gltf, .glb)")->required();
     app.add_option("--ratios", *ratios, "Fractions of the triangles per level, finest first")->capture_default_str();
-    app.add_option("--out", *out, "LOD file to write (graph/LodFile.hpp)");
+    app.add_option("--out", *out, "LOD file to write (graph/io/LodFile.hpp)");
     return [=] { return bakeLod(*model, *ratios, *out); };
 }});
 

@@ -1,13 +1,13 @@
 // arcomp bake silhouette <model> --regions <spec> --out <file>: reduces a
 // model for each viewpoint region and writes the shared-buffer result
-// (graph/SilhouetteFile.hpp). Regions are given as
+// (graph/io/SilhouetteFile.hpp). Regions are given as
 //   around:N                      N default boxes around the model (as the benchmark uses)
 //   x0,y0,z0,x1,y1,z1[;...]       axis-aligned boxes in model space
 //   a YAML file                   regions: [{box: [x0,y0,z0,x1,y1,z1]}, {vertices: [[x,y,z], ...]}]
 // Progress goes to stderr, then one report line per region.
 
-#include "graph/FlatMesh.hpp"
-#include "graph/SilhouetteFile.hpp"
+#include "graph/silhouette/FlatMesh.hpp"
+#include "graph/io/SilhouetteFile.hpp"
 #include "tools/arcomp/Command.hpp"
 
 #include <yaml-cpp/yaml.h>

@@ -1,10 +1,10 @@
 // `arcomp bake voxels <model> --res 200 --out tree.arvox`: voxelizes a glTF
 // or OBJ model into the voxel file that point-cloud nodes load (see
-// graph/VoxelFile.hpp). Progress goes to stderr.
+// graph/io/VoxelFile.hpp). Progress goes to stderr.
 
-#include "graph/ModelLoader.hpp"
-#include "graph/VoxelFile.hpp"
-#include "graph/Voxelizer.hpp"
+#include "graph/io/ModelLoader.hpp"
+#include "graph/io/VoxelFile.hpp"
+#include "graph/points/Voxelizer.hpp"
 #include "tools/arcomp/Command.hpp"
 
 #include <chrono>

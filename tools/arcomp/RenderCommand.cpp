@@ -1,7 +1,7 @@
 // arcomp render <scene> --out F.png: one headless frame of a model or a
 // station config's scene.
 
-#include "graph/SelectPass.hpp"
+#include "graph/core/SelectPass.hpp"
 #include "runtime/GlContext.hpp"
 #include "runtime/ImageFile.hpp"
 #include "runtime/ImpostorBaker.hpp"

@@ -2,8 +2,8 @@
 // Command.hpp); this file only parses the command line and maps failures to
 // exit codes.
 
-#include "graph/GazeSource.hpp"
-#include "graph/ModelError.hpp"
+#include "runtime/GazeSource.hpp"
+#include "graph/io/ModelError.hpp"
 #include "runtime/ConfigError.hpp"
 #include "tools/arcomp/Command.hpp"
 #include "video/VideoError.hpp"

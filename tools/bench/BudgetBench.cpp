@@ -48,9 +48,9 @@
 // (unmanaged, managed, target), budget_prediction.png (managed predicted vs
 // measured) and calibration.yaml.
 
-#include "graph/FrameBudget.hpp"
-#include "graph/LodAlternatives.hpp"
-#include "graph/SelectPass.hpp"
+#include "graph/budget/FrameBudget.hpp"
+#include "graph/lod/LodAlternatives.hpp"
+#include "graph/core/SelectPass.hpp"
 #include "runtime/CalibrationFile.hpp"
 #include "runtime/CostCalibration.hpp"
 #include "runtime/GlContext.hpp"

@@ -2,8 +2,8 @@
 // the scene of CullScene.hpp, timed against OpenSceneGraph's CullVisitor on
 // the same scene in the same run where OpenSceneGraph is available.
 
-#include "graph/Lod.hpp"
-#include "graph/SelectPass.hpp"
+#include "graph/lod/Lod.hpp"
+#include "graph/core/SelectPass.hpp"
 #include "tools/arcomp/Command.hpp"
 #include "tools/bench/CullScene.hpp"
 

@@ -4,7 +4,7 @@
 // Compiled only where OpenSceneGraph was found.
 #ifdef ARCOMP_HAVE_OSG
 
-#include "graph/Geometry.hpp"
+#include "graph/core/Geometry.hpp"
 #include "tools/bench/CullScene.hpp"
 
 #include <osg/Geode>

@@ -7,8 +7,8 @@
 //   FlightScene f = buildFlightScene({.mountains = 60});
 //   View v = flightView(f, frame / double(frames - 1), {1280, 720});
 
-#include "graph/Scene.hpp"
-#include "graph/View.hpp"
+#include "graph/core/Scene.hpp"
+#include "graph/core/View.hpp"
 
 #include <array>
 #include <vector>

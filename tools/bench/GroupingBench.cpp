@@ -8,9 +8,9 @@
 // Targets (issue 4): build < 1 s at 10,000 objects and < 20 s at 100,000;
 // select <= 2 ms a frame and rebuild <= 5 ms a frame at 100,000.
 
-#include "graph/ElapsedTime.hpp"
-#include "graph/GroupingNodes.hpp"
-#include "graph/SelectPass.hpp"
+#include "graph/core/ElapsedTime.hpp"
+#include "graph/grouping/GroupingNodes.hpp"
+#include "graph/core/SelectPass.hpp"
 #include "tools/arcomp/Command.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>

@@ -7,7 +7,7 @@
 // and reports the grouped images' PSNR against the full ones. Baseline in
 // the same run: simplification alone.
 
-#include "graph/ForestExperiment.hpp"
+#include "graph/scenes/ForestExperiment.hpp"
 #include "runtime/GlContext.hpp"
 #include "runtime/ImageDifference.hpp"
 #include "runtime/ImageFile.hpp"

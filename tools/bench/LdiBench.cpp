@@ -21,10 +21,10 @@
 // registration into the LDIs (the paper's "LDI generation"), not the
 // voxelization.
 
-#include "graph/ElapsedTime.hpp"
-#include "graph/LdiRenderer.hpp"
-#include "graph/ProceduralTree.hpp"
-#include "graph/Voxelizer.hpp"
+#include "graph/core/ElapsedTime.hpp"
+#include "graph/points/LdiRenderer.hpp"
+#include "graph/scenes/ProceduralTree.hpp"
+#include "graph/points/Voxelizer.hpp"
 #include "tools/arcomp/Command.hpp"
 
 #include <glm/gtc/constants.hpp>

@@ -2,7 +2,7 @@
 // validating loader, against tinyobjloader's bare parse of the same file
 // (the baseline: what validation, vertex sharing and normals cost).
 
-#include "graph/ModelLoader.hpp"
+#include "graph/io/ModelLoader.hpp"
 #include "tools/arcomp/Command.hpp"
 
 #include <tiny_obj_loader.h>

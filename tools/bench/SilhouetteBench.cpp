@@ -4,10 +4,10 @@
 // Masks come from the CPU coverage rasterizer, so the figures are
 // deterministic and need no GL.
 
-#include "graph/CoverageRaster.hpp"
-#include "graph/FlatMesh.hpp"
-#include "graph/SilhouetteMesh.hpp"
-#include "graph/View.hpp"
+#include "graph/silhouette/CoverageRaster.hpp"
+#include "graph/silhouette/FlatMesh.hpp"
+#include "graph/silhouette/SilhouetteMesh.hpp"
+#include "graph/core/View.hpp"
 #include "tools/arcomp/Command.hpp"
 
 #include <algorithm>

@@ -14,7 +14,7 @@
 // With --config, that station's video is forced to loop and its file
 // outputs are dropped, so a soak never fills a disk.
 
-#include "graph/ElapsedTime.hpp"
+#include "graph/core/ElapsedTime.hpp"
 #include "runtime/GlContext.hpp"
 #include "runtime/ReplayInput.hpp"
 #include "runtime/StationRunner.hpp"

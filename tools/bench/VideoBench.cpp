@@ -11,7 +11,7 @@
 //  - drops: the same source with a consumer at 10 Hz; the slot holds one
 //    frame, so everything in between is dropped and counted, never queued.
 
-#include "graph/ElapsedTime.hpp"
+#include "graph/core/ElapsedTime.hpp"
 #include "tools/arcomp/Command.hpp"
 #include "video/CaptureThread.hpp"
 #include "video/FileSource.hpp"

@@ -1,5 +1,5 @@
 // libFuzzer target: baked LOD files through parseLodFile.
-#include "graph/LodFile.hpp"
+#include "graph/io/LodFile.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     try {

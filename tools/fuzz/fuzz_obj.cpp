@@ -1,5 +1,5 @@
 // libFuzzer target: Wavefront OBJ text through parseObj.
-#include "graph/ModelLoader.hpp"
+#include "graph/io/ModelLoader.hpp"
 #include "tools/fuzz/FuzzInput.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -1,5 +1,5 @@
 // libFuzzer target: baked silhouette files through decodeSilhouetteMesh.
-#include "graph/SilhouetteFile.hpp"
+#include "graph/io/SilhouetteFile.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     try {

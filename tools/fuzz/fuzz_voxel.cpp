@@ -1,5 +1,5 @@
 // libFuzzer target: voxel files through decodeVoxels.
-#include "graph/VoxelFile.hpp"
+#include "graph/io/VoxelFile.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     try {

@@ -4,10 +4,10 @@
 //
 //   build-fuzz/make_seeds build-fuzz/seeds
 
-#include "graph/CostModel.hpp"
-#include "graph/LodFile.hpp"
-#include "graph/SilhouetteFile.hpp"
-#include "graph/VoxelFile.hpp"
+#include "graph/budget/CostModel.hpp"
+#include "graph/io/LodFile.hpp"
+#include "graph/io/SilhouetteFile.hpp"
+#include "graph/io/VoxelFile.hpp"
 #include "runtime/CalibrationFile.hpp"
 
 #include <filesystem>

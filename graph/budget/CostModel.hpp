@@ -1,0 +1,99 @@
+#pragma once
+// What a frame will cost, before it is drawn (paper: uniform-frame-time,
+// DESIGN.md §3). Each object costs t = A·pixels + B, with A and B measured
+// for each (LOD level, shading) pair on the machine at hand; a frame costs
+// the sum over what it draws plus a per-frame overhead (clear, read-back,
+// compositing) that is measured too.
+//
+//   CostModel model(3);                                   // three LOD levels
+//   model.set(0, Shading::Phong, {.msPerPixel = 2e-5, .ms = 0.9});
+//   model.overheadMs = 1.5;
+//   double itemsMs = model.itemsMs(list);                 // calibrated sum
+//   double frameMs = model.frameMs(itemsMs);              // with the online fit
+//   ... draw, time it ...
+//   model.observe(itemsMs, measuredMs);
+//
+// The calibrated table comes from `arcomp bench calibrate` (runtime/
+// CostCalibration.hpp). While the station runs, observe() re-fits one gain
+// on the table's sum by recursive least squares with forgetting, so the
+// prediction follows the machine as its load changes; the overhead stays as
+// measured. Why one number: a frame's measurement is one number, the sum
+// over many objects. While the controller holds the frame time steady, every
+// frame feeds nearly the same sum, and a gain and an offset fitted together
+// cannot be told apart (one drifts to its bound, the other takes over, and
+// the prediction stops responding to what is drawn). A gain alone is
+// identified by every frame that draws anything.
+
+#include "graph/core/DrawList.hpp"
+#include "graph/budget/RecursiveLeastSquares.hpp"
+
+#include <vector>
+
+namespace arcomp {
+
+// A and B of the paper's cost formula for one (level, shading) pair.
+struct CostCoefficients {
+    double msPerPixel = 0.0;  // A
+    double ms = 0.0;          // B
+};
+
+class CostModel {
+public:
+    // levels ≥ 1; every entry starts at zero cost. Levels beyond the last
+    // cost what the last one costs.
+    explicit CostModel(std::size_t levels = 1);
+
+    std::size_t levels() const { return levels_; }
+    void set(std::size_t level, Shading shading, CostCoefficients c);
+    const CostCoefficients& at(std::size_t level, Shading shading) const;
+
+    // The calibrated cost of one object, without the online fit.
+    double itemMs(std::size_t level, Shading shading, double pixels) const;
+    // The calibrated cost of everything in the list, without the overhead.
+    double itemsMs(const DrawList& list) const;
+    // Predicted frame time for objects whose calibrated costs sum to itemsMs:
+    // gain · itemsMs + overheadMs; before any observation the gain is 1.
+    double frameMs(double itemsMs) const;
+
+    // Online re-fitting: the calibrated sum that was predicted and the frame
+    // time measured for it. `forgetting` is λ per frame (0.6: the last two or
+    // three frames count). The table's error comes from the view (occlusion,
+    // overdraw, how well a bounding sphere stands for the pixels drawn) and
+    // drifts slowly along a camera path: in `bench budget` one frame's error
+    // predicts the next's with correlation 0.98, so a short memory predicts
+    // best (an average over the last dozen frames left 12% error at the 95th
+    // percentile where this leaves 8%).
+    // Frames that draw (almost) nothing say nothing about the gain and are
+    // ignored. Each frame's own gain enters the fit within a factor
+    // kMaxSampleRatio of the current gain, so a stall of the machine (a
+    // frame ten times as long) moves the prediction by a bounded step that
+    // the next frames undo. Letting single stalls pass unheeded, by fitting
+    // the median of the last three or five frames' gains, was tried: the
+    // view's own changes of cost then reach the gain a frame or two late.
+    // In bench budget on a quiet machine, p95 |dev| from the target was
+    // 9.9-15.1% (mean 12.7, 8 runs) with the median of three, 15.8-27.3%
+    // (3 runs) with five, and 10.0-14.2% (mean 12.1, 6 runs) without; frames
+    // over the target by 20% were 1.0% against 0.6%.
+    void observe(double itemsMs, double measuredMs);
+    void enableRefit(bool on, double forgetting = kDefaultForgetting);
+    // Forgets the fit: gain 1.
+    void resetFit();
+    double gain() const;
+    // The per-frame time that does not scale with what is drawn: overheadMs.
+    double offset() const { return overheadMs; }
+
+    static constexpr double kDefaultForgetting = 0.6;
+    static constexpr double kMaxSampleRatio = 1.25;
+
+    double overheadMs = 0.0;
+
+private:
+    std::size_t index(std::size_t level, Shading shading) const;
+
+    std::size_t levels_;
+    std::vector<CostCoefficients> table_;  // level-major, kShadingCount per level
+    bool refit_ = true;
+    RecursiveLeastSquares fit_;
+};
+
+} // namespace arcomp

@@ -1,0 +1,139 @@
+#include "graph/core/Scene.hpp"
+
+#include <cstdlib>
+
+namespace arcomp {
+
+Scene::Scene() { addNode(kNoNode, NodeKind::Group, 0, "root"); }
+
+NodeId Scene::addNode(NodeId parent, NodeKind kind, std::uint32_t payload, std::string name) {
+    const auto id = static_cast<NodeId>(kind_.size());
+    if (parent != kNoNode && parent >= id) std::abort();  // parents exist before children
+    kind_.push_back(kind);
+    worldBound_.push_back({});
+    world_.emplace_back(1.0f);
+    payload_.push_back(payload);
+    parent_.push_back(parent);
+    firstChild_.push_back(kNoNode);
+    lastChild_.push_back(kNoNode);
+    nextSibling_.push_back(kNoNode);
+    local_.emplace_back(1.0f);
+    localBound_.push_back({});
+    localDirty_.push_back(1);
+    name_.push_back(std::move(name));
+    if (parent != kNoNode) {
+        if (lastChild_[parent] == kNoNode) firstChild_[parent] = id;
+        else nextSibling_[lastChild_[parent]] = id;
+        lastChild_[parent] = id;
+    }
+    structureDirty_ = true;
+    anyLocalDirty_ = true;
+    return id;
+}
+
+NodeId Scene::addGroup(NodeId parent, std::string name) {
+    return addNode(parent, NodeKind::Group, 0, std::move(name));
+}
+
+NodeId Scene::addTransform(NodeId parent, const glm::mat4& local, std::string name) {
+    const NodeId id = addNode(parent, NodeKind::Transform, 0, std::move(name));
+    local_[id] = local;
+    return id;
+}
+
+NodeId Scene::addMesh(NodeId parent, MeshPart part, std::string name) {
+    if (part.geometry >= geometries_.size() || part.material >= materials_.size()) std::abort();
+    meshParts_.push_back(part);
+    const NodeId id = addNode(parent, NodeKind::Mesh, static_cast<std::uint32_t>(meshParts_.size() - 1), std::move(name));
+    localBound_[id] = geometries_[part.geometry].bound;
+    return id;
+}
+
+std::uint32_t Scene::addGeometry(Geometry g) {
+    geometries_.push_back(std::move(g));
+    return static_cast<std::uint32_t>(geometries_.size() - 1);
+}
+
+std::uint32_t Scene::addMaterial(Material m) {
+    materials_.push_back(std::move(m));
+    return static_cast<std::uint32_t>(materials_.size() - 1);
+}
+
+std::uint32_t Scene::addImage(Image i) {
+    images_.push_back(std::move(i));
+    return static_cast<std::uint32_t>(images_.size() - 1);
+}
+
+void Scene::setLocalBound(NodeId node, const Sphere& bound) {
+    localBound_[node] = bound;
+    localDirty_[node] = 1;
+    anyLocalDirty_ = true;
+}
+
+void Scene::setLocal(NodeId node, const glm::mat4& local) {
+    local_[node] = local;
+    localDirty_[node] = 1;
+    anyLocalDirty_ = true;
+}
+
+std::vector<NodeId> Scene::children(NodeId n) const {
+    std::vector<NodeId> out;
+    for (NodeId c = firstChild_[n]; c != kNoNode; c = nextSibling_[c]) out.push_back(c);
+    return out;
+}
+
+void Scene::rebuildOrder() {
+    order_.clear();
+    order_.reserve(kind_.size());
+    subtreeEnd_.assign(kind_.size(), 0);
+    // Iterative pre-order walk; a node's subtree ends where the walk next
+    // leaves it, which is when its position's end is filled in.
+    std::vector<std::pair<NodeId, std::uint32_t>> stack;  // node, its position
+    stack.push_back({root(), 0});
+    order_.push_back(root());
+    NodeId next = firstChild_[root()];
+    while (!stack.empty()) {
+        if (next != kNoNode) {
+            const auto pos = static_cast<std::uint32_t>(order_.size());
+            order_.push_back(next);
+            stack.push_back({next, pos});
+            next = firstChild_[next];
+        } else {
+            const auto [node, pos] = stack.back();
+            stack.pop_back();
+            subtreeEnd_[pos] = static_cast<std::uint32_t>(order_.size());
+            next = nextSibling_[node];
+            if (stack.empty()) break;
+        }
+    }
+    structureDirty_ = false;
+}
+
+void Scene::update() {
+    const bool structureChanged = structureDirty_;
+    if (structureChanged) rebuildOrder();
+    if (!anyLocalDirty_ && !structureChanged) return;
+
+    // Top-down: a world matrix changes when its local or its parent's world did.
+    std::vector<std::uint8_t> changed(kind_.size(), 0);
+    for (NodeId n : order_) {
+        const NodeId p = parent_[n];
+        const bool parentChanged = p != kNoNode && changed[p];
+        if (!localDirty_[n] && !parentChanged) continue;
+        world_[n] = p == kNoNode ? local_[n] : world_[p] * local_[n];
+        changed[n] = 1;
+        localDirty_[n] = 0;
+    }
+    // Bottom-up: bounds of changed nodes, then of every ancestor above them.
+    for (auto it = order_.rbegin(); it != order_.rend(); ++it) {
+        const NodeId n = *it;
+        if (!changed[n] && !structureChanged) continue;
+        Sphere s = transformed(localBound_[n], world_[n]);
+        for (NodeId c = firstChild_[n]; c != kNoNode; c = nextSibling_[c]) s = merged(s, worldBound_[c]);
+        worldBound_[n] = s;
+        if (parent_[n] != kNoNode) changed[parent_[n]] = 1;
+    }
+    anyLocalDirty_ = false;
+}
+
+} // namespace arcomp

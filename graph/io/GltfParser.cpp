@@ -1,0 +1,665 @@
+// glTF 2.0 through tinygltf, then checked index by index before anything is
+// used: tinygltf parses JSON and reads buffers, but leaves ranges, types and
+// the node graph to the caller.
+
+#include "graph/io/ContainedPath.hpp"
+#include "graph/io/ModelLoader.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <set>
+
+namespace arcomp {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Extensions whose absence from our support would change what is drawn, and
+// which we do support.
+const std::set<std::string> kSupportedRequired{"KHR_materials_unlit", "KHR_mesh_quantization"};
+
+// The largest element count we accept for an accessor without a buffer view
+// (all zeros, possibly sparse): real data is bounded by its buffer's size.
+constexpr std::size_t kMaxElements = std::size_t{1} << 26;
+
+std::string ptr(const char* array, std::size_t index, const char* field = nullptr) {
+    std::string p = std::string("/") + array + "/" + std::to_string(index);
+    if (field) p += std::string("/") + field;
+    return p;
+}
+
+struct FileAccess {
+    fs::path folder;
+    std::string refusal;  // first refusal, reported instead of tinygltf's "file not found"
+};
+
+std::string identityExpand(const std::string& path, void*) { return path; }
+
+// tinygltf joins the folder and the URI; recover the URI to check it.
+std::optional<fs::path> guarded(const std::string& joined, FileAccess& access) {
+    std::string uri = joined;
+    const std::string prefix = access.folder.string();
+    if (!prefix.empty() && uri.starts_with(prefix)) {
+        uri.erase(0, prefix.size());
+        while (uri.starts_with('/')) uri.erase(0, 1);
+    }
+    std::string reason;
+    auto path = containedPath(access.folder, uri, reason);
+    if (!path && access.refusal.empty()) access.refusal = reason;
+    return path;
+}
+
+bool guardedExists(const std::string& joined, void* user) {
+    auto& access = *static_cast<FileAccess*>(user);
+    const auto path = guarded(joined, access);
+    std::error_code ec;
+    return path && fs::is_regular_file(*path, ec);
+}
+
+bool guardedRead(std::vector<unsigned char>* out, std::string* err, const std::string& joined, void* user) {
+    auto& access = *static_cast<FileAccess*>(user);
+    const auto path = guarded(joined, access);
+    if (!path) {
+        if (err) *err += access.refusal + "\n";
+        return false;
+    }
+    std::ifstream in(*path, std::ios::binary);
+    if (!in) {
+        if (err) *err += "cannot read " + path->string() + "\n";
+        return false;
+    }
+    out->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    return true;
+}
+
+bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+    if (err) *err += "writing is not allowed\n";
+    return false;
+}
+
+// Whether an image's buffer view lies inside its buffer. tinygltf hands a
+// view's bytes to the decoder without that check, so a view longer than its
+// buffer had the decoder read past the end (a fuzz finding).
+bool imageViewInsideBuffer(const tinygltf::Image& image, const tinygltf::Model& model) {
+    if (image.bufferView < 0) return true;  // a URI: tinygltf decoded it into a vector of its own
+    if (static_cast<std::size_t>(image.bufferView) >= model.bufferViews.size()) return false;
+    const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(image.bufferView)];
+    if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size()) return false;
+    const std::size_t length = model.buffers[static_cast<std::size_t>(view.buffer)].data.size();
+    return view.byteOffset <= length && view.byteLength <= length - view.byteOffset;
+}
+
+// An image that does not decode costs its texture, not the model. `user` is
+// the model being loaded.
+bool lenientImage(tinygltf::Image* image, const int index, std::string* err, std::string* warn, int w, int h,
+                  const unsigned char* bytes, int size, void* user) {
+    (void)err;
+    const auto drawnWithout = [&](const std::string& why) {
+        if (warn) *warn += "image " + std::to_string(index) + " " + why + "; drawn without it\n";
+        image->image.clear();
+        image->width = image->height = 0;
+        return true;
+    };
+    if (!imageViewInsideBuffer(*image, *static_cast<const tinygltf::Model*>(user)))
+        return drawnWithout("has a buffer view that runs past its buffer");
+    std::string localErr;
+    if (tinygltf::LoadImageData(image, index, &localErr, warn, w, h, bytes, size, nullptr)) return true;
+    return drawnWithout("does not decode: " + localErr);
+}
+
+int componentCount(int type) {
+    switch (type) {
+    case TINYGLTF_TYPE_SCALAR: return 1;
+    case TINYGLTF_TYPE_VEC2: return 2;
+    case TINYGLTF_TYPE_VEC3: return 3;
+    case TINYGLTF_TYPE_VEC4: return 4;
+    case TINYGLTF_TYPE_MAT2: return 4;
+    case TINYGLTF_TYPE_MAT3: return 9;
+    case TINYGLTF_TYPE_MAT4: return 16;
+    default: return 0;
+    }
+}
+
+int componentSize(int componentType) {
+    switch (componentType) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
+    default: return 0;
+    }
+}
+
+const char* typeName(int type) {
+    switch (type) {
+    case TINYGLTF_TYPE_SCALAR: return "SCALAR";
+    case TINYGLTF_TYPE_VEC2: return "VEC2";
+    case TINYGLTF_TYPE_VEC3: return "VEC3";
+    case TINYGLTF_TYPE_VEC4: return "VEC4";
+    default: return "a matrix type";
+    }
+}
+
+class GltfReader {
+public:
+    GltfReader(const fs::path& file, tinygltf::Model& model) : file_(file.string()), model_(model) {}
+
+    [[noreturn]] void fail(const std::string& where, const std::string& reason) const {
+        throw ModelError(file_, where, reason);
+    }
+
+    // Reads `count` elements of `accessor` as floats, each `components` wide,
+    // checking every byte it touches. Integer components are converted as
+    // the spec says: normalized ones to [0,1] or [-1,1], others as values.
+    std::vector<float> readFloats(std::size_t index, const std::string& usePointer, int wantType,
+                                  const std::vector<int>& allowedComponents) const {
+        const tinygltf::Accessor& a = accessor(index, usePointer);
+        const std::string where = ptr("accessors", index);
+        if (a.type != wantType)
+            fail(where + "/type", std::string("is ") + typeName(a.type) + ", expected " + typeName(wantType) +
+                                       " (used by " + usePointer + ")");
+        if (std::find(allowedComponents.begin(), allowedComponents.end(), a.componentType) ==
+            allowedComponents.end())
+            fail(where + "/componentType", "component type " + std::to_string(a.componentType) +
+                                               " is not allowed for " + usePointer);
+        const int n = componentCount(a.type);
+        std::vector<float> out(a.count * static_cast<std::size_t>(n), 0.0f);
+        if (a.bufferView >= 0) {
+            const auto [data, stride] = elements(a, index);
+            const int size = componentSize(a.componentType);
+            for (std::size_t e = 0; e < a.count; ++e)
+                for (int c = 0; c < n; ++c)
+                    out[e * n + c] = convert(data + e * stride + static_cast<std::size_t>(c * size), a);
+        }
+        if (a.sparse.isSparse) applySparse(a, index, out, n);
+        for (std::size_t i = 0; i < out.size(); ++i)
+            if (!std::isfinite(out[i]))
+                fail(where, "element " + std::to_string(i / n) + " is not a finite number");
+        return out;
+    }
+
+    std::vector<std::uint32_t> readIndices(std::size_t index, const std::string& usePointer,
+                                           std::size_t vertexCount) const {
+        const tinygltf::Accessor& a = accessor(index, usePointer);
+        const std::string where = ptr("accessors", index);
+        if (a.type != TINYGLTF_TYPE_SCALAR) fail(where + "/type", "indices must be SCALAR");
+        if (a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+            a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+            a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+            fail(where + "/componentType", "indices must be unsigned byte, short or int, not " +
+                                               std::to_string(a.componentType));
+        if (a.sparse.isSparse) fail(where + "/sparse", "sparse index accessors are not supported");
+        if (a.bufferView < 0) fail(where, "index accessor has no buffer view");
+        const auto [data, stride] = elements(a, index);
+        std::vector<std::uint32_t> out(a.count);
+        for (std::size_t e = 0; e < a.count; ++e) {
+            out[e] = readUnsigned(data + e * stride, a.componentType);
+            if (out[e] >= vertexCount)
+                fail(where, "index " + std::to_string(out[e]) + " at element " + std::to_string(e) +
+                                " is out of range for " + std::to_string(vertexCount) + " vertices");
+        }
+        return out;
+    }
+
+    // Every buffer view must lie inside its buffer, used or not.
+    void checkView(std::size_t index) const {
+        std::size_t stride = 0;
+        view(static_cast<int>(index), ptr("bufferViews", index), stride);
+    }
+
+    std::size_t count(std::size_t index, const std::string& usePointer) const {
+        return accessor(index, usePointer).count;
+    }
+
+private:
+    const tinygltf::Accessor& accessor(std::size_t index, const std::string& usePointer) const {
+        if (index >= model_.accessors.size())
+            fail(usePointer, "accessor " + std::to_string(index) + " does not exist (" +
+                                 std::to_string(model_.accessors.size()) + " accessors)");
+        const tinygltf::Accessor& a = model_.accessors[index];
+        if (componentCount(a.type) == 0) fail(ptr("accessors", index, "type"), "unknown accessor type");
+        if (componentSize(a.componentType) == 0)
+            fail(ptr("accessors", index, "componentType"), "unknown component type " + std::to_string(a.componentType));
+        // The schema's minimum: an empty accessor would also hand null data on.
+        if (a.count == 0) fail(ptr("accessors", index, "count"), "count is 0; an accessor holds at least 1 element");
+        if (a.bufferView < 0 && a.count > kMaxElements)
+            fail(ptr("accessors", index, "count"), "count " + std::to_string(a.count) + " is larger than supported");
+        return a;
+    }
+
+    // The bytes of a buffer view, after checking it lies inside its buffer.
+    std::pair<const unsigned char*, std::size_t> view(int viewIndex, const std::string& usePointer,
+                                                      std::size_t& byteStride) const {
+        if (viewIndex < 0 || static_cast<std::size_t>(viewIndex) >= model_.bufferViews.size())
+            fail(usePointer, "buffer view " + std::to_string(viewIndex) + " does not exist (" +
+                                 std::to_string(model_.bufferViews.size()) + " buffer views)");
+        const tinygltf::BufferView& v = model_.bufferViews[static_cast<std::size_t>(viewIndex)];
+        const std::string where = ptr("bufferViews", static_cast<std::size_t>(viewIndex));
+        if (v.buffer < 0 || static_cast<std::size_t>(v.buffer) >= model_.buffers.size())
+            fail(where + "/buffer", "buffer " + std::to_string(v.buffer) + " does not exist");
+        const auto& data = model_.buffers[static_cast<std::size_t>(v.buffer)].data;
+        if (v.byteOffset > data.size() || v.byteLength > data.size() - v.byteOffset)
+            fail(where, "bytes " + std::to_string(v.byteOffset) + "+" + std::to_string(v.byteLength) +
+                            " lie outside buffer " + std::to_string(v.buffer) + " of " + std::to_string(data.size()) +
+                            " bytes");
+        byteStride = v.byteStride;
+        return {data.data() + v.byteOffset, v.byteLength};
+    }
+
+    std::pair<const unsigned char*, std::size_t> elements(const tinygltf::Accessor& a, std::size_t index) const {
+        const std::string where = ptr("accessors", index);
+        std::size_t stride = 0;
+        const auto [bytes, length] = view(a.bufferView, where + "/bufferView", stride);
+        const std::size_t elementSize =
+            static_cast<std::size_t>(componentCount(a.type)) * static_cast<std::size_t>(componentSize(a.componentType));
+        if (stride == 0) stride = elementSize;
+        if (stride < elementSize)
+            fail(ptr("bufferViews", static_cast<std::size_t>(a.bufferView), "byteStride"),
+                 "stride " + std::to_string(stride) + " is smaller than an element (" + std::to_string(elementSize) +
+                     " bytes)");
+        if (a.count == 0) return {bytes, stride};
+        // count - 1 strides plus one element must fit, without overflow.
+        if (a.byteOffset > length || (a.count - 1) > (length - a.byteOffset) / stride ||
+            (a.count - 1) * stride + elementSize > length - a.byteOffset)
+            fail(where, std::to_string(a.count) + " elements from byte " + std::to_string(a.byteOffset) +
+                            " do not fit in buffer view " + std::to_string(a.bufferView) + " of " +
+                            std::to_string(length) + " bytes");
+        if (a.byteOffset % static_cast<std::size_t>(componentSize(a.componentType)) != 0)
+            fail(where + "/byteOffset", "is not a multiple of the component size");
+        return {bytes + a.byteOffset, stride};
+    }
+
+    static std::uint32_t readUnsigned(const unsigned char* p, int componentType) {
+        switch (componentType) {
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return *p;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { std::uint16_t v; std::memcpy(&v, p, 2); return v; }
+        default: { std::uint32_t v; std::memcpy(&v, p, 4); return v; }
+        }
+    }
+
+    static float convert(const unsigned char* p, const tinygltf::Accessor& a) {
+        switch (a.componentType) {
+        case TINYGLTF_COMPONENT_TYPE_FLOAT: { float v; std::memcpy(&v, p, 4); return v; }
+        case TINYGLTF_COMPONENT_TYPE_BYTE: {
+            const auto v = static_cast<std::int8_t>(*p);
+            return a.normalized ? std::max(static_cast<float>(v) / 127.0f, -1.0f) : static_cast<float>(v);
+        }
+        case TINYGLTF_COMPONENT_TYPE_SHORT: {
+            std::int16_t v;
+            std::memcpy(&v, p, 2);
+            return a.normalized ? std::max(static_cast<float>(v) / 32767.0f, -1.0f) : static_cast<float>(v);
+        }
+        default: {
+            const std::uint32_t v = readUnsigned(p, a.componentType);
+            if (!a.normalized) return static_cast<float>(v);
+            const float max = a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ? 255.0f
+                              : a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 65535.0f
+                                                                                           : 4294967295.0f;
+            return static_cast<float>(v) / max;
+        }
+        }
+    }
+
+    void applySparse(const tinygltf::Accessor& a, std::size_t index, std::vector<float>& out, int n) const {
+        const std::string where = ptr("accessors", index) + "/sparse";
+        if (a.sparse.count < 0 || static_cast<std::size_t>(a.sparse.count) > a.count)
+            fail(where + "/count", "sparse count " + std::to_string(a.sparse.count) + " exceeds the accessor's " +
+                                       std::to_string(a.count));
+        const auto count = static_cast<std::size_t>(a.sparse.count);
+        const int indexType = a.sparse.indices.componentType;
+        if (indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+            indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+            fail(where + "/indices/componentType", "must be unsigned byte, short or int");
+        auto region = [&](int viewIndex, int byteOffset, std::size_t elementSize, const std::string& p) {
+            std::size_t stride = 0;
+            const auto [bytes, length] = view(viewIndex, p + "/bufferView", stride);
+            if (byteOffset < 0 || static_cast<std::size_t>(byteOffset) > length ||
+                count * elementSize > length - static_cast<std::size_t>(byteOffset))
+                fail(p, std::to_string(count) + " sparse elements do not fit in buffer view " +
+                            std::to_string(viewIndex));
+            return bytes + byteOffset;
+        };
+        const unsigned char* indices =
+            region(a.sparse.indices.bufferView, a.sparse.indices.byteOffset, static_cast<std::size_t>(componentSize(indexType)),
+                   where + "/indices");
+        const std::size_t valueSize = static_cast<std::size_t>(n * componentSize(a.componentType));
+        const unsigned char* values = region(a.sparse.values.bufferView, a.sparse.values.byteOffset, valueSize,
+                                             where + "/values");
+        for (std::size_t s = 0; s < count; ++s) {
+            const std::uint32_t target = readUnsigned(indices + s * static_cast<std::size_t>(componentSize(indexType)), indexType);
+            if (target >= a.count)
+                fail(where + "/indices", "index " + std::to_string(target) + " is out of range for " +
+                                             std::to_string(a.count) + " elements");
+            for (int c = 0; c < n; ++c)
+                out[target * static_cast<std::size_t>(n) + static_cast<std::size_t>(c)] =
+                    convert(values + s * valueSize + static_cast<std::size_t>(c * componentSize(a.componentType)), a);
+        }
+    }
+
+    std::string file_;
+    const tinygltf::Model& model_;
+};
+
+glm::mat4 nodeMatrix(const tinygltf::Node& node, std::size_t index, const GltfReader& reader) {
+    const std::string where = ptr("nodes", index);
+    auto finite = [&](const std::vector<double>& v, const char* field) {
+        for (double d : v)
+            if (!std::isfinite(d)) reader.fail(where + "/" + field, "holds a value that is not finite");
+    };
+    if (!node.matrix.empty()) {
+        if (node.matrix.size() != 16) reader.fail(where + "/matrix", "must have 16 numbers");
+        finite(node.matrix, "matrix");
+        glm::mat4 m;
+        for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = static_cast<float>(node.matrix[static_cast<std::size_t>(i)]);
+        return m;
+    }
+    glm::mat4 m(1.0f);
+    if (!node.translation.empty()) {
+        if (node.translation.size() != 3) reader.fail(where + "/translation", "must have 3 numbers");
+        finite(node.translation, "translation");
+        m = glm::translate(m, glm::vec3(node.translation[0], node.translation[1], node.translation[2]));
+    }
+    if (!node.rotation.empty()) {
+        if (node.rotation.size() != 4) reader.fail(where + "/rotation", "must have 4 numbers");
+        finite(node.rotation, "rotation");
+        glm::quat q(static_cast<float>(node.rotation[3]), static_cast<float>(node.rotation[0]),
+                    static_cast<float>(node.rotation[1]), static_cast<float>(node.rotation[2]));
+        const float len = glm::length(q);
+        if (len > 0.0f) m *= glm::mat4_cast(q / len);
+    }
+    if (!node.scale.empty()) {
+        if (node.scale.size() != 3) reader.fail(where + "/scale", "must have 3 numbers");
+        finite(node.scale, "scale");
+        m = glm::scale(m, glm::vec3(node.scale[0], node.scale[1], node.scale[2]));
+    }
+    return m;
+}
+
+// Triangle lists from the three triangle modes.
+std::vector<std::uint32_t> triangulate(int mode, std::vector<std::uint32_t> idx) {
+    if (mode == TINYGLTF_MODE_TRIANGLES) {
+        idx.resize(idx.size() - idx.size() % 3);
+        return idx;
+    }
+    std::vector<std::uint32_t> out;
+    for (std::size_t i = 2; i < idx.size(); ++i) {
+        if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+            // Every other triangle of a strip is flipped to keep the winding.
+            if (i % 2 == 0) out.insert(out.end(), {idx[i - 2], idx[i - 1], idx[i]});
+            else out.insert(out.end(), {idx[i - 1], idx[i - 2], idx[i]});
+        } else {
+            out.insert(out.end(), {idx[0], idx[i - 1], idx[i]});
+        }
+    }
+    return out;
+}
+
+Image toRgba8(const tinygltf::Image& src) {
+    Image out;
+    if (src.width <= 0 || src.height <= 0 || src.component < 1 || src.component > 4) return out;
+    const std::size_t pixels = static_cast<std::size_t>(src.width) * static_cast<std::size_t>(src.height);
+    const std::size_t bytesPerChannel = src.bits == 16 ? 2 : src.bits == 32 ? 4 : 1;
+    if (src.image.size() < pixels * static_cast<std::size_t>(src.component) * bytesPerChannel) return out;
+    out.width = src.width;
+    out.height = src.height;
+    out.rgba.resize(pixels * 4);
+    for (std::size_t p = 0; p < pixels; ++p) {
+        auto channel = [&](int c) -> std::uint8_t {
+            // The most significant byte of little-endian 16-bit samples.
+            const std::size_t at = (p * static_cast<std::size_t>(src.component) + static_cast<std::size_t>(c)) * bytesPerChannel;
+            return src.image[at + bytesPerChannel - 1];
+        };
+        const std::uint8_t r = channel(0);
+        const std::uint8_t g = src.component >= 3 ? channel(1) : r;
+        const std::uint8_t b = src.component >= 3 ? channel(2) : r;
+        const std::uint8_t a = src.component == 4 ? channel(3) : src.component == 2 ? channel(1) : 255;
+        out.rgba[p * 4 + 0] = r;
+        out.rgba[p * 4 + 1] = g;
+        out.rgba[p * 4 + 2] = b;
+        out.rgba[p * 4 + 3] = a;
+    }
+    return out;
+}
+
+} // namespace
+
+ParsedModel parseGltf(const fs::path& file) {
+    const std::string name = file.string();
+    FileAccess access{file.parent_path().empty() ? fs::path(".") : file.parent_path(), {}};
+    tinygltf::TinyGLTF loader;
+    loader.SetFsCallbacks({&guardedExists, &identityExpand, &guardedRead, &refuseWrite, &access});
+    tinygltf::Model model;
+    loader.SetImageLoader(&lenientImage, &model);
+    std::string err, warn;
+    std::ifstream probe(file, std::ios::binary);
+    char magic[4] = {};
+    probe.read(magic, 4);
+    const bool binary = probe.gcount() == 4 && std::equal(magic, magic + 4, "glTF");
+    bool ok = false;
+    try {
+        ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, name) : loader.LoadASCIIFromFile(&model, &err, &warn, name);
+    } catch (const std::exception& e) {
+        // tinygltf checks some inputs with vector::at: a GLB buffer with
+        // byteLength 0 (the schema's minimum is 1) next to a BIN chunk threw
+        // std::out_of_range from its copy (fuzz finding).
+        throw ModelError(name, "", std::string("malformed glTF, the loader stopped: ") + e.what());
+    }
+    if (!access.refusal.empty()) throw ModelError(name, "", access.refusal);
+    if (!ok) {
+        while (!err.empty() && err.back() == '\n') err.pop_back();
+        throw ModelError(name, "", err.empty() ? "not a readable glTF file" : err);
+    }
+
+    ParsedModel out;
+    for (std::size_t i = 0; i < model.extensionsRequired.size(); ++i)
+        if (!kSupportedRequired.contains(model.extensionsRequired[i]))
+            throw ModelError(name, ptr("extensionsRequired", i),
+                             "requires extension " + model.extensionsRequired[i] + ", which arcomp does not support");
+    for (std::size_t start = 0; start < warn.size();) {
+        const auto end = warn.find('\n', start);
+        const std::string line = warn.substr(start, end - start);
+        if (!line.empty()) out.warnings.push_back(line);
+        if (end == std::string::npos) break;
+        start = end + 1;
+    }
+
+    GltfReader reader(file, model);
+    for (std::size_t i = 0; i < model.bufferViews.size(); ++i) reader.checkView(i);
+
+    for (std::size_t i = 0; i < model.images.size(); ++i) out.images.push_back(toRgba8(model.images[i]));
+
+    // Materials; a default one serves primitives that name none.
+    for (std::size_t i = 0; i < model.materials.size(); ++i) {
+        const tinygltf::Material& src = model.materials[i];
+        Material m;
+        m.name = src.name;
+        const auto& pbr = src.pbrMetallicRoughness;
+        if (pbr.baseColorFactor.size() == 4)
+            m.baseColor = glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2],
+                                    pbr.baseColorFactor[3]);
+        m.metallic = static_cast<float>(pbr.metallicFactor);
+        m.roughness = static_cast<float>(pbr.roughnessFactor);
+        if (const int t = pbr.baseColorTexture.index; t >= 0) {
+            if (static_cast<std::size_t>(t) >= model.textures.size())
+                reader.fail(ptr("materials", i) + "/pbrMetallicRoughness/baseColorTexture/index",
+                            "texture " + std::to_string(t) + " does not exist");
+            const int source = model.textures[static_cast<std::size_t>(t)].source;
+            if (source >= static_cast<int>(model.images.size()))
+                reader.fail(ptr("textures", static_cast<std::size_t>(t), "source"),
+                            "image " + std::to_string(source) + " does not exist");
+            if (source >= 0 && !out.images[static_cast<std::size_t>(source)].rgba.empty()) m.baseColorImage = source;
+        }
+        m.alphaMode = src.alphaMode == "BLEND" ? AlphaMode::Blend : src.alphaMode == "MASK" ? AlphaMode::Mask
+                                                                                            : AlphaMode::Opaque;
+        m.alphaCutoff = static_cast<float>(src.alphaCutoff);
+        m.doubleSided = src.doubleSided;
+        m.unlit = src.extensions.count("KHR_materials_unlit") > 0;
+        out.materials.push_back(std::move(m));
+    }
+    const auto defaultMaterial = static_cast<std::uint32_t>(out.materials.size());
+    out.materials.push_back(Material{.name = "default"});
+
+    // The node graph must be a forest: every child index valid, no node with
+    // two parents, no cycle.
+    const std::size_t nodeCount = model.nodes.size();
+    std::vector<int> parentOf(nodeCount, -1);
+    for (std::size_t i = 0; i < nodeCount; ++i) {
+        for (std::size_t c = 0; c < model.nodes[i].children.size(); ++c) {
+            const int child = model.nodes[i].children[c];
+            const std::string where = ptr("nodes", i) + "/children/" + std::to_string(c);
+            if (child < 0 || static_cast<std::size_t>(child) >= nodeCount)
+                reader.fail(where, "node " + std::to_string(child) + " does not exist");
+            if (static_cast<std::size_t>(child) == i) reader.fail(where, "node is its own child");
+            if (parentOf[static_cast<std::size_t>(child)] >= 0)
+                reader.fail(where, "node " + std::to_string(child) + " already has parent " +
+                                       std::to_string(parentOf[static_cast<std::size_t>(child)]));
+            parentOf[static_cast<std::size_t>(child)] = static_cast<int>(i);
+        }
+    }
+    for (std::size_t i = 0; i < nodeCount; ++i) {
+        // With one parent each, a cycle is a walk upwards that never ends.
+        std::size_t steps = 0;
+        for (int p = parentOf[i]; p >= 0; p = parentOf[static_cast<std::size_t>(p)])
+            if (++steps > nodeCount) reader.fail(ptr("nodes", i), "is part of a cycle in the node graph");
+    }
+
+    std::vector<int> roots;
+    if (!model.scenes.empty()) {
+        int sceneIndex = model.defaultScene >= 0 ? model.defaultScene : 0;
+        if (static_cast<std::size_t>(sceneIndex) >= model.scenes.size())
+            reader.fail("/scene", "scene " + std::to_string(sceneIndex) + " does not exist");
+        const auto& nodes = model.scenes[static_cast<std::size_t>(sceneIndex)].nodes;
+        for (std::size_t k = 0; k < nodes.size(); ++k) {
+            const std::string where = ptr("scenes", static_cast<std::size_t>(sceneIndex)) + "/nodes/" + std::to_string(k);
+            if (nodes[k] < 0 || static_cast<std::size_t>(nodes[k]) >= nodeCount)
+                reader.fail(where, "node " + std::to_string(nodes[k]) + " does not exist");
+            if (parentOf[static_cast<std::size_t>(nodes[k])] >= 0)
+                reader.fail(where, "node " + std::to_string(nodes[k]) + " is not a root node");
+            roots.push_back(nodes[k]);
+        }
+    } else {
+        for (std::size_t i = 0; i < nodeCount; ++i)
+            if (parentOf[i] < 0) roots.push_back(static_cast<int>(i));
+    }
+
+    // Each (mesh, primitive) becomes one geometry, shared by every node that
+    // uses the mesh. Every mesh is checked, used or not: a file that holds
+    // unsafe data anywhere is not one to trust.
+    auto primitiveParts = [&](int meshIndex) {
+        std::vector<MeshPart> parts;
+        const tinygltf::Mesh& mesh = model.meshes[static_cast<std::size_t>(meshIndex)];
+        for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+            const tinygltf::Primitive& prim = mesh.primitives[p];
+            const std::string where = ptr("meshes", static_cast<std::size_t>(meshIndex)) + "/primitives/" + std::to_string(p);
+            std::uint32_t material = defaultMaterial;
+            if (prim.material >= 0) {
+                if (static_cast<std::size_t>(prim.material) >= model.materials.size())
+                    reader.fail(where + "/material", "material " + std::to_string(prim.material) + " does not exist");
+                material = static_cast<std::uint32_t>(prim.material);
+            }
+            const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+            if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+                out.warnings.push_back(where + "/mode: mode " + std::to_string(mode) + " is not triangles; skipped");
+                continue;
+            }
+            const auto position = prim.attributes.find("POSITION");
+            if (position == prim.attributes.end()) {
+                out.warnings.push_back(where + "/attributes: no POSITION; skipped");
+                continue;
+            }
+            const auto attributePointer = [&](const std::string& attribute) { return where + "/attributes/" + attribute; };
+            using CT = std::vector<int>;
+            const CT floatOrQuantized{TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE,
+                                      TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT,
+                                      TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
+            const bool quantized = std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(),
+                                             "KHR_mesh_quantization") != model.extensionsUsed.end();
+            const CT positionTypes = quantized ? floatOrQuantized : CT{TINYGLTF_COMPONENT_TYPE_FLOAT};
+            Geometry g;
+            const auto positionIndex = static_cast<std::size_t>(position->second);
+            const std::vector<float> pos =
+                reader.readFloats(positionIndex, attributePointer("POSITION"), TINYGLTF_TYPE_VEC3, positionTypes);
+            const std::size_t vertexCount = pos.size() / 3;
+            g.positions.resize(vertexCount);
+            std::memcpy(g.positions.data(), pos.data(), pos.size() * sizeof(float));
+            auto sameCount = [&](const std::string& attribute, std::size_t index) {
+                if (reader.count(index, attributePointer(attribute)) != vertexCount)
+                    reader.fail(attributePointer(attribute),
+                                "has " + std::to_string(reader.count(index, attributePointer(attribute))) +
+                                    " elements, POSITION has " + std::to_string(vertexCount));
+            };
+            if (auto n = prim.attributes.find("NORMAL"); n != prim.attributes.end()) {
+                sameCount("NORMAL", static_cast<std::size_t>(n->second));
+                const CT normalTypes = quantized ? CT{TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE,
+                                                      TINYGLTF_COMPONENT_TYPE_SHORT}
+                                                 : CT{TINYGLTF_COMPONENT_TYPE_FLOAT};
+                const auto v = reader.readFloats(static_cast<std::size_t>(n->second), attributePointer("NORMAL"),
+                                                 TINYGLTF_TYPE_VEC3, normalTypes);
+                g.normals.resize(vertexCount);
+                for (std::size_t i = 0; i < vertexCount; ++i) {
+                    const glm::vec3 nrm(v[i * 3], v[i * 3 + 1], v[i * 3 + 2]);
+                    const float len = glm::length(nrm);
+                    g.normals[i] = len > 0.0f ? nrm / len : glm::vec3(0, 0, 1);
+                }
+            }
+            if (auto t = prim.attributes.find("TEXCOORD_0"); t != prim.attributes.end()) {
+                sameCount("TEXCOORD_0", static_cast<std::size_t>(t->second));
+                const auto v = reader.readFloats(static_cast<std::size_t>(t->second), attributePointer("TEXCOORD_0"),
+                                                 TINYGLTF_TYPE_VEC2, floatOrQuantized);
+                g.texcoords.resize(vertexCount);
+                std::memcpy(g.texcoords.data(), v.data(), v.size() * sizeof(float));
+            }
+            std::vector<std::uint32_t> indices;
+            if (prim.indices >= 0) {
+                indices = reader.readIndices(static_cast<std::size_t>(prim.indices), where + "/indices", vertexCount);
+            } else {
+                indices.resize(vertexCount);
+                for (std::size_t i = 0; i < vertexCount; ++i) indices[i] = static_cast<std::uint32_t>(i);
+            }
+            g.indices = triangulate(mode, std::move(indices));
+            g.finalize();
+            const auto id = static_cast<std::uint32_t>(out.geometries.size());
+            out.geometries.push_back(std::move(g));
+            parts.push_back({id, material});
+        }
+        return parts;
+    };
+
+    std::vector<std::vector<MeshPart>> partsOfMesh;
+    for (std::size_t m = 0; m < model.meshes.size(); ++m) partsOfMesh.push_back(primitiveParts(static_cast<int>(m)));
+
+    // Parents before children, as ParsedModel promises.
+    std::vector<std::pair<int, int>> stack;  // glTF node, parsed parent
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({*it, -1});
+    while (!stack.empty()) {
+        const auto [index, parent] = stack.back();
+        stack.pop_back();
+        const auto i = static_cast<std::size_t>(index);
+        const tinygltf::Node& src = model.nodes[i];
+        ModelNode node;
+        node.parent = parent;
+        node.local = nodeMatrix(src, i, reader);
+        node.name = src.name;
+        if (src.mesh >= 0) {
+            if (static_cast<std::size_t>(src.mesh) >= partsOfMesh.size())
+                reader.fail(ptr("nodes", i, "mesh"), "mesh " + std::to_string(src.mesh) + " does not exist");
+            node.parts = partsOfMesh[static_cast<std::size_t>(src.mesh)];
+        }
+        const int self = static_cast<int>(out.nodes.size());
+        out.nodes.push_back(std::move(node));
+        for (auto c = src.children.rbegin(); c != src.children.rend(); ++c) stack.push_back({*c, self});
+    }
+    return out;
+}
+
+} // namespace arcomp

@@ -1,0 +1,31 @@
+#pragma once
+// The file `arcomp bake lod` writes: a mesh's LOD levels, finest first.
+//
+//   writeLodFile("bunny.lod", levels);
+//   std::vector<LodLevel> back = readLodFile("bunny.lod");   // throws ModelError
+//
+// Layout, little-endian, version 1:
+//   "ARCOMPLD" (8 bytes), u32 version, u32 level count (1..8);
+//   per level: f32 ratio, f32 error, u32 vertex count, u32 index count,
+//   u32 flags (bit 0: normals, bit 1: texcoords), then positions (3 f32 each),
+//   normals (3 f32 each) if flagged, texcoords (2 f32 each) if flagged,
+//   indices (u32, a multiple of 3, each below the vertex count).
+// The reader checks every count against the bytes left before it allocates,
+// and every value it reads; errors name the file and the byte or level.
+
+#include "graph/lod/LodLevels.hpp"
+#include "graph/io/ModelError.hpp"
+
+#include <filesystem>
+#include <vector>
+
+namespace arcomp {
+
+inline constexpr std::uint32_t kLodFileVersion = 1;
+
+void writeLodFile(const std::filesystem::path& file, const std::vector<LodLevel>& levels);
+std::vector<LodLevel> readLodFile(const std::filesystem::path& file);
+// The same check on bytes already in memory; `name` stands for the file in errors.
+std::vector<LodLevel> parseLodFile(std::span<const unsigned char> bytes, const std::string& name);
+
+} // namespace arcomp

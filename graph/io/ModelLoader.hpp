@@ -1,0 +1,55 @@
+#pragma once
+// Loading models into a scene: glTF 2.0 (.gltf, .glb) and Wavefront OBJ.
+//
+//   Scene scene;
+//   LoadedModel m = loadModel("bunny.obj", scene, scene.root());
+//   // m.root is a group named after the file; m.warnings lists what was
+//   // skipped (points and lines, images that do not decode, ...)
+//
+// A model that would be unsafe to draw (indices or accessors out of range,
+// wrong component types, cycles in the node graph, required extensions we do
+// not support, URIs leaving the model's folder) throws ModelError and leaves
+// the scene exactly as it was.
+
+#include "graph/io/ModelError.hpp"
+#include "graph/core/Scene.hpp"
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace arcomp {
+
+struct LoadedModel {
+    NodeId root = kNoNode;
+    std::vector<std::string> warnings;
+};
+
+// Each of the model's mesh parts becomes a Mesh node under its transform,
+// unless `placeMesh` is given: then it is called instead (e.g. to put an LOD
+// node with generated levels there).
+using MeshPlacer = std::function<void(NodeId parent, MeshPart part)>;
+LoadedModel loadModel(const std::filesystem::path& file, Scene& scene, NodeId parent, const MeshPlacer& placeMesh = {});
+
+// A model parsed but not yet placed in a scene: nodes refer to each other by
+// index into `nodes`, parents first.
+struct ModelNode {
+    int parent = -1;  // index into nodes, -1 for the model's root
+    glm::mat4 local{1.0f};
+    std::vector<MeshPart> parts;  // indices into the model's geometries and materials
+    std::string name;
+};
+
+struct ParsedModel {
+    std::vector<ModelNode> nodes;
+    std::vector<Geometry> geometries;
+    std::vector<Material> materials;
+    std::vector<Image> images;
+    std::vector<std::string> warnings;
+};
+
+ParsedModel parseGltf(const std::filesystem::path& file);
+ParsedModel parseObj(const std::filesystem::path& file);
+
+} // namespace arcomp

@@ -1,0 +1,114 @@
+#pragma once
+// Level-of-detail nodes. A NodeKind::Lod node's children are its levels,
+// finest first; each may be a whole subtree. The select pass asks
+// LodTable::choose() for the level in the same walk that culls, and visits
+// only that child (and, during a cross-fade, the level fading out).
+//
+//   LodTable lods;
+//   LodNode n;
+//   n.policy = LodPolicy::Distance;
+//   n.setThresholds({50.0f, 200.0f});           // [0,50) → 0, [50,200) → 1, beyond → 2
+//   NodeId lod = scene.addNode(parent, NodeKind::Lod, lods.add(n));
+//   scene.addMesh(lod, fine); scene.addMesh(lod, medium); scene.addMesh(lod, coarse);
+//   select(scene, view, {.lod = &lods, .gaze = gaze, .timeSeconds = t}, list);
+//
+// Policies, chosen per node: distance from the eye to the bound's centre (as
+// OpenSceneGraph's DISTANCE_FROM_EYE_POINT), projected diameter in pixels (as
+// PIXEL_SIZE_ON_SCREEN), the paper's gaze acuity k1·k2 (graph/lod/GazeAcuity.hpp),
+// or pixels weighted by acuity. A band around each threshold (hysteresis)
+// keeps a node hovering at a boundary from flipping level every frame; the
+// per-node previous level lives in flat arrays here, not in the scene.
+
+#include "graph/lod/GazeAcuity.hpp"
+
+#include <array>
+#include <cstdint>
+#include <initializer_list>
+#include <vector>
+
+namespace arcomp {
+
+inline constexpr std::size_t kMaxLodLevels = 8;
+inline constexpr std::uint8_t kNoLevel = 0xff;
+
+enum class LodPolicy : std::uint8_t {
+    Distance,               // world units from the eye; thresholds ascending
+    ScreenSize,             // projected diameter in pixels; thresholds descending
+    GazeAcuity,             // k1·k2 in [0, 1]; thresholds descending
+    ScreenSizeTimesAcuity,  // pixels · k1·k2; thresholds descending
+};
+
+struct LodNode {
+    LodPolicy policy = LodPolicy::Distance;
+    std::uint8_t levelCount = 1;
+    // thresholds[i] is the boundary between level i and i + 1. Distance: the
+    // far end of level i. The others: the least value level i needs.
+    std::array<float, kMaxLodLevels - 1> thresholds{};
+    // Relative half-width of the band around each threshold: to leave its
+    // level, a node must pass the boundary by this fraction of it.
+    float hysteresis = 0.1f;
+    float fadeSeconds = 0.0f;  // cross-fade time; 0 switches at once
+    // The object as a sphere of its mean radius, in the LOD node's frame;
+    // only the gaze policies use it (representative point, DESIGN.md §1).
+    glm::vec3 center{0.0f};
+    float meanRadius = 1.0f;
+    GazeAcuityParams acuity{};
+
+    // Sets levelCount to thresholds.size() + 1; aborts beyond kMaxLodLevels.
+    void setThresholds(std::initializer_list<float> t);
+};
+
+// What a policy reads about a node this frame.
+struct LodInputs {
+    float distance = 0.0f;      // eye to bound centre
+    float pixels = 0.0f;        // projected diameter of the bound
+    float acuity = 1.0f;        // k1·k2
+};
+
+// The value a node's policy compares against its thresholds.
+float lodMetric(LodPolicy policy, const LodInputs& in);
+
+// The level for `metric`, given the level shown last frame (kNoLevel: none).
+// Boundaries next to the previous level are pushed away from it by the band.
+std::uint8_t chooseLevel(const LodNode& node, float metric, std::uint8_t previous);
+
+struct LodChoice {
+    std::uint8_t level = 0;
+    std::uint8_t fadingLevel = kNoLevel;  // level fading out, or kNoLevel
+    float fade = 1.0f;                    // weight of `level`; fadingLevel gets 1 - fade
+};
+
+class LodTable {
+public:
+    std::uint32_t add(const LodNode& node);
+    std::size_t size() const { return nodes_.size(); }
+    const LodNode& node(std::uint32_t i) const { return nodes_[i]; }
+    LodNode& node(std::uint32_t i) { return nodes_[i]; }
+
+    // Level shown last (kNoLevel before the first choice).
+    std::uint8_t previousLevel(std::uint32_t i) const { return level_[i]; }
+    // Forgets every node's history, e.g. after a cut in a replay.
+    void reset();
+
+    // Picks node i's level for this frame and records it.
+    LodChoice choose(std::uint32_t i, const LodInputs& in, double timeSeconds);
+
+    // Inputs for the gaze policies: the acuity of node i whose LOD node has
+    // world matrix `world`, seen from `eye` with `gaze` (unit, world), and
+    // the representative point kept for next frame.
+    float acuity(std::uint32_t i, const glm::mat4& world, const glm::vec3& eye, const glm::vec3& gaze,
+                 double timeSeconds);
+
+private:
+    std::vector<LodNode> nodes_;
+    // Per-node state, flat: what was shown, since when, and the point tracked
+    // for the angular speed.
+    std::vector<std::uint8_t> level_;
+    std::vector<std::uint8_t> fadeFrom_;
+    std::vector<double> fadeStart_;
+    std::vector<double> lastChosen_;
+    std::vector<TrackedPoint> tracked_;
+    std::vector<double> trackedAt_;
+};
+
+} // namespace arcomp
