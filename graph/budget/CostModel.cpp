@@ -1,4 +1,5 @@
 #include "graph/budget/CostModel.hpp"
+#include "graph/core/Check.hpp"
 
 #include <algorithm>
 #include <array>
@@ -32,7 +33,7 @@ std::size_t CostModel::index(std::size_t level, Shading shading) const {
 }
 
 void CostModel::set(std::size_t level, Shading shading, CostCoefficients c) {
-    if (level >= levels_) std::abort();
+    ARCOMP_CHECK(level < levels_, "a level the model was made for");
     table_[index(level, shading)] = c;
 }
 

@@ -1,4 +1,5 @@
 #include "graph/budget/RecursiveLeastSquares.hpp"
+#include "graph/core/Check.hpp"
 
 #include <cstdlib>
 
@@ -6,12 +7,12 @@ namespace arcomp {
 
 RecursiveLeastSquares::RecursiveLeastSquares(std::size_t size, double forgetting, double initialVariance, double maxTrace)
     : n_(size), lambda_(forgetting), maxTrace_(maxTrace), theta_(size, 0.0), p_(size * size, 0.0), px_(size, 0.0) {
-    if (size == 0 || forgetting <= 0.0 || forgetting > 1.0) std::abort();
+    ARCOMP_CHECK(size > 0 && forgetting > 0.0 && forgetting <= 1.0, "a fit needs parameters and a forgetting factor in (0, 1]");
     for (std::size_t i = 0; i < n_; ++i) p_[i * n_ + i] = initialVariance;
 }
 
 void RecursiveLeastSquares::reset(std::span<const double> theta, std::span<const double> variances) {
-    if (theta.size() != n_ || variances.size() != n_) std::abort();
+    ARCOMP_CHECK(theta.size() == n_ && variances.size() == n_, "one estimate and one variance per parameter");
     theta_.assign(theta.begin(), theta.end());
     p_.assign(n_ * n_, 0.0);
     for (std::size_t i = 0; i < n_; ++i) p_[i * n_ + i] = variances[i];
@@ -19,7 +20,7 @@ void RecursiveLeastSquares::reset(std::span<const double> theta, std::span<const
 }
 
 void RecursiveLeastSquares::add(std::span<const double> x, double y) {
-    if (x.size() != n_) std::abort();
+    ARCOMP_CHECK(x.size() == n_, "one regressor per parameter");
     // Gain k = P x / (λ + xᵀ P x); θ += k (y - θ·x); P = (P - k xᵀ P) / λ.
     double denominator = lambda_;
     for (std::size_t i = 0; i < n_; ++i) {

@@ -1,4 +1,5 @@
 #include "graph/core/Scene.hpp"
+#include "graph/core/Check.hpp"
 
 #include <cstdlib>
 
@@ -8,7 +9,7 @@ Scene::Scene() { addNode(kNoNode, NodeKind::Group, 0, "root"); }
 
 NodeId Scene::addNode(NodeId parent, NodeKind kind, std::uint32_t payload, std::string name) {
     const auto id = static_cast<NodeId>(kind_.size());
-    if (parent != kNoNode && parent >= id) std::abort();  // parents exist before children
+    ARCOMP_CHECK(parent == kNoNode || parent < id, "parents exist before children");
     kind_.push_back(kind);
     worldBound_.push_back({});
     world_.emplace_back(1.0f);
@@ -42,7 +43,7 @@ NodeId Scene::addTransform(NodeId parent, const glm::mat4& local, std::string na
 }
 
 NodeId Scene::addMesh(NodeId parent, MeshPart part, std::string name) {
-    if (part.geometry >= geometries_.size() || part.material >= materials_.size()) std::abort();
+    ARCOMP_CHECK(part.geometry < geometries_.size() && part.material < materials_.size(), "a mesh part's geometry and material are in the scene");
     meshParts_.push_back(part);
     const NodeId id = addNode(parent, NodeKind::Mesh, static_cast<std::uint32_t>(meshParts_.size() - 1), std::move(name));
     localBound_[id] = geometries_[part.geometry].bound;

@@ -1,4 +1,5 @@
 #include "graph/core/SelectPass.hpp"
+#include "graph/core/Check.hpp"
 
 #include "graph/core/Frustum.hpp"
 #include "graph/grouping/GroupingNodes.hpp"
@@ -149,7 +150,7 @@ struct SelectPass {
         g.objectPosition.clear();
         for (std::uint32_t child = pos + 1; child < end[pos]; child = end[child]) g.objectPosition.push_back(child);
         for (std::size_t i = 0; i < g.objects.size(); ++i)
-            if (i >= g.objectPosition.size() || order[g.objectPosition[i]] != g.objects[i]) std::abort();  // children changed after buildGrouping
+            ARCOMP_CHECK(i < g.objectPosition.size() && order[g.objectPosition[i]] == g.objects[i], "a grouping node's children do not change after buildGrouping");
     }
 
     // Visits the LOD node's child number `level`, or its last child when it

@@ -1,4 +1,5 @@
 #include "graph/grouping/GroupingNodes.hpp"
+#include "graph/core/Check.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -64,7 +65,7 @@ GroupingItem groupingItemOf(const Scene& scene, NodeId subtree) {
 }
 
 void buildGrouping(Scene& scene, NodeId groupingNode, GroupingNodes& table, const GroupingParams& params) {
-    if (scene.kind(groupingNode) != NodeKind::Grouping) std::abort();
+    ARCOMP_CHECK(scene.kind(groupingNode) == NodeKind::Grouping, "a grouping node");
     GroupingNode& g = table.nodes[scene.payload(groupingNode)];
     g.objects = scene.children(groupingNode);
     std::vector<GroupingItem> items;
@@ -89,7 +90,7 @@ GroupingRebuildStats regroupMoved(const Scene& scene, NodeId groupingNode, Group
                                   std::span<const MovedObject> moved) {
     GroupingNode& g = table.nodes[scene.payload(groupingNode)];
     for (const MovedObject& m : moved) {
-        if (m.object >= g.objects.size()) std::abort();
+        ARCOMP_CHECK(m.object < g.objects.size(), "a moved object of this grouping node");
         g.tree.moveObject(m.object, groupingItemOf(scene, g.objects[m.object]).box, m.velocity);
     }
     return g.tree.rebuildMoved();

@@ -1,4 +1,5 @@
 #include "graph/grouping/GroupingTree.hpp"
+#include "graph/core/Check.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -114,7 +115,7 @@ void GroupingTree::gridErase(std::uint32_t n) {
         items.pop_back();
     }
     const auto it = std::find(list->begin(), list->end(), n);
-    if (it == list->end()) std::abort();  // roots are always in the grid
+    ARCOMP_CHECK(it != list->end(), "roots are always in the grid");
     *it = list->back();
     list->pop_back();
     if (list->empty() && cell_[n] != kUnbounded) grid_.erase(cell_[n]);
@@ -272,7 +273,7 @@ std::vector<std::uint32_t> GroupingTree::objectsUnder(std::uint32_t n) const {
 }
 
 void GroupingTree::moveObject(std::uint32_t object, const Box& box, const glm::vec3& velocity) {
-    if (object >= objectCount_) std::abort();
+    ARCOMP_CHECK(object < objectCount_, "an object of this tree");
     item_[object] = groupingItem(box, item_[object].color, velocity);
     hot_[object].bound = sphereAround(box);
     if (!moved_[object]) {

@@ -1,4 +1,5 @@
 #include "graph/lod/Lod.hpp"
+#include "graph/core/Check.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -17,7 +18,7 @@ bool ascending(LodPolicy p) { return p == LodPolicy::Distance; }
 } // namespace
 
 void LodNode::setThresholds(std::initializer_list<float> t) {
-    if (t.size() + 1 > kMaxLodLevels) std::abort();
+    ARCOMP_CHECK(t.size() + 1 <= kMaxLodLevels, "an LOD node has at most kMaxLodLevels levels");
     std::copy(t.begin(), t.end(), thresholds.begin());
     levelCount = static_cast<std::uint8_t>(t.size() + 1);
 }

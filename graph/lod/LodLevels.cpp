@@ -1,4 +1,5 @@
 #include "graph/lod/LodLevels.hpp"
+#include "graph/core/Check.hpp"
 
 #include <meshoptimizer.h>
 
@@ -65,7 +66,7 @@ std::vector<LodLevel> simplifyLevels(const Geometry& g, std::span<const float> r
 
 NodeId addGeneratedLod(Scene& scene, LodTable& lods, NodeId parent, MeshPart part, std::span<const float> ratios,
                        const LodNode& settings) {
-    if (settings.levelCount != ratios.size()) std::abort();
+    ARCOMP_CHECK(settings.levelCount == ratios.size(), "one ratio per level");
     const Geometry& source = scene.geometry(part.geometry);
     LodNode node = settings;
     node.center = source.bound.center;

@@ -1,4 +1,5 @@
 #include "graph/points/McMillanOrder.hpp"
+#include "graph/core/Check.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -128,7 +129,7 @@ void appendBackToFront(const Ldi& ldi, const glm::vec3& eye, std::vector<std::ui
 
 void writeSlotsBackToFront(const Ldi& ldi, const glm::vec3& eye, std::uint32_t base, std::span<std::uint32_t> slots,
                            std::size_t part, std::size_t parts) {
-    if (slots.size() != ldi.points.size() || parts == 0 || part >= parts) std::abort();
+    ARCOMP_CHECK(slots.size() == ldi.points.size() && part < parts, "one slot per point, a piece of the walk that exists");
     walkBackToFront(ldi, eye, part, parts, [&](std::size_t i, std::uint32_t k) { slots[i] = base + k; });
 }
 
