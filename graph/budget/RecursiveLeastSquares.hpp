@@ -5,7 +5,8 @@
 // paper's first open item).
 //
 //   RecursiveLeastSquares rls(2, 0.98);          // θ = (A, B), λ = 0.98
-//   rls.add({pixels, 1.0}, measuredMs);
+//   const double x[] = {pixels, 1.0};
+//   rls.add(x, measuredMs);
 //   double a = rls.parameters()[0];
 //
 // Forgetting lets the covariance grow in directions the data no longer

@@ -6,7 +6,7 @@
 //
 //   Scene scene;
 //   NodeId t = scene.addTransform(scene.root(), glm::translate(...));
-//   scene.addMesh(t, scene.addGeometry(std::move(g)), scene.addMaterial({}));
+//   scene.addMesh(t, {scene.addGeometry(std::move(g)), scene.addMaterial({})});
 //   scene.update();   // world matrices and bounds of what changed
 //
 // Later node kinds (LOD, grouping tree, silhouette region, point cloud) keep

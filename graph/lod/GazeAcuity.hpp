@@ -5,10 +5,11 @@
 // Their product, gazeAcuity(), picks the object's level through per-node
 // thresholds (see graph/lod/Lod.hpp).
 //
-//   GazeAcuityParams p;                                  // a = 5°, c1 = 6°, c2 = 30°/s
+//   GazeAcuityParams p;                                        // a = 5°, c1 = 6°, c2 = 30°/s
 //   float theta = angleDegrees(gaze, center - eye);
-//   float speed = angularSpeed(motion, eye, dt);          // degrees per second
-//   float k = gazeAcuity(theta, speed, p);                // in [0, 1]
+//   float speed = angularSpeed(last, worldNow, eyeNow, dt);     // degrees per second
+//   float k = gazeAcuity(theta, speed, p);                      // in [0, 1]
+//   last = trackPoint(eyeNow, worldNow, localCenter, radius);   // for the next frame
 //
 // The representative point is the point, nearest the eye, of the sphere with
 // the object's mean radius. Its angular speed comes from where that point,

@@ -1,0 +1,49 @@
+// The usage examples at the top of graph/ headers, compiled: an example that
+// no longer matches its API breaks this build instead of misleading a reader.
+// Each test holds its header's lines as written there, then checks them.
+
+#include "graph/budget/RecursiveLeastSquares.hpp"
+#include "graph/core/Scene.hpp"
+#include "graph/lod/GazeAcuity.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+using namespace arcomp;
+
+TEST(HeaderExamples, scene) {
+    Geometry g = makeBox({1, 1, 1});
+    // graph/core/Scene.hpp
+    Scene scene;
+    NodeId t = scene.addTransform(scene.root(), glm::translate(glm::mat4(1.0f), {0, 0, -5}));
+    scene.addMesh(t, {scene.addGeometry(std::move(g)), scene.addMaterial({})});
+    scene.update();   // world matrices and bounds of what changed
+    EXPECT_NEAR(scene.bound().center.z, -5.0f, 1e-5f);
+}
+
+TEST(HeaderExamples, gazeAcuity) {
+    const glm::vec3 eye(0.0f), eyeNow(0.0f), gaze(0, 0, -1), center(0, 0, -10), localCenter(0.0f);
+    const glm::mat4 world = glm::translate(glm::mat4(1.0f), center), worldNow = world;
+    const float radius = 1.0f, dt = 0.04f;
+    TrackedPoint last = trackPoint(eye, world, localCenter, radius);
+    // graph/lod/GazeAcuity.hpp
+    GazeAcuityParams p;                                        // a = 5°, c1 = 6°, c2 = 30°/s
+    float theta = angleDegrees(gaze, center - eye);
+    float speed = angularSpeed(last, worldNow, eyeNow, dt);     // degrees per second
+    float k = gazeAcuity(theta, speed, p);                      // in [0, 1]
+    last = trackPoint(eyeNow, worldNow, localCenter, radius);   // for the next frame
+    EXPECT_FLOAT_EQ(k, 1.0f);  // looked at, standing still
+    EXPECT_TRUE(last.valid);
+}
+
+TEST(HeaderExamples, recursiveLeastSquares) {
+    // graph/budget/RecursiveLeastSquares.hpp, fed y = 0.002 x + 3
+    RecursiveLeastSquares rls(2, 0.98);          // θ = (A, B), λ = 0.98
+    for (double pixels : {1000.0, 5000.0, 20000.0, 80000.0, 3000.0}) {
+        const double measuredMs = 0.002 * pixels + 3.0;
+        const double x[] = {pixels, 1.0};
+        rls.add(x, measuredMs);
+    }
+    double a = rls.parameters()[0];
+    EXPECT_NEAR(a, 0.002, 1e-4);
+}
