@@ -87,7 +87,8 @@ std::size_t PointImage::coveredPixels() const {
     return n;
 }
 
-LdiRenderer::LdiRenderer(const LdiSet& set, int threads) : set_(set), threads_(std::max(1, threads)) {
+LdiRenderer::LdiRenderer(const LdiSet& set, int threads)
+    : set_(set), threads_(std::max(1, threads)), pool_(static_cast<std::size_t>(threads_)) {
     const PointCloud& cloud = set_.cloud;
     const auto add = [&](Items& items, std::uint32_t id, std::size_t ldi) {
         const glm::vec4& c = cloud.colors[id];
@@ -464,10 +465,7 @@ void LdiRenderer::frame(const View& view, bool depthSorted) {
             compositeInOrder(band, order_[0]);
         }
     };
-    std::vector<std::thread> helpers;
-    for (std::size_t t = 1; t < bands_.size(); ++t) helpers.emplace_back(work, t);
-    work(0);
-    for (std::thread& h : helpers) h.join();
+    pool_.run(work);
     splatCount_ = 0;
     for (const Band& b : bands_) splatCount_ += b.splats;
 }

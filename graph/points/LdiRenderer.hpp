@@ -41,6 +41,7 @@
 // every frame).
 
 #include "graph/points/Ldi.hpp"
+#include "graph/points/WorkerPool.hpp"
 #include "graph/core/View.hpp"
 
 #include <glm/gtc/type_precision.hpp>
@@ -132,6 +133,7 @@ private:
 
     const LdiSet& set_;
     int threads_;
+    WorkerPool pool_;  // started once: a frame wakes its threads
     PointImage image_;
     // What is drawn, converted once: the points in LDI slot order (LDI 0's
     // ldi.points, then LDI 1's, ...), so that a McMillan walk reads them
