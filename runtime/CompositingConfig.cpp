@@ -90,6 +90,10 @@ void readCompositor(YamlMap& root, CompositorConfig& out) {
     std::string holdout = "silhouette";
     c.choice("holdout", holdout, {"silhouette", "full"});
     out.holdout = holdout == "full" ? HoldoutMesh::Full : HoldoutMesh::Silhouette;
+    std::string cache;
+    c.text("holdout_cache", cache);
+    if (cache == "none") out.holdoutCache = "none";
+    else if (!cache.empty()) c.path("holdout_cache", out.holdoutCache, false);
     std::string backdrop = "video";
     c.choice("backdrop", backdrop, {"video", "color"});
     out.backdropVideo = backdrop == "video";

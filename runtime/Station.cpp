@@ -1,6 +1,7 @@
 #include "runtime/Station.hpp"
 
 #include "graph/core/SelectPass.hpp"
+#include "graph/io/SilhouetteFile.hpp"
 #include "graph/silhouette/SilhouetteMesh.hpp"
 #include "runtime/CalibrationFile.hpp"
 #include "runtime/ImageFile.hpp"
@@ -10,12 +11,16 @@
 #include "video/MatteSpec.hpp"
 #include "video/VideoError.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <cctype>
 #include <chrono>
+#include <cstdlib>
 #include <map>
 #include <set>
 #include <cstdio>
@@ -37,6 +42,28 @@ double msSince(Clock::time_point& t) {
     const double ms = std::chrono::duration<double, std::milli>(now - t).count();
     t = now;
     return ms;
+}
+
+// Where baked silhouettes wait for the next start: the config's folder,
+// systemd's CacheDirectory for a service, else the user's cache folder;
+// empty: nowhere (bake at every start).
+std::filesystem::path holdoutCacheFolder(const CompositorConfig& c) {
+    if (c.holdoutCache == "none") return {};
+    if (!c.holdoutCache.empty()) return c.holdoutCache;
+    if (const char* d = std::getenv("CACHE_DIRECTORY"); d && *d) return std::string(d).substr(0, std::string(d).find(':'));
+    if (const char* d = std::getenv("XDG_CACHE_HOME"); d && *d) return std::filesystem::path(d) / "arcomp";
+    if (const char* d = std::getenv("HOME"); d && *d) return std::filesystem::path(d) / ".cache" / "arcomp";
+    return {};
+}
+
+// A file name for one mesh node's holdout: the config, the node's name and
+// id, in characters any file system takes. The file itself says which mesh
+// and region it was baked for; a stale one is baked again.
+std::string holdoutFileName(const std::filesystem::path& config, const std::string& node, NodeId id) {
+    std::string name = config.stem().string() + "-" + node;
+    for (char& ch : name)
+        if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '-' && ch != '_') ch = '_';
+    return name + "-" + std::to_string(id) + ".sil";
 }
 
 std::string numbered(const char* stem, std::uint64_t index) {
@@ -126,6 +153,12 @@ void Station::buildHoldouts() {
                 if (m.node == n) return true;
         return false;
     };
+    const std::filesystem::path cache = holdoutCacheFolder(cfg_.compositing.compositor);
+    holdoutBake_ = {.folder = cache};
+    if (!cache.empty()) {
+        std::error_code ec;
+        std::filesystem::create_directories(cache, ec);  // a folder that cannot be made: every write says so
+    }
     const std::vector<NodeId> meshes = [&] {
         std::vector<NodeId> m;
         for (const NodeId n : scene_.order())
@@ -143,7 +176,20 @@ void Station::buildHoldouts() {
         std::vector<ViewRegion> regions;
         // A mover leaves the region it was baked for: its full mesh is the holdout.
         if (!full && !moves(n)) regions.push_back(ViewRegion::fromVertices(corners));
-        holdouts_.add(scene_, n, bakeSilhouetteMesh(g.positions, g.indices, std::move(regions)), material);
+        if (cache.empty()) {
+            holdouts_.add(scene_, n, bakeSilhouetteMesh(g.positions, g.indices, regions), material);
+            ++holdoutBake_.baked;
+            continue;
+        }
+        std::string note;
+        const std::filesystem::path file = cache / holdoutFileName(cfg_.file, scene_.name(n), n);
+        holdouts_.add(scene_, n, loadOrBakeSilhouetteMesh(file, g.positions, g.indices, regions, note), material);
+        if (note.ends_with(": loaded")) {
+            ++holdoutBake_.loaded;
+        } else {
+            ++holdoutBake_.baked;
+            spdlog::info("holdout of '{}': {}", scene_.name(n), note);
+        }
     }
 }
 

@@ -142,6 +142,13 @@ public:
     // Overrides the camera (tests move it along a path); keeps the intrinsics.
     void setCamera(const glm::vec3& eye, const glm::vec3& target);
     std::size_t silhouetteTrianglesTotal() const;
+    // How this start came by its holdout meshes: loaded from the cache
+    // folder (CompositorConfig::holdoutCache) or baked (and saved there).
+    struct HoldoutBake {
+        std::filesystem::path folder;  // empty: no cache
+        std::size_t loaded = 0, baked = 0;
+    };
+    const HoldoutBake& holdoutBake() const { return holdoutBake_; }
     // Why a replay input ended ("end after 795 frames", a decoder error); empty while it runs.
     const std::string& inputEnd() const { return inputEnd_; }
     // File outputs that failed (a full disk, a folder gone read-only): the
@@ -168,6 +175,7 @@ private:
     std::unique_ptr<GazeSource> gaze_;
     PointCloudNodes pointClouds_;
     HoldoutMeshes holdouts_;
+    HoldoutBake holdoutBake_;
     View view_;
     DrawList cgList_, holdoutList_;
     std::unique_ptr<Renderer> renderer_;  // CG and holdouts: one scene, one set of GPU buffers

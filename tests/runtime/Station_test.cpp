@@ -342,3 +342,35 @@ TEST(Station, holdoutIsTheSilhouetteOfTheLevelTheCgDraws) {
     EXPECT_GT(coarseTriangles, 0u);
     EXPECT_LT(coarseTriangles * 5, fineTriangles);  // a twentieth of the triangles, as the ratios say
 }
+
+// A station that restarts loads yesterday's holdouts instead of baking them
+// again, and cuts exactly as the station that baked them.
+TEST(Station, aRestartLoadsTheBakedHoldoutsFromTheCache) {
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    test::TempDir dir;
+    StationConfig cfg = occluderConfig(HoldoutMesh::Silhouette);
+    cfg.compositing.compositor.holdoutCache = dir.path() / "cache";
+    Station first(cfg, pattern({320, 240}));
+    ASSERT_TRUE(first.frame());
+    const std::size_t meshes = first.holdoutBake().baked;
+    EXPECT_EQ(first.holdoutBake().loaded, 0u);
+    EXPECT_GT(meshes, 0u);
+    EXPECT_EQ(static_cast<std::size_t>(std::distance(fs::directory_iterator(dir.path() / "cache"), {})), meshes);
+
+    Station second(cfg, pattern({320, 240}));
+    ASSERT_TRUE(second.frame());
+    EXPECT_EQ(second.holdoutBake().loaded, meshes);
+    EXPECT_EQ(second.holdoutBake().baked, 0u);
+    EXPECT_EQ(cv::countNonZero(holdoutMask(first) != holdoutMask(second)), 0);
+
+    // Another region is another bake: the stale files are baked again.
+    cfg.compositing.compositor.holdoutRegionMetres = 0.25f;
+    Station moved(cfg, pattern({320, 240}));
+    EXPECT_EQ(moved.holdoutBake().baked, meshes);
+    EXPECT_EQ(moved.holdoutBake().loaded, 0u);
+
+    cfg.compositing.compositor.holdoutCache = "none";
+    Station uncached(cfg, pattern({320, 240}));
+    EXPECT_TRUE(uncached.holdoutBake().folder.empty());
+    EXPECT_EQ(uncached.holdoutBake().baked, meshes);
+}
