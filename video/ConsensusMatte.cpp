@@ -1,0 +1,126 @@
+#include "video/ConsensusMatte.hpp"
+
+#include "video/VideoError.hpp"
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+namespace arcomp {
+
+namespace {
+
+// Connected components of `mask` (255) smaller than `maxArea` are set to `value`.
+void dropSmallComponents(cv::Mat& mask, double maxArea, std::uint8_t value) {
+    cv::Mat ids, stats, centroids;
+    const int count = cv::connectedComponentsWithStats(mask, ids, stats, centroids, 8, CV_32S);
+    std::vector<std::uint8_t> drop(count, 0);
+    bool any = false;
+    for (int i = 1; i < count; ++i)
+        if (stats.at<int>(i, cv::CC_STAT_AREA) < maxArea) drop[i] = 1, any = true;
+    if (!any) return;
+    for (int y = 0; y < mask.rows; ++y) {
+        const int* id = ids.ptr<int>(y);
+        std::uint8_t* m = mask.ptr<std::uint8_t>(y);
+        for (int x = 0; x < mask.cols; ++x)
+            if (drop[id[x]]) m[x] = value;
+    }
+}
+
+} // namespace
+
+ConsensusMatte::ConsensusMatte(const BackgroundSpec& spec) : spec_(spec), model_(spec.consensus) {
+    if (spec.scale < 0.1 || spec.scale > 1.0) throw VideoError("background matte", "settings", "scale must lie in 0.1..1");
+    const ConsensusSpec& c = spec.consensus;
+    if (c.minBlobArea < 0.0 || c.minBlobArea >= 1.0 || c.maxHoleArea < 0.0 || c.maxHoleArea >= 1.0)
+        throw VideoError("background matte", "settings", "min_blob_area and max_hole_area must lie in 0..1");
+    if (c.edgeRadiusPx < 0) throw VideoError("background matte", "settings", "edge_radius_px must be >= 0");
+    if (c.gapPx < 0) throw VideoError("background matte", "settings", "gap_px must be >= 0");
+    const int gap = static_cast<int>(c.gapPx * spec.scale + 0.5);
+    if (gap > 1) closeKernel_ = cv::getStructuringElement(cv::MORPH_ELLIPSE, {gap, gap});
+    if (!spec.cleanPlate.empty()) {
+        const cv::Mat plate = cv::imread(spec.cleanPlate, cv::IMREAD_COLOR);
+        if (plate.empty()) throw VideoError(spec.cleanPlate, "clean plate", "cannot read the image");
+        model_.setPlate(plate);
+    }
+}
+
+void ConsensusMatte::cleanUp() {
+    cv::compare(labels_, ConsensusModel::kPerson, mask_, cv::CMP_EQ);
+    const double area = static_cast<double>(mask_.total());
+    if (spec_.consensus.minBlobArea > 0.0) dropSmallComponents(mask_, spec_.consensus.minBlobArea * area, 0);
+    if (!closeKernel_.empty()) cv::morphologyEx(mask_, mask_, cv::MORPH_CLOSE, closeKernel_);
+    if (spec_.consensus.maxHoleArea > 0.0) {
+        // A hole is a background component that does not touch the border and is small.
+        cv::Mat background = ~mask_;
+        cv::Mat ids, stats, centroids;
+        const int count = cv::connectedComponentsWithStats(background, ids, stats, centroids, 4, CV_32S);
+        std::vector<std::uint8_t> fill(count, 0);
+        for (int i = 1; i < count; ++i) {
+            const int x = stats.at<int>(i, cv::CC_STAT_LEFT), y = stats.at<int>(i, cv::CC_STAT_TOP);
+            const int w = stats.at<int>(i, cv::CC_STAT_WIDTH), h = stats.at<int>(i, cv::CC_STAT_HEIGHT);
+            const bool touchesBorder = x == 0 || y == 0 || x + w == mask_.cols || y + h == mask_.rows;
+            fill[i] = !touchesBorder && stats.at<int>(i, cv::CC_STAT_AREA) < spec_.consensus.maxHoleArea * area;
+        }
+        for (int y = 0; y < mask_.rows; ++y) {
+            const int* id = ids.ptr<int>(y);
+            std::uint8_t* m = mask_.ptr<std::uint8_t>(y);
+            for (int x = 0; x < mask_.cols; ++x)
+                if (fill[id[x]]) m[x] = 255;
+        }
+    }
+}
+
+void ConsensusMatte::guidedEdges(const cv::Mat& frame) {
+    // Guided filter with the grey image as guide: within each window alpha
+    // is a linear function of the guide, a*I + b, fitted to the mask, so
+    // alpha's edge goes where the image's edge is.
+    const int r = std::max(1, static_cast<int>(spec_.consensus.edgeRadiusPx * spec_.scale + 0.5));
+    const cv::Size window(2 * r + 1, 2 * r + 1);
+    // (8 levels of 255)^2, the order of the sensor's noise: weaker edges are smoothed over.
+    const double eps = (8.0 / 255.0) * (8.0 / 255.0);
+    cv::Mat grey, p;
+    cv::cvtColor(small_, grey, cv::COLOR_BGR2GRAY);
+    grey.convertTo(guide_, CV_32F, 1.0 / 255.0);
+    mask_.convertTo(p, CV_32F, 1.0 / 255.0);
+    cv::Mat meanI, meanP, corrII, corrIP;
+    cv::boxFilter(guide_, meanI, CV_32F, window);
+    cv::boxFilter(p, meanP, CV_32F, window);
+    cv::boxFilter(guide_.mul(guide_), corrII, CV_32F, window);
+    cv::boxFilter(guide_.mul(p), corrIP, CV_32F, window);
+    cv::Mat varI = corrII - meanI.mul(meanI);
+    cv::Mat covIP = corrIP - meanI.mul(meanP);
+    cv::Mat a = covIP / (varI + eps);
+    cv::Mat b = meanP - a.mul(meanI);
+    cv::boxFilter(a, meanA_, CV_32F, window);
+    cv::boxFilter(b, meanB_, CV_32F, window);
+    if (frame.size() == small_.size()) {
+        fullGrey_ = guide_;
+        fullA_ = meanA_;
+        fullB_ = meanB_;
+    } else {
+        cv::cvtColor(frame, grey, cv::COLOR_BGR2GRAY);
+        grey.convertTo(fullGrey_, CV_32F, 1.0 / 255.0);
+        cv::resize(meanA_, fullA_, frame.size(), 0, 0, cv::INTER_LINEAR);
+        cv::resize(meanB_, fullB_, frame.size(), 0, 0, cv::INTER_LINEAR);
+    }
+    cv::Mat q = fullA_.mul(fullGrey_) + fullB_;
+    q.convertTo(alpha_, CV_8U, 255.0);
+}
+
+void ConsensusMatte::apply(const cv::Mat& frame, cv::Mat& person) {
+    CV_Assert(frame.type() == CV_8UC3);
+    if (spec_.scale < 1.0) cv::resize(frame, small_, {}, spec_.scale, spec_.scale, cv::INTER_AREA);
+    else small_ = frame;
+    model_.apply(small_, labels_);
+    cleanUp();
+    if (spec_.consensus.edgeRadiusPx > 0) {
+        guidedEdges(frame);
+    } else if (mask_.size() != frame.size()) {
+        cv::resize(mask_, alpha_, frame.size(), 0, 0, cv::INTER_LINEAR);
+    } else {
+        mask_.copyTo(alpha_);
+    }
+    premultiply(frame, alpha_, person);
+}
+
+} // namespace arcomp
