@@ -5,6 +5,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
+
 namespace arcomp {
 
 namespace {
@@ -24,6 +26,41 @@ void dropSmallComponents(cv::Mat& mask, double maxArea, std::uint8_t value) {
         for (int x = 0; x < mask.cols; ++x)
             if (drop[id[x]]) m[x] = value;
     }
+}
+
+// alpha = a * grey + b at every frame pixel, with a and b (model scale)
+// interpolated bilinearly and grey the frame's luma: one pass, no full-size
+// intermediate images.
+void applyAtFullSize(const cv::Mat& frame, const cv::Mat& a, const cv::Mat& b, cv::Mat& alpha) {
+    alpha.create(frame.size(), CV_8UC1);
+    const double sx = static_cast<double>(a.cols) / frame.cols, sy = static_cast<double>(a.rows) / frame.rows;
+    std::vector<int> x0(frame.cols), x1(frame.cols);
+    std::vector<float> wx(frame.cols);
+    for (int x = 0; x < frame.cols; ++x) {
+        const double fx = std::clamp((x + 0.5) * sx - 0.5, 0.0, a.cols - 1.0);
+        x0[x] = static_cast<int>(fx);
+        x1[x] = std::min(x0[x] + 1, a.cols - 1);
+        wx[x] = static_cast<float>(fx - x0[x]);
+    }
+    cv::parallel_for_(cv::Range(0, frame.rows), [&](const cv::Range& rows) {
+        for (int y = rows.start; y < rows.end; ++y) {
+            const double fy = std::clamp((y + 0.5) * sy - 0.5, 0.0, a.rows - 1.0);
+            const int y0 = static_cast<int>(fy), y1 = std::min(y0 + 1, a.rows - 1);
+            const float wy = static_cast<float>(fy - y0);
+            const float *a0 = a.ptr<float>(y0), *a1 = a.ptr<float>(y1), *b0 = b.ptr<float>(y0), *b1 = b.ptr<float>(y1);
+            const std::uint8_t* c = frame.ptr<std::uint8_t>(y);
+            std::uint8_t* out = alpha.ptr<std::uint8_t>(y);
+            for (int x = 0; x < frame.cols; ++x, c += 3) {
+                const int l = x0[x], r = x1[x];
+                const float w = wx[x];
+                const float av = (1 - wy) * (a0[l] + w * (a0[r] - a0[l])) + wy * (a1[l] + w * (a1[r] - a1[l]));
+                const float bv = (1 - wy) * (b0[l] + w * (b0[r] - b0[l])) + wy * (b1[l] + w * (b1[r] - b1[l]));
+                // BT.601 luma, as cvtColor(BGR2GRAY) gave the guide at model scale.
+                const float grey = (0.114f * c[0] + 0.587f * c[1] + 0.299f * c[2]) * (1.0f / 255.0f);
+                out[x] = cv::saturate_cast<std::uint8_t>(255.0f * (av * grey + bv));
+            }
+        }
+    });
 }
 
 } // namespace
@@ -93,18 +130,7 @@ void ConsensusMatte::guidedEdges(const cv::Mat& frame) {
     cv::Mat b = meanP - a.mul(meanI);
     cv::boxFilter(a, meanA_, CV_32F, window);
     cv::boxFilter(b, meanB_, CV_32F, window);
-    if (frame.size() == small_.size()) {
-        fullGrey_ = guide_;
-        fullA_ = meanA_;
-        fullB_ = meanB_;
-    } else {
-        cv::cvtColor(frame, grey, cv::COLOR_BGR2GRAY);
-        grey.convertTo(fullGrey_, CV_32F, 1.0 / 255.0);
-        cv::resize(meanA_, fullA_, frame.size(), 0, 0, cv::INTER_LINEAR);
-        cv::resize(meanB_, fullB_, frame.size(), 0, 0, cv::INTER_LINEAR);
-    }
-    cv::Mat q = fullA_.mul(fullGrey_) + fullB_;
-    q.convertTo(alpha_, CV_8U, 255.0);
+    applyAtFullSize(frame, meanA_, meanB_, alpha_);
 }
 
 void ConsensusMatte::apply(const cv::Mat& frame, cv::Mat& person) {

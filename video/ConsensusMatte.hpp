@@ -41,7 +41,7 @@ private:
     ConsensusModel model_;
     cv::Mat closeKernel_;
     cv::Mat small_, labels_, mask_, alpha_;
-    cv::Mat guide_, fullGrey_, meanA_, meanB_, fullA_, fullB_;  // guided filter scratch
+    cv::Mat guide_, meanA_, meanB_;  // guided filter scratch
 };
 
 } // namespace arcomp

@@ -37,7 +37,7 @@ struct ConsensusSpec {
     double colourRadius = 24.0;       // L1 distance over B, G, R (levels) within which a sample is near: 3 x 8, the noise
     double shadowDarkest = 0.4;       // a shadow keeps at least this fraction of the background's brightness
     double shadowLightest = 0.92;     // ... and at most this (above: noise, already background)
-    double shadowChroma = 0.06;       // largest colour change of a shadow, relative to the background's brightness
+    double shadowChroma = 0.05;       // largest colour change of a shadow, relative to the background's brightness (about 3 degrees)
     int updateOdds = 16;              // a background pixel refreshes one of its samples with odds 1 in this
     double absorbSeconds = 180.0;     // a still, unchanging foreground pixel joins the background after this long
     double warmupSeconds = 2.0;       // busy-scene start: the first background is the median of this many seconds

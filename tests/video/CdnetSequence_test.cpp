@@ -65,5 +65,16 @@ TEST(CdnetSequence, refusalsNameTheFolderAndWhatWasExpected) {
     EXPECT_NE(refusal(noInput).find("input/: folder missing"), std::string::npos);
 }
 
+TEST(CdnetSequence, opensBusStation) {
+    const fs::path dir = fs::path(ARCOMP_SHARED_DATA) / "video/busStation";
+    if (!fs::exists(dir)) GTEST_SKIP() << dir << " absent";
+    const CdnetSequence seq = openCdnetSequence(dir);
+    EXPECT_EQ(seq.frameCount, 1250);
+    EXPECT_EQ(seq.firstScored, 300);
+    EXPECT_EQ(seq.lastScored, 1250);
+    EXPECT_EQ(seq.frame(1).size(), cv::Size(360, 240));
+    EXPECT_EQ(seq.roi.size(), cv::Size(360, 240));
+}
+
 } // namespace
 } // namespace arcomp
