@@ -6,14 +6,16 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace arcomp {
 
 namespace {
 
-// Connected components of `mask` (255) smaller than `maxArea` are set to `value`.
-void dropSmallComponents(cv::Mat& mask, double maxArea, std::uint8_t value) {
-    cv::Mat ids, stats, centroids;
+// Connected components of `mask` (255) smaller than `maxArea` are set to
+// `value`; ids, stats and centroids are scratch kept by the caller.
+void dropSmallComponents(cv::Mat& mask, double maxArea, std::uint8_t value, cv::Mat& ids, cv::Mat& stats,
+                         cv::Mat& centroids) {
     const int count = cv::connectedComponentsWithStats(mask, ids, stats, centroids, 8, CV_32S);
     std::vector<std::uint8_t> drop(count, 0);
     bool any = false;
@@ -30,7 +32,8 @@ void dropSmallComponents(cv::Mat& mask, double maxArea, std::uint8_t value) {
 
 // alpha = a * grey + b at every frame pixel, with a and b (model scale)
 // interpolated bilinearly and grey the frame's luma: one pass, no full-size
-// intermediate images.
+// intermediate images. Away from people a and b are 0, so each row is only
+// computed between the first and last columns where they are not.
 void applyAtFullSize(const cv::Mat& frame, const cv::Mat& a, const cv::Mat& b, cv::Mat& alpha) {
     alpha.create(frame.size(), CV_8UC1);
     const double sx = static_cast<double>(a.cols) / frame.cols, sy = static_cast<double>(a.rows) / frame.rows;
@@ -42,15 +45,36 @@ void applyAtFullSize(const cv::Mat& frame, const cv::Mat& a, const cv::Mat& b, c
         x1[x] = std::min(x0[x] + 1, a.cols - 1);
         wx[x] = static_cast<float>(fx - x0[x]);
     }
+    // Per model row, the span of columns where alpha can be above 0.
+    constexpr float kNothing = 0.5f / 255.0f;
+    std::vector<int> first(a.rows, a.cols), last(a.rows, -1);
+    for (int y = 0; y < a.rows; ++y) {
+        const float *ar = a.ptr<float>(y), *br = b.ptr<float>(y);
+        for (int x = 0; x < a.cols; ++x)
+            if (std::abs(ar[x]) + std::abs(br[x]) > kNothing) {
+                first[y] = std::min(first[y], x);
+                last[y] = x;
+            }
+    }
     cv::parallel_for_(cv::Range(0, frame.rows), [&](const cv::Range& rows) {
         for (int y = rows.start; y < rows.end; ++y) {
             const double fy = std::clamp((y + 0.5) * sy - 0.5, 0.0, a.rows - 1.0);
             const int y0 = static_cast<int>(fy), y1 = std::min(y0 + 1, a.rows - 1);
+            std::uint8_t* out = alpha.ptr<std::uint8_t>(y);
+            const int from = std::min(first[y0], first[y1]), to = std::max(last[y0], last[y1]);
+            if (to < from) {
+                std::fill(out, out + frame.cols, 0);
+                continue;
+            }
+            // Frame columns that read model columns from..to.
+            const int begin = static_cast<int>(std::lower_bound(x1.begin(), x1.end(), from) - x1.begin());
+            const int end = static_cast<int>(std::upper_bound(x0.begin(), x0.end(), to) - x0.begin());
+            std::fill(out, out + begin, 0);
+            std::fill(out + end, out + frame.cols, 0);
             const float wy = static_cast<float>(fy - y0);
             const float *a0 = a.ptr<float>(y0), *a1 = a.ptr<float>(y1), *b0 = b.ptr<float>(y0), *b1 = b.ptr<float>(y1);
-            const std::uint8_t* c = frame.ptr<std::uint8_t>(y);
-            std::uint8_t* out = alpha.ptr<std::uint8_t>(y);
-            for (int x = 0; x < frame.cols; ++x, c += 3) {
+            const std::uint8_t* c = frame.ptr<std::uint8_t>(y) + 3 * begin;
+            for (int x = begin; x < end; ++x, c += 3) {
                 const int l = x0[x], r = x1[x];
                 const float w = wx[x];
                 const float av = (1 - wy) * (a0[l] + w * (a0[r] - a0[l])) + wy * (a1[l] + w * (a1[r] - a1[l]));
@@ -84,13 +108,14 @@ ConsensusMatte::ConsensusMatte(const BackgroundSpec& spec) : spec_(spec), model_
 void ConsensusMatte::cleanUp() {
     cv::compare(labels_, ConsensusModel::kPerson, mask_, cv::CMP_EQ);
     const double area = static_cast<double>(mask_.total());
-    if (spec_.consensus.minBlobArea > 0.0) dropSmallComponents(mask_, spec_.consensus.minBlobArea * area, 0);
+    if (spec_.consensus.minBlobArea > 0.0) dropSmallComponents(mask_, spec_.consensus.minBlobArea * area, 0, ids_, stats_, centroids_);
     if (!closeKernel_.empty()) cv::morphologyEx(mask_, mask_, cv::MORPH_CLOSE, closeKernel_);
     if (spec_.consensus.maxHoleArea > 0.0) {
         // A hole is a background component that does not touch the border and is small.
-        cv::Mat background = ~mask_;
-        cv::Mat ids, stats, centroids;
-        const int count = cv::connectedComponentsWithStats(background, ids, stats, centroids, 4, CV_32S);
+        cv::bitwise_not(mask_, holes_);
+        cv::Mat& ids = ids_;
+        cv::Mat& stats = stats_;
+        const int count = cv::connectedComponentsWithStats(holes_, ids, stats, centroids_, 4, CV_32S);
         std::vector<std::uint8_t> fill(count, 0);
         for (int i = 1; i < count; ++i) {
             const int x = stats.at<int>(i, cv::CC_STAT_LEFT), y = stats.at<int>(i, cv::CC_STAT_TOP);
@@ -115,21 +140,40 @@ void ConsensusMatte::guidedEdges(const cv::Mat& frame) {
     const cv::Size window(2 * r + 1, 2 * r + 1);
     // (8 levels of 255)^2, the order of the sensor's noise: weaker edges are smoothed over.
     const double eps = (8.0 / 255.0) * (8.0 / 255.0);
-    cv::Mat grey, p;
-    cv::cvtColor(small_, grey, cv::COLOR_BGR2GRAY);
-    grey.convertTo(guide_, CV_32F, 1.0 / 255.0);
-    mask_.convertTo(p, CV_32F, 1.0 / 255.0);
-    cv::Mat meanI, meanP, corrII, corrIP;
-    cv::boxFilter(guide_, meanI, CV_32F, window);
-    cv::boxFilter(p, meanP, CV_32F, window);
-    cv::boxFilter(guide_.mul(guide_), corrII, CV_32F, window);
-    cv::boxFilter(guide_.mul(p), corrIP, CV_32F, window);
-    cv::Mat varI = corrII - meanI.mul(meanI);
-    cv::Mat covIP = corrIP - meanI.mul(meanP);
-    cv::Mat a = covIP / (varI + eps);
-    cv::Mat b = meanP - a.mul(meanI);
-    cv::boxFilter(a, meanA_, CV_32F, window);
-    cv::boxFilter(b, meanB_, CV_32F, window);
+    // Every image here is a member reused from frame to frame: at these
+    // sizes a fresh allocation per step costs more than the arithmetic.
+    cv::cvtColor(small_, grey_, cv::COLOR_BGR2GRAY);
+    guide_.create(small_.size(), CV_32FC1);
+    target_.create(small_.size(), CV_32FC1);
+    guideSquared_.create(small_.size(), CV_32FC1);
+    guideTarget_.create(small_.size(), CV_32FC1);
+    for (int y = 0; y < small_.rows; ++y) {
+        const std::uint8_t* g = grey_.ptr<std::uint8_t>(y);
+        const std::uint8_t* m = mask_.ptr<std::uint8_t>(y);
+        float *i = guide_.ptr<float>(y), *p = target_.ptr<float>(y);
+        float *ii = guideSquared_.ptr<float>(y), *ip = guideTarget_.ptr<float>(y);
+        for (int x = 0; x < small_.cols; ++x) {
+            i[x] = g[x] * (1.0f / 255.0f);
+            p[x] = m[x] ? 1.0f : 0.0f;
+            ii[x] = i[x] * i[x];
+            ip[x] = i[x] * p[x];
+        }
+    }
+    cv::boxFilter(guide_, meanI_, CV_32F, window);
+    cv::boxFilter(target_, meanP_, CV_32F, window);
+    cv::boxFilter(guideSquared_, guideSquared_, CV_32F, window);
+    cv::boxFilter(guideTarget_, guideTarget_, CV_32F, window);
+    // a = cov(I, p) / (var(I) + eps), b = mean(p) - a mean(I), in place.
+    for (int y = 0; y < small_.rows; ++y) {
+        const float *mi = meanI_.ptr<float>(y), *ii = guideSquared_.ptr<float>(y);
+        float *a = guideTarget_.ptr<float>(y), *b = meanP_.ptr<float>(y);
+        for (int x = 0; x < small_.cols; ++x) {
+            a[x] = (a[x] - mi[x] * b[x]) / (ii[x] - mi[x] * mi[x] + static_cast<float>(eps));
+            b[x] -= a[x] * mi[x];
+        }
+    }
+    cv::boxFilter(guideTarget_, meanA_, CV_32F, window);
+    cv::boxFilter(meanP_, meanB_, CV_32F, window);
     applyAtFullSize(frame, meanA_, meanB_, alpha_);
 }
 

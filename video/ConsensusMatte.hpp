@@ -41,7 +41,9 @@ private:
     ConsensusModel model_;
     cv::Mat closeKernel_;
     cv::Mat small_, labels_, mask_, alpha_;
-    cv::Mat guide_, meanA_, meanB_;  // guided filter scratch
+    cv::Mat ids_, stats_, centroids_, holes_;                                    // clean-up scratch
+    cv::Mat grey_, guide_, target_, guideSquared_, guideTarget_, meanI_, meanP_;  // guided filter scratch
+    cv::Mat meanA_, meanB_;
 };
 
 } // namespace arcomp

@@ -159,7 +159,7 @@ void ConsensusModel::classify(const cv::Mat& image, cv::Mat& labels) {
 }
 
 bool ConsensusModel::correctLightChange(const cv::Mat& image, const cv::Mat& labels) {
-    const int changed = size_.area() - cv::countNonZero(labels == 0);
+    const int changed = cv::countNonZero(labels);
     if (changed < spec_.lightChangeFraction * size_.area()) return false;
     // One gain per channel, the median of image / background over a grid of
     // pixels. A person covering the frame gives gains that disagree; a light
