@@ -12,22 +12,31 @@ namespace arcomp {
 
 namespace {
 
-// Connected components of `mask` (255) smaller than `maxArea` are set to
-// `value`; ids, stats and centroids are scratch kept by the caller.
-void dropSmallComponents(cv::Mat& mask, double maxArea, std::uint8_t value, cv::Mat& ids, cv::Mat& stats,
-                         cv::Mat& centroids) {
+// Connected components of `mask` (255) smaller than `minArea` are cleared;
+// returns the bounding box of those kept. ids, stats and centroids are
+// scratch kept by the caller.
+cv::Rect dropSmallComponents(cv::Mat& mask, double minArea, cv::Mat& ids, cv::Mat& stats, cv::Mat& centroids) {
     const int count = cv::connectedComponentsWithStats(mask, ids, stats, centroids, 8, CV_32S);
     std::vector<std::uint8_t> drop(count, 0);
     bool any = false;
-    for (int i = 1; i < count; ++i)
-        if (stats.at<int>(i, cv::CC_STAT_AREA) < maxArea) drop[i] = 1, any = true;
-    if (!any) return;
+    cv::Rect kept;
+    for (int i = 1; i < count; ++i) {
+        if (stats.at<int>(i, cv::CC_STAT_AREA) < minArea) {
+            drop[i] = 1, any = true;
+            continue;
+        }
+        const cv::Rect box(stats.at<int>(i, cv::CC_STAT_LEFT), stats.at<int>(i, cv::CC_STAT_TOP),
+                           stats.at<int>(i, cv::CC_STAT_WIDTH), stats.at<int>(i, cv::CC_STAT_HEIGHT));
+        kept = kept.empty() ? box : kept | box;
+    }
+    if (!any) return kept;
     for (int y = 0; y < mask.rows; ++y) {
         const int* id = ids.ptr<int>(y);
         std::uint8_t* m = mask.ptr<std::uint8_t>(y);
         for (int x = 0; x < mask.cols; ++x)
-            if (drop[id[x]]) m[x] = value;
+            if (drop[id[x]]) m[x] = 0;
     }
+    return kept;
 }
 
 // alpha = a * grey + b at every frame pixel, with a and b (model scale)
@@ -108,51 +117,72 @@ ConsensusMatte::ConsensusMatte(const BackgroundSpec& spec) : spec_(spec), model_
 void ConsensusMatte::cleanUp() {
     cv::compare(labels_, ConsensusModel::kPerson, mask_, cv::CMP_EQ);
     const double area = static_cast<double>(mask_.total());
-    if (spec_.consensus.minBlobArea > 0.0) dropSmallComponents(mask_, spec_.consensus.minBlobArea * area, 0, ids_, stats_, centroids_);
-    if (!closeKernel_.empty()) cv::morphologyEx(mask_, mask_, cv::MORPH_CLOSE, closeKernel_);
+    const cv::Rect people = spec_.consensus.minBlobArea > 0.0
+                                ? dropSmallComponents(mask_, spec_.consensus.minBlobArea * area, ids_, stats_, centroids_)
+                                : cv::boundingRect(mask_);
+    // Everything after this only changes pixels near people: it works in
+    // their bounding box, grown by what closing and the guided filter reach.
+    const int margin = closeKernel_.cols + 2 * guidedRadius() + 2;
+    work_ = people.empty() ? cv::Rect() : (people + cv::Size(2 * margin, 2 * margin) - cv::Point(margin, margin)) &
+                                              cv::Rect(0, 0, mask_.cols, mask_.rows);
+    if (work_.empty()) return;
+    cv::Mat region = mask_(work_);
+    if (!closeKernel_.empty()) cv::morphologyEx(region, region, cv::MORPH_CLOSE, closeKernel_);
     if (spec_.consensus.maxHoleArea > 0.0) {
-        // A hole is a background component that does not touch the border and is small.
-        cv::bitwise_not(mask_, holes_);
-        cv::Mat& ids = ids_;
-        cv::Mat& stats = stats_;
-        const int count = cv::connectedComponentsWithStats(holes_, ids, stats, centroids_, 4, CV_32S);
+        // A hole is a small background component that does not reach the
+        // edge of the work box (the margin keeps people off that edge).
+        cv::bitwise_not(region, holes_);
+        const int count = cv::connectedComponentsWithStats(holes_, ids_, stats_, centroids_, 4, CV_32S);
         std::vector<std::uint8_t> fill(count, 0);
         for (int i = 1; i < count; ++i) {
-            const int x = stats.at<int>(i, cv::CC_STAT_LEFT), y = stats.at<int>(i, cv::CC_STAT_TOP);
-            const int w = stats.at<int>(i, cv::CC_STAT_WIDTH), h = stats.at<int>(i, cv::CC_STAT_HEIGHT);
-            const bool touchesBorder = x == 0 || y == 0 || x + w == mask_.cols || y + h == mask_.rows;
-            fill[i] = !touchesBorder && stats.at<int>(i, cv::CC_STAT_AREA) < spec_.consensus.maxHoleArea * area;
+            const int x = stats_.at<int>(i, cv::CC_STAT_LEFT), y = stats_.at<int>(i, cv::CC_STAT_TOP);
+            const int w = stats_.at<int>(i, cv::CC_STAT_WIDTH), h = stats_.at<int>(i, cv::CC_STAT_HEIGHT);
+            const bool touchesEdge = x == 0 || y == 0 || x + w == region.cols || y + h == region.rows;
+            fill[i] = !touchesEdge && stats_.at<int>(i, cv::CC_STAT_AREA) < spec_.consensus.maxHoleArea * area;
         }
-        for (int y = 0; y < mask_.rows; ++y) {
-            const int* id = ids.ptr<int>(y);
-            std::uint8_t* m = mask_.ptr<std::uint8_t>(y);
-            for (int x = 0; x < mask_.cols; ++x)
+        for (int y = 0; y < region.rows; ++y) {
+            const int* id = ids_.ptr<int>(y);
+            std::uint8_t* m = region.ptr<std::uint8_t>(y);
+            for (int x = 0; x < region.cols; ++x)
                 if (fill[id[x]]) m[x] = 255;
         }
     }
+}
+
+int ConsensusMatte::guidedRadius() const {
+    return std::max(1, static_cast<int>(spec_.consensus.edgeRadiusPx * spec_.scale + 0.5));
 }
 
 void ConsensusMatte::guidedEdges(const cv::Mat& frame) {
     // Guided filter with the grey image as guide: within each window alpha
     // is a linear function of the guide, a*I + b, fitted to the mask, so
     // alpha's edge goes where the image's edge is.
-    const int r = std::max(1, static_cast<int>(spec_.consensus.edgeRadiusPx * spec_.scale + 0.5));
+    const int r = guidedRadius();
     const cv::Size window(2 * r + 1, 2 * r + 1);
+    meanA_.create(small_.size(), CV_32FC1);
+    meanB_.create(small_.size(), CV_32FC1);
+    meanA_.setTo(0);
+    meanB_.setTo(0);
+    if (work_.empty()) {  // nobody: a = b = 0, alpha 0
+        applyAtFullSize(frame, meanA_, meanB_, alpha_);
+        return;
+    }
+    const cv::Mat smallWork = small_(work_), maskWork = mask_(work_);
     // (8 levels of 255)^2, the order of the sensor's noise: weaker edges are smoothed over.
     const double eps = (8.0 / 255.0) * (8.0 / 255.0);
     // Every image here is a member reused from frame to frame: at these
     // sizes a fresh allocation per step costs more than the arithmetic.
-    cv::cvtColor(small_, grey_, cv::COLOR_BGR2GRAY);
-    guide_.create(small_.size(), CV_32FC1);
-    target_.create(small_.size(), CV_32FC1);
-    guideSquared_.create(small_.size(), CV_32FC1);
-    guideTarget_.create(small_.size(), CV_32FC1);
-    for (int y = 0; y < small_.rows; ++y) {
+    cv::cvtColor(smallWork, grey_, cv::COLOR_BGR2GRAY);
+    guide_.create(work_.size(), CV_32FC1);
+    target_.create(work_.size(), CV_32FC1);
+    guideSquared_.create(work_.size(), CV_32FC1);
+    guideTarget_.create(work_.size(), CV_32FC1);
+    for (int y = 0; y < work_.height; ++y) {
         const std::uint8_t* g = grey_.ptr<std::uint8_t>(y);
-        const std::uint8_t* m = mask_.ptr<std::uint8_t>(y);
+        const std::uint8_t* m = maskWork.ptr<std::uint8_t>(y);
         float *i = guide_.ptr<float>(y), *p = target_.ptr<float>(y);
         float *ii = guideSquared_.ptr<float>(y), *ip = guideTarget_.ptr<float>(y);
-        for (int x = 0; x < small_.cols; ++x) {
+        for (int x = 0; x < work_.width; ++x) {
             i[x] = g[x] * (1.0f / 255.0f);
             p[x] = m[x] ? 1.0f : 0.0f;
             ii[x] = i[x] * i[x];
@@ -164,16 +194,17 @@ void ConsensusMatte::guidedEdges(const cv::Mat& frame) {
     cv::boxFilter(guideSquared_, guideSquared_, CV_32F, window);
     cv::boxFilter(guideTarget_, guideTarget_, CV_32F, window);
     // a = cov(I, p) / (var(I) + eps), b = mean(p) - a mean(I), in place.
-    for (int y = 0; y < small_.rows; ++y) {
+    for (int y = 0; y < work_.height; ++y) {
         const float *mi = meanI_.ptr<float>(y), *ii = guideSquared_.ptr<float>(y);
         float *a = guideTarget_.ptr<float>(y), *b = meanP_.ptr<float>(y);
-        for (int x = 0; x < small_.cols; ++x) {
+        for (int x = 0; x < work_.width; ++x) {
             a[x] = (a[x] - mi[x] * b[x]) / (ii[x] - mi[x] * mi[x] + static_cast<float>(eps));
             b[x] -= a[x] * mi[x];
         }
     }
-    cv::boxFilter(guideTarget_, meanA_, CV_32F, window);
-    cv::boxFilter(meanP_, meanB_, CV_32F, window);
+    cv::Mat aWork = meanA_(work_), bWork = meanB_(work_);
+    cv::boxFilter(guideTarget_, aWork, CV_32F, window);
+    cv::boxFilter(meanP_, bWork, CV_32F, window);
     applyAtFullSize(frame, meanA_, meanB_, alpha_);
 }
 

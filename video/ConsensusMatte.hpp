@@ -36,10 +36,12 @@ public:
 private:
     void cleanUp();
     void guidedEdges(const cv::Mat& frame);
+    int guidedRadius() const;  // window radius at model scale
 
     BackgroundSpec spec_;
     ConsensusModel model_;
     cv::Mat closeKernel_;
+    cv::Rect work_;  // model-scale box around the people of this frame, where clean-up and edges work
     cv::Mat small_, labels_, mask_, alpha_;
     cv::Mat ids_, stats_, centroids_, holes_;                                    // clean-up scratch
     cv::Mat grey_, guide_, target_, guideSquared_, guideTarget_, meanI_, meanP_;  // guided filter scratch
