@@ -49,7 +49,7 @@ public:
 
     // The model's estimate of the empty place (CV_8UC3), for shadows and inspection.
     const cv::Mat& background() const { return background_; }
-    // How many frames the last light change was corrected in (for tests and logs).
+    // How many frames so far had a light change corrected (for tests and logs).
     int lightChanges() const { return lightChanges_; }
 
 private:
