@@ -1,10 +1,16 @@
 #include "video/ConsensusMatte.hpp"
 
+#include "video/BackgroundMatte.hpp"
+#include "video/CdnetSequence.hpp"
+#include "video/MatteScore.hpp"
+
 #include "video/VideoError.hpp"
 
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+
+#include <filesystem>
 
 namespace arcomp {
 namespace {
@@ -108,6 +114,32 @@ TEST(ConsensusMatte, stillPersonIsStillMattedAfterSixtySeconds) {
     const int stillFrames = static_cast<int>(60 * kFps);
     for (int i = 0; i < stillFrames; ++i) matte.apply(place.frame({{{160, 120}}}, &truth), person);
     EXPECT_GE(iou(found(person), truth), 0.9);
+}
+
+TEST(ConsensusMatte, busStationsStandingPersonStaysMatted) {
+    // Real footage: from about frame 450 a man stands at the door, and from
+    // about 850 talks with a second; frames 700..900 are 10-18 s into his stay.
+    const std::filesystem::path dir = std::filesystem::path(ARCOMP_SHARED_DATA) / "video/busStation";
+    if (!std::filesystem::exists(dir)) GTEST_SKIP() << dir << " absent";
+    const CdnetSequence seq = openCdnetSequence(dir);
+    BackgroundSpec s;
+    s.consensus.fps = 25.0;
+    ConsensusMatte consensus(s);
+    BackgroundMatte mog2({.method = BackgroundMethod::Mog2});  // the station's default before
+    MatteScore standing, standingMog2;
+    cv::Mat person, person2;
+    for (int i = 1; i <= 900; ++i) {
+        const cv::Mat frame = seq.frame(i);
+        consensus.apply(frame, person);
+        mog2.apply(frame, person2);
+        if (i < 700) continue;
+        const cv::Mat labels = seq.labels(i);
+        standing.add(found(person), labels, seq.roi);
+        standingMog2.add(found(person2), labels, seq.roi);
+    }
+    EXPECT_GE(standing.recall(), 0.65);
+    EXPECT_GE(standing.precision(), 0.9);
+    EXPECT_GT(standing.recall(), 2.0 * standingMog2.recall()) << "MOG2 learns him into the background";
 }
 
 TEST(ConsensusMatte, somethingLeftBehindJoinsTheBackgroundInTheEnd) {
