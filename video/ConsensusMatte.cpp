@@ -149,6 +149,56 @@ void ConsensusMatte::cleanUp() {
     }
 }
 
+void ConsensusMatte::forgetGhosts() {
+    // Only blobs that have stood still for a second are judged: a ghost
+    // does not move, and a moving person is never taken for one.
+    const int stillEnough = std::max(1, static_cast<int>(spec_.consensus.fps));
+    cv::Mat region = mask_(work_);
+    const int count = cv::connectedComponents(region, ids_, 8, CV_32S);
+    if (count <= 1) return;
+    cv::cvtColor(small_(work_), grey_, cv::COLOR_BGR2GRAY);
+    cv::cvtColor(model_.background()(work_), modelGrey_, cv::COLOR_BGR2GRAY);
+    const cv::Mat still = model_.stillFrames()(work_);
+    std::vector<double> sharpNow(count, 0.0), sharpModel(count, 0.0);
+    std::vector<int> area(count, 0), stillArea(count, 0);
+    const auto sharpness = [](const cv::Mat& g, int x, int y) {
+        return std::abs(g.at<std::uint8_t>(y, x + 1) - g.at<std::uint8_t>(y, x - 1)) +
+               std::abs(g.at<std::uint8_t>(y + 1, x) - g.at<std::uint8_t>(y - 1, x));
+    };
+    // The work box's margin keeps every blob off its edge.
+    for (int y = 1; y + 1 < region.rows; ++y) {
+        const int* id = ids_.ptr<int>(y);
+        for (int x = 1; x + 1 < region.cols; ++x) {
+            const int i = id[x];
+            if (i == 0) continue;
+            ++area[i];
+            stillArea[i] += still.at<std::uint16_t>(y, x) >= stillEnough;
+            const bool outline = id[x - 1] == 0 || id[x + 1] == 0 || ids_.at<int>(y - 1, x) == 0 || ids_.at<int>(y + 1, x) == 0;
+            if (!outline) continue;
+            sharpNow[i] += sharpness(grey_, x, y);
+            sharpModel[i] += sharpness(modelGrey_, x, y);
+        }
+    }
+    std::vector<std::uint8_t> ghost(count, 0);
+    bool any = false;
+    for (int i = 1; i < count; ++i) {
+        ghost[i] = stillArea[i] >= 0.7 * area[i] && sharpNow[i] < 0.5 * sharpModel[i];
+        any = any || ghost[i];
+    }
+    if (!any) return;
+    ghosts_.create(mask_.size(), CV_8UC1);
+    ghosts_.setTo(0);
+    cv::Mat ghostRegion = ghosts_(work_);
+    for (int y = 0; y < region.rows; ++y) {
+        const int* id = ids_.ptr<int>(y);
+        std::uint8_t* g = ghostRegion.ptr<std::uint8_t>(y);
+        std::uint8_t* m = region.ptr<std::uint8_t>(y);
+        for (int x = 0; x < region.cols; ++x)
+            if (ghost[id[x]]) g[x] = 255, m[x] = 0;
+    }
+    model_.relearn(ghosts_);
+}
+
 int ConsensusMatte::guidedRadius() const {
     return std::max(1, static_cast<int>(spec_.consensus.edgeRadiusPx * spec_.scale + 0.5));
 }
@@ -214,6 +264,7 @@ void ConsensusMatte::apply(const cv::Mat& frame, cv::Mat& person) {
     else small_ = frame;
     model_.apply(small_, labels_);
     cleanUp();
+    if (!work_.empty()) forgetGhosts();
     if (spec_.consensus.edgeRadiusPx > 0) {
         guidedEdges(frame);
     } else if (mask_.size() != frame.size()) {

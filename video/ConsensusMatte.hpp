@@ -35,6 +35,12 @@ public:
 
 private:
     void cleanUp();
+    // A ghost is foreground that the model holds and the image does not:
+    // where someone stood while the start-up median was taken, after they
+    // left. Its outline is sharp in the model's background, not in the
+    // image; a person's, still or moving, is sharp in the image. Ghosts are
+    // dropped from the mask and relearnt at once.
+    void forgetGhosts();
     void guidedEdges(const cv::Mat& frame);
     int guidedRadius() const;  // window radius at model scale
 
@@ -43,7 +49,7 @@ private:
     cv::Mat closeKernel_;
     cv::Rect work_;  // model-scale box around the people of this frame, where clean-up and edges work
     cv::Mat small_, labels_, mask_, alpha_;
-    cv::Mat ids_, stats_, centroids_, holes_;                                    // clean-up scratch
+    cv::Mat ids_, stats_, centroids_, holes_, modelGrey_, ghosts_;               // clean-up scratch
     cv::Mat grey_, guide_, target_, guideSquared_, guideTarget_, meanI_, meanP_;  // guided filter scratch
     cv::Mat meanA_, meanB_;
 };

@@ -90,6 +90,29 @@ void ConsensusModel::seed(const cv::Mat& empty) {
     seeded_ = true;
 }
 
+void ConsensusModel::relearn(const cv::Mat& where) {
+    CV_Assert(where.type() == CV_8UC1 && where.size() == size_ && !previous_.empty());
+    const int n = spec_.samples;
+    for (int y = 0; y < size_.height; ++y) {
+        const std::uint8_t* w = where.ptr<std::uint8_t>(y);
+        for (int x = 0; x < size_.width; ++x) {
+            if (!w[x]) continue;
+            // As at the start: the pixel and its neighbours stand in for the noise.
+            std::uint8_t* s = &samples_[(static_cast<std::size_t>(y) * size_.width + x) * n * 3];
+            for (int k = 0; k < n; ++k) {
+                const std::uint32_t r = k > 0 ? nextRandom(random_) : 4;  // 4: the centre of the 3x3
+                const int nx = std::clamp(x + static_cast<int>(r % 3) - 1, 0, size_.width - 1);
+                const int ny = std::clamp(y + static_cast<int>((r / 3) % 3) - 1, 0, size_.height - 1);
+                const std::uint8_t* p = previous_.ptr<std::uint8_t>(ny) + nx * 3;
+                std::copy(p, p + 3, s + k * 3);
+            }
+            const std::uint8_t* p = previous_.ptr<std::uint8_t>(y) + x * 3;
+            std::copy(p, p + 3, background_.ptr<std::uint8_t>(y) + x * 3);
+            stillFrames_.at<std::uint16_t>(y, x) = 0;
+        }
+    }
+}
+
 void ConsensusModel::finishWarmup() {
     // Per-pixel, per-channel median of the kept images: a person passing
     // through covers any one pixel in fewer than half of them.

@@ -47,6 +47,13 @@ public:
     // `image` is CV_8UC3 BGR, the same size every call.
     void apply(const cv::Mat& image, cv::Mat& labels);
 
+    // Takes the pixels where `where` (CV_8UC1, the images' size) is not 0
+    // as background at once, from the last image: for a ghost, the place
+    // something left that the model still holds (see ConsensusMatte).
+    void relearn(const cv::Mat& where);
+
+    // Per pixel, how many frames it has been foreground and unchanging (CV_16UC1).
+    const cv::Mat& stillFrames() const { return stillFrames_; }
     // The model's estimate of the empty place (CV_8UC3), for shadows and inspection.
     const cv::Mat& background() const { return background_; }
     // How many frames so far had a light change corrected (for tests and logs).

@@ -200,6 +200,23 @@ TEST(ConsensusMatte, busySceneStartNeedsNoEmptyFrame) {
     EXPECT_LT(falseAlarms(matted, truth), 320 * 240 / 200) << "no ghosts where they walked during the warm-up";
 }
 
+TEST(ConsensusMatte, someoneStandingThroughTheStartLeavesNoGhost) {
+    Place place(320, 240);
+    ConsensusMatte matte(spec());
+    cv::Mat person, truth, standing;
+    // In view and still for the whole warm-up median (3 s), then walks off to the right.
+    for (int i = 0; i < 30; ++i) matte.apply(place.frame({{{100, 120}}}, &standing), person);
+    for (int x = 100; x < 380; x += 14) matte.apply(place.frame({{{x, 120}}}), person);
+    // Two seconds of the empty place.
+    for (int i = 0; i < 20; ++i) matte.apply(place.empty(), person);
+    EXPECT_LT(cv::countNonZero(found(person) & standing), cv::countNonZero(standing) / 20)
+        << "the place they left is background again well before absorb_s";
+    // And a person who then comes to stand there is matted.
+    for (int x = 20; x <= 100; x += 10) matte.apply(place.frame({{{x, 120}}}, &truth), person);
+    for (int i = 0; i < 50; ++i) matte.apply(place.frame({{{100, 120}}}, &truth), person);
+    EXPECT_GE(iou(found(person), truth), 0.9);
+}
+
 TEST(ConsensusMatte, cleanPlateStartsTheModelAtOnce) {
     Place place(320, 240);
     const std::string file = ::testing::TempDir() + "consensus-plate.png";
