@@ -42,7 +42,28 @@ void readVideo(YamlMap& root, CompositingConfig& out) {
     out.video = spec;
 }
 
-void readMatte(YamlMap& root, MatteSpec& out) {
+void readConsensus(YamlMap& b, ConsensusSpec& c) {
+    b.integer("samples", c.samples, 2, 64);
+    b.integer("matches", c.matches, 1, 64);
+    if (c.matches > c.samples) b.report().add(b.mark(), "matte.background.matches: must not exceed samples");
+    b.number("colour_radius", c.colourRadius, 1.0, 765.0);
+    b.number("shadow_darkest", c.shadowDarkest, 0.01, 0.99);
+    b.number("shadow_lightest", c.shadowLightest, 0.02, 1.0);
+    if (c.shadowDarkest >= c.shadowLightest)
+        b.report().add(b.mark(), "matte.background.shadow_darkest: must be below shadow_lightest");
+    b.number("shadow_chroma", c.shadowChroma, 0.0, 0.99);
+    b.integer("update_odds", c.updateOdds, 1, 1000);
+    b.number("absorb_s", c.absorbSeconds, 0.1, 86400.0);
+    b.number("warmup_s", c.warmupSeconds, 0.0, 600.0);
+    b.number("fps", c.fps, 1.0, 1000.0);
+    b.number("light_change_fraction", c.lightChangeFraction, 0.01, 1.0);
+    b.number("min_blob_area", c.minBlobArea, 0.0, 0.5);
+    b.number("max_hole_area", c.maxHoleArea, 0.0, 0.5);
+    b.integer("gap_px", c.gapPx, 0, 99);
+    b.integer("edge_radius_px", c.edgeRadiusPx, 0, 99);
+}
+
+void readMatte(YamlMap& root, MatteSpec& out, const std::optional<SourceSpec>& video) {
     YamlMap m = root.map("matte");
     std::string kind = "none";
     m.choice("kind", kind, {"none", "chroma", "background"});
@@ -60,13 +81,17 @@ void readMatte(YamlMap& root, MatteSpec& out) {
         c.number("spill", out.chroma.spill, 0.0, 1.0);
         c.finish();
     }
+    // The consensus model's times are in seconds; the video's rate turns them into frames.
+    if (video) out.background.consensus.fps = video->fps;
     if (m.has("background")) {
         YamlMap b = m.map("background");
         BackgroundSpec& s = out.background;
-        std::string method = "mog2";
-        b.choice("method", method, {"mog2", "knn", "cnt", "clean_plate"});
-        s.method = method == "knn" ? BackgroundMethod::Knn : method == "cnt" ? BackgroundMethod::Cnt
-                 : method == "clean_plate" ? BackgroundMethod::CleanPlate : BackgroundMethod::Mog2;
+        std::string method = "consensus";
+        b.choice("method", method, {"consensus", "mog2", "knn", "cnt", "clean_plate"});
+        s.method = method == "mog2" ? BackgroundMethod::Mog2 : method == "knn" ? BackgroundMethod::Knn
+                 : method == "cnt" ? BackgroundMethod::Cnt : method == "clean_plate" ? BackgroundMethod::CleanPlate
+                 : BackgroundMethod::Consensus;
+        readConsensus(b, s.consensus);
         std::filesystem::path plate;
         b.path("clean_plate", plate, true);
         s.cleanPlate = plate.string();
@@ -116,7 +141,7 @@ void readOutput(YamlMap& root, OutputConfig& out) {
 
 void readCompositingConfig(YamlMap& root, CompositingConfig& out) {
     readVideo(root, out);
-    readMatte(root, out.matte);
+    readMatte(root, out.matte, out.video);
     readCompositor(root, out.compositor);
     readOutput(root, out.output);
 }

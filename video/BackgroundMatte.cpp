@@ -26,6 +26,8 @@ BackgroundMatte::BackgroundMatte(const BackgroundSpec& spec) : spec_(spec) {
     check(spec.history >= 1, "history must be >= 1");
     check(spec.threshold > 0.0, "threshold must be > 0");
     switch (spec.method) {
+    case BackgroundMethod::Consensus:
+        throw VideoError("background matte", "settings", "the consensus method is ConsensusMatte's (makeMatte builds it)");
     case BackgroundMethod::Mog2: model_ = cv::createBackgroundSubtractorMOG2(spec.history, spec.threshold, true); break;
     case BackgroundMethod::Knn: model_ = cv::createBackgroundSubtractorKNN(spec.history, 400.0, true); break;
     case BackgroundMethod::Cnt:
@@ -47,6 +49,7 @@ BackgroundMatte::~BackgroundMatte() = default;
 
 std::string BackgroundMatte::name() const {
     switch (spec_.method) {
+    case BackgroundMethod::Consensus: return "background consensus";
     case BackgroundMethod::Mog2: return "background MOG2";
     case BackgroundMethod::Knn: return "background KNN";
     case BackgroundMethod::Cnt: return "background CNT";

@@ -1,7 +1,8 @@
 #pragma once
 // Person matte for real places: foreground is whatever differs from a model
 // of the empty scene. The model is OpenCV's MOG2 or KNN, bgsegm's CNT (the
-// fastest), or a fixed clean plate. The raw foreground mask is then made
+// fastest), or a fixed clean plate. (The default method, Consensus, is
+// ConsensusMatte's: video/ConsensusMatte.hpp; makeMatte picks the class.) The raw foreground mask is then made
 // fit for compositing: shadows dropped, specks opened away, holes closed,
 // the edge feathered, and alpha blended with the previous frame's against
 // flicker.

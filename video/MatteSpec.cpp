@@ -2,6 +2,7 @@
 
 #include "video/BackgroundMatte.hpp"
 #include "video/ChromaKeyMatte.hpp"
+#include "video/ConsensusMatte.hpp"
 
 namespace arcomp {
 
@@ -23,7 +24,9 @@ std::unique_ptr<PersonMatte> makeMatte(const MatteSpec& spec) {
     switch (spec.kind) {
     case MatteKind::None: return std::make_unique<NoMatte>();
     case MatteKind::Chroma: return std::make_unique<ChromaKeyMatte>(spec.chroma);
-    case MatteKind::Background: return std::make_unique<BackgroundMatte>(spec.background);
+    case MatteKind::Background:
+        if (spec.background.method == BackgroundMethod::Consensus) return std::make_unique<ConsensusMatte>(spec.background);
+        return std::make_unique<BackgroundMatte>(spec.background);
     }
     return std::make_unique<NoMatte>();
 }

@@ -77,6 +77,7 @@ output:
     EXPECT_FLOAT_EQ(cfg.compositing.matte.chroma.spill, 0.2f);
     EXPECT_EQ(cfg.compositing.matte.background.method, BackgroundMethod::Cnt);
     EXPECT_DOUBLE_EQ(cfg.compositing.matte.background.scale, 0.25);
+    EXPECT_DOUBLE_EQ(cfg.compositing.matte.background.consensus.fps, 30.0) << "the video's rate";
     EXPECT_FLOAT_EQ(cfg.compositing.compositor.personPlaneMetres, 7.5f);
     EXPECT_EQ(cfg.compositing.compositor.holdout, HoldoutMesh::Full);
     EXPECT_FALSE(cfg.compositing.compositor.backdropVideo);
@@ -106,4 +107,50 @@ output:
     EXPECT_NE(issues.find("matte.background.colour"), std::string::npos) << issues;  // unknown key
     EXPECT_NE(issues.find("compositor.person_plane_m"), std::string::npos) << issues;
     EXPECT_NE(issues.find("video_fourcc"), std::string::npos) << issues;
+}
+
+TEST(CompositingConfig, backgroundMatteDefaultsToConsensusWithItsSettingsInSeconds) {
+    TempDir dir;
+    const StationConfig plain = loadStationConfig(dir.write("plain.yaml", std::string(kScene) + R"(video:
+  source: pattern
+  fps: 12
+matte:
+  kind: background
+)"));
+    const BackgroundSpec& d = plain.compositing.matte.background;
+    EXPECT_EQ(d.method, BackgroundMethod::Consensus);
+    EXPECT_DOUBLE_EQ(d.consensus.fps, 12.0) << "seconds turn into frames at the video's rate";
+
+    const StationConfig tuned = loadStationConfig(dir.write("tuned.yaml", std::string(kScene) + R"(matte:
+  kind: background
+  background:
+    samples: 16
+    colour_radius: 30
+    shadow_darkest: 0.3
+    absorb_s: 300
+    warmup_s: 4
+    fps: 15
+    edge_radius_px: 0
+)"));
+    const ConsensusSpec& c = tuned.compositing.matte.background.consensus;
+    EXPECT_EQ(c.samples, 16);
+    EXPECT_DOUBLE_EQ(c.colourRadius, 30.0);
+    EXPECT_DOUBLE_EQ(c.shadowDarkest, 0.3);
+    EXPECT_DOUBLE_EQ(c.absorbSeconds, 300.0);
+    EXPECT_DOUBLE_EQ(c.warmupSeconds, 4.0);
+    EXPECT_DOUBLE_EQ(c.fps, 15.0);
+    EXPECT_EQ(c.edgeRadiusPx, 0);
+
+    const std::string issues = issuesOf(dir.write("bad.yaml", std::string(kScene) + R"(matte:
+  kind: background
+  background:
+    samples: 8
+    matches: 9
+    shadow_darkest: 0.9
+    shadow_lightest: 0.5
+    absorb_s: -1
+)"));
+    EXPECT_NE(issues.find("matte.background.matches"), std::string::npos) << issues;
+    EXPECT_NE(issues.find("matte.background.shadow_darkest"), std::string::npos) << issues;
+    EXPECT_NE(issues.find("matte.background.absorb_s"), std::string::npos) << issues;
 }
