@@ -18,7 +18,7 @@
 //
 //   arcomp bench matte --sequence ../shared/data/video/busStation --out build/bench-matte
 
-#include "graph/ElapsedTime.hpp"
+#include "graph/core/ElapsedTime.hpp"
 #include "tools/arcomp/Command.hpp"
 #include "tools/bench/LinePlot.hpp"
 #include "video/CdnetSequence.hpp"
