@@ -57,6 +57,14 @@ std::string shaderPreamble() {
 
 bool hasTimerQueries() { return g_timerQueries; }
 
+bool isSoftwareRasterizer() {
+    const auto* r = reinterpret_cast<const char*>(gl::glGetString(GL_RENDERER));
+    const std::string renderer = r ? r : "";
+    for (const char* name : {"llvmpipe", "softpipe", "SwiftShader"})
+        if (renderer.find(name) != std::string::npos) return true;
+    return false;
+}
+
 std::string glDescription() {
     auto str = [](GLenum e) {
         const auto* s = reinterpret_cast<const char*>(gl::glGetString(e));

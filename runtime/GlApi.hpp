@@ -85,6 +85,9 @@ GlApiKind currentGlApi();
 std::string shaderPreamble();
 // Whether GPU timer queries (GL_TIME_ELAPSED) can be used on this context.
 bool hasTimerQueries();
+// Whether the "GPU" is the CPU (Mesa's llvmpipe or softpipe, SwiftShader):
+// there a timer query leaves out the rasterization, which runs at flush.
+bool isSoftwareRasterizer();
 // A short description of the context: API, version, renderer.
 std::string glDescription();
 

@@ -8,10 +8,10 @@ using namespace gl;
 
 GpuStageTimes::GpuStageTimes(int stages)
     : cpuMs_(static_cast<std::size_t>(stages), 0.0), ms_(static_cast<std::size_t>(stages), 0.0),
-      started_(static_cast<std::size_t>(stages)) {
+      started_(static_cast<std::size_t>(stages)), finish_(isSoftwareRasterizer()) {
     for (int parity = 0; parity < 2; ++parity) {
         issued_[parity].assign(static_cast<std::size_t>(stages), false);
-        if (!hasTimerQueries()) continue;
+        if (finish_ || !hasTimerQueries()) continue;
         queries_[parity].resize(static_cast<std::size_t>(stages));
         glGenQueries(stages, queries_[parity].data());
     }
@@ -24,15 +24,23 @@ GpuStageTimes::~GpuStageTimes() {
 
 void GpuStageTimes::begin(int stage) {
     const auto s = static_cast<std::size_t>(stage);
-    if (usesQueries()) glBeginQuery(GL_TIME_ELAPSED, queries_[current_][s]);
-    else started_[s] = Clock::now();
+    if (usesQueries()) {
+        glBeginQuery(GL_TIME_ELAPSED, queries_[current_][s]);
+        return;
+    }
+    if (finish_) glFinish();  // what came before is not this stage's
+    started_[s] = Clock::now();
 }
 
 void GpuStageTimes::end(int stage) {
     const auto s = static_cast<std::size_t>(stage);
     issued_[current_][s] = true;
-    if (usesQueries()) glEndQuery(GL_TIME_ELAPSED);
-    else cpuMs_[s] = std::chrono::duration<double, std::milli>(Clock::now() - started_[s]).count();
+    if (usesQueries()) {
+        glEndQuery(GL_TIME_ELAPSED);
+        return;
+    }
+    if (finish_) glFinish();
+    cpuMs_[s] = std::chrono::duration<double, std::milli>(Clock::now() - started_[s]).count();
 }
 
 void GpuStageTimes::endFrame() { current_ ^= 1; }

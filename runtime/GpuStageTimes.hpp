@@ -2,8 +2,13 @@
 // The GPU milliseconds of a frame's GL stages, read one frame late so that
 // timing never stalls the pipeline: each stage is bracketed by a
 // GL_TIME_ELAPSED query, and frame N's results are collected during frame
-// N+1, when the GPU has long finished them. Where the context has no timer
-// queries (some ES 3.0 drivers), each stage's CPU submission time stands in.
+// N+1, when the GPU has long finished them. Two exceptions:
+// - a software rasterizer (llvmpipe): its timer queries leave out the
+//   rasterization, which runs at flush, so each stage is waited for
+//   (glFinish) and timed on the wall clock. Nothing is lost by waiting
+//   there: the "GPU" is the machine's own cores.
+// - a GPU without timer queries (some ES 3.0 drivers): each stage's CPU
+//   submission time stands in.
 //
 //   GpuStageTimes gpu(kStageCount);   // a context must be current
 //   // each frame:
@@ -38,6 +43,7 @@ public:
     // The previous frame's milliseconds for `stage` (0 for a stage it skipped).
     double ms(int stage) const { return ms_[static_cast<std::size_t>(stage)]; }
     bool usesQueries() const { return !queries_[0].empty(); }
+    bool waitsForStages() const { return finish_; }
 
 private:
     using Clock = std::chrono::steady_clock;
@@ -47,6 +53,7 @@ private:
     std::vector<double> ms_;
     std::vector<Clock::time_point> started_;
     int current_ = 0;
+    bool finish_ = false;
 };
 
 } // namespace arcomp

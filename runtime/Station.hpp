@@ -62,9 +62,9 @@ struct StationInput {
 };
 
 // Per frame: stage times (ms) and counters. CPU stages are wall time of
-// this frame. GL stages are the GPU's time from timer queries, of the
-// previous frame: they are read one frame late so that timing never stalls
-// the GPU (where there are no timer queries, the CPU time to submit them).
+// this frame. GL stages are the previous frame's, from GpuStageTimes: the
+// GPU's time from timer queries read one frame late, so that timing never
+// stalls a GPU (on a software rasterizer, the stage's wall time, waited for).
 struct FrameStats {
     std::uint64_t frame = 0;   // frames composited so far, this one included
     double captureMs = 0;      // CPU: wait for / decode the frame

@@ -26,7 +26,9 @@ TEST_P(GpuStageTimesOnEachApi, aStageReadsThePreviousFramesTimeAndZeroWhenThatFr
     RenderTarget target({512, 512});
     target.bind();
     GpuStageTimes times(2);
-    EXPECT_EQ(times.usesQueries(), hasTimerQueries());
+    // llvmpipe's queries leave out the rasterization: there it waits instead.
+    EXPECT_EQ(times.waitsForStages(), isSoftwareRasterizer());
+    EXPECT_EQ(times.usesQueries(), hasTimerQueries() && !isSoftwareRasterizer());
     times.collect();  // nothing was issued before the first frame
     EXPECT_EQ(times.ms(0), 0.0);
     EXPECT_EQ(times.ms(1), 0.0);
