@@ -7,13 +7,22 @@
 
 using namespace arcomp;
 
-TEST(PointCloudNodes, addsAPointCloudNodeBoundingItsPoints) {
-    Scene scene;
-    PointCloudNodes clouds;
+namespace {
+
+PointCloud twoPoints() {
     PointCloud cloud;
     cloud.positions = {{-1, 0, 0}, {1, 0, 0}};
     cloud.colors.assign(2, glm::vec4(1.0f));
     cloud.pointSize = 0.1f;
+    return cloud;
+}
+
+} // namespace
+
+TEST(PointCloudNodes, addsAPointCloudNodeBoundingItsPoints) {
+    Scene scene;
+    PointCloudNodes clouds;
+    const PointCloud cloud = twoPoints();
     const auto cams = ldiCamerasAround(Sphere{{0, 0, 0}, 1.0f}, 3, 0.1f);
     const NodeId node = clouds.add(scene, scene.root(), buildLdis(cloud, cams), "tree");
     scene.update();
@@ -28,10 +37,7 @@ TEST(PointCloudNodes, addsAPointCloudNodeBoundingItsPoints) {
 TEST(PointCloudNodes, selectBinsTheCloudsInViewWithTheirDistance) {
     Scene scene;
     PointCloudNodes clouds;
-    PointCloud cloud;
-    cloud.positions = {{-1, 0, 0}, {1, 0, 0}};
-    cloud.colors.assign(2, glm::vec4(1.0f));
-    cloud.pointSize = 0.1f;
+    const PointCloud cloud = twoPoints();
     const auto cams = ldiCamerasAround(Sphere{{0, 0, 0}, 1.0f}, 1, 0.1f);
     const NodeId ahead = clouds.add(scene, scene.addTransform(scene.root(), glm::translate(glm::mat4(1.0f), {0, 0, -10})),
                                     buildLdis(cloud, cams));
