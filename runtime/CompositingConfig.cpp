@@ -116,9 +116,9 @@ void readCompositor(YamlMap& root, CompositorConfig& out) {
     c.choice("holdout", holdout, {"silhouette", "full"});
     out.holdout = holdout == "full" ? HoldoutMesh::Full : HoldoutMesh::Silhouette;
     std::string cache;
-    c.text("holdout_cache", cache);
-    if (cache == "none") out.holdoutCache = "none";
-    else if (!cache.empty()) c.path("holdout_cache", out.holdoutCache, false);
+    c.text("bake_cache", cache);
+    if (cache == "none") out.bakeCache = "none";
+    else if (!cache.empty()) c.path("bake_cache", out.bakeCache, false);
     std::string backdrop = "video";
     c.choice("backdrop", backdrop, {"video", "color"});
     out.backdropVideo = backdrop == "video";

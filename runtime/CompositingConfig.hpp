@@ -32,11 +32,11 @@ struct CompositorConfig {
     // either side of the camera position, in each axis.
     float holdoutRegionMetres = 0.5f;
     HoldoutMesh holdout = HoldoutMesh::Silhouette;
-    // Baked silhouette meshes are kept here and loaded at the next start
-    // when they match the model and region. Empty: systemd's cache
-    // folder for a service, else the user's (~/.cache/arcomp); "none": bake
-    // at every start.
-    std::filesystem::path holdoutCache;
+    // Baked silhouette meshes and generated LOD levels are kept here and
+    // loaded at the next start when they match the model (and region).
+    // Empty: systemd's cache folder for a service, else the user's
+    // (~/.cache/arcomp); "none": bake at every start.
+    std::filesystem::path bakeCache;
     // What lies behind everything: the video frame itself, or a colour
     // (studio chroma key, where the backing must not show).
     bool backdropVideo = true;

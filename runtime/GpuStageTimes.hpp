@@ -13,7 +13,7 @@
 //   GpuStageTimes gpu(kStageCount);   // a context must be current
 //   // each frame:
 //   gpu.collect();                    // ms(s) now holds the previous frame
-//   gpu.begin(kRender); renderer.draw(...); gpu.end(kRender);
+//   gpu.time(kRender, [&] { renderer.draw(...); });   // or begin(kRender) ... end(kRender)
 //   gpu.endFrame();
 //
 // Stages must not overlap: GL allows one TIME_ELAPSED query at a time.
@@ -35,6 +35,12 @@ public:
 
     void begin(int stage);
     void end(int stage);
+    template <class Stage>
+    void time(int stage, Stage&& run) {
+        begin(stage);
+        run();
+        end(stage);
+    }
     // Closes this frame's set of queries; the next frame uses the other set.
     void endFrame();
     // Reads the previous frame's results into ms(). Call once a frame,

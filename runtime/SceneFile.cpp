@@ -1,10 +1,12 @@
 #include "runtime/SceneFile.hpp"
 
+#include "graph/io/LodFile.hpp"
 #include "graph/lod/LodLevels.hpp"
 #include "graph/io/ModelLoader.hpp"
 #include "runtime/GroupingSetup.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 
@@ -29,14 +31,12 @@ LodNode lodSettings(const ObjectConfig& o) {
 
 } // namespace
 
-void buildScene(const StationConfig& cfg, Scene& scene, std::vector<std::string>& warnings, GroupingNodes* grouping,
-                LodTable* lods, std::vector<ObjectMotion>* motions, PointCloudNodes* clouds) {
-    GroupingNodes ownGrouping;
-    LodTable ownLods;
-    LodTable& lodTable = lods ? *lods : ownLods;
-    std::vector<ObjectMotion> ownMotions;
-    std::vector<ObjectMotion>& moving = motions ? *motions : ownMotions;
-    const NodeId groupingNode = beginGrouping(cfg.grouping, scene, grouping ? *grouping : ownGrouping);
+BakeTally buildScene(const StationConfig& cfg, World& world, std::vector<std::string>& warnings,
+                     const fs::path& bakeCache) {
+    BakeTally levels;
+    Scene& scene = world.scene;
+    LodTable& lodTable = world.lods;
+    const NodeId groupingNode = beginGrouping(cfg.grouping, scene, world.grouping);
     const NodeId objectParent = groupingNode != kNoNode && cfg.grouping.objects ? groupingNode : scene.root();
     for (const ObjectConfig& o : cfg.objects) {
         glm::mat4 m = glm::translate(glm::mat4(1.0f), o.position);
@@ -45,11 +45,20 @@ void buildScene(const StationConfig& cfg, Scene& scene, std::vector<std::string>
         m = glm::rotate(m, glm::radians(o.rotationDegrees.x), {1, 0, 0});
         m = glm::scale(m, o.scale);
         const NodeId place = scene.addTransform(objectParent, m, o.name);
-        if (glm::length(o.velocity) > 0.0f) moving.push_back({.node = place, .rest = m, .velocity = o.velocity, .range = o.rangeMetres});
+        if (glm::length(o.velocity) > 0.0f) world.motions.push_back({.node = place, .rest = m, .velocity = o.velocity, .range = o.rangeMetres});
         MeshPlacer placeMesh;
         if (!o.lodRatios.empty())
-            placeMesh = [&scene, &lodTable, &o](NodeId parent, MeshPart part) {
-                addGeneratedLod(scene, lodTable, parent, part, o.lodRatios, lodSettings(o));
+            placeMesh = [&](NodeId parent, MeshPart part) {
+                if (bakeCache.empty()) {
+                    addGeneratedLod(scene, lodTable, parent, part, o.lodRatios, lodSettings(o));
+                    ++levels.baked;
+                    return;
+                }
+                LoadedOrSimplified l = loadOrSimplifyLevels(bakeCache / bakeCacheFileName(cfg.file, o.name, part.geometry, ".lod"),
+                                                            scene.geometry(part.geometry), o.lodRatios);
+                ++(l.loaded ? levels.loaded : levels.baked);
+                if (!l.loaded) spdlog::info("levels of '{}': {}", o.name, l.note);
+                addLodLevels(scene, lodTable, parent, part, std::move(l.levels), lodSettings(o));
             };
         if (!o.model.empty()) {
             try {
@@ -70,19 +79,19 @@ void buildScene(const StationConfig& cfg, Scene& scene, std::vector<std::string>
         if (placeMesh) placeMesh(place, part);
         else scene.addMesh(place, part, o.name);
     }
-    GroupingNodes& groupingTable = grouping ? *grouping : ownGrouping;
-    finishGrouping(cfg.grouping, scene, groupingNode, groupingTable, lodTable);
+    finishGrouping(cfg.grouping, scene, groupingNode, world.grouping, lodTable);
     // A mover inside the grouping node rebuilds only its own branch.
     if (groupingNode != kNoNode && objectParent == groupingNode) {
-        const std::vector<NodeId>& objects = groupingTable.nodes[scene.payload(groupingNode)].objects;
-        for (ObjectMotion& motion : moving) {
+        const std::vector<NodeId>& objects = world.grouping.nodes[scene.payload(groupingNode)].objects;
+        for (ObjectMotion& motion : world.motions) {
             const auto it = std::find(objects.begin(), objects.end(), motion.node);
             if (it == objects.end()) continue;
             motion.groupingNode = groupingNode;
             motion.groupingObject = static_cast<std::uint32_t>(it - objects.begin());
         }
     }
-    if (clouds) addPointClouds(cfg.pointClouds, cfg.file, scene, *clouds, warnings);
+    addPointClouds(cfg.pointClouds, cfg.file, scene, world.pointClouds, warnings);
+    return levels;
 }
 
 SceneFile loadSceneFile(const fs::path& file) {
@@ -91,12 +100,12 @@ SceneFile loadSceneFile(const fs::path& file) {
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
     if (ext == ".yaml" || ext == ".yml") {
         const StationConfig cfg = loadStationConfig(file);
-        buildScene(cfg, out.scene, out.warnings, &out.grouping, &out.lods, nullptr, &out.pointClouds);
+        buildScene(cfg, out.world, out.warnings);
         if (cfg.camera.given) out.camera = cameraView(cfg.camera);
         out.background = cfg.render.background;
         return out;
     }
-    const LoadedModel loaded = loadModel(file, out.scene, out.scene.root());
+    const LoadedModel loaded = loadModel(file, out.world.scene, out.world.scene.root());
     out.warnings = loaded.warnings;
     out.background = glm::vec4(0.0f);
     return out;

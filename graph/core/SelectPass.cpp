@@ -10,6 +10,7 @@ namespace arcomp {
 namespace {
 
 struct SelectPass {
+    World& world;
     const Scene& scene;
     const View& view;
     const SelectSettings& settings;
@@ -37,7 +38,7 @@ struct SelectPass {
         }
         switch (scene.kind(node)) {
         case NodeKind::Mesh:
-            if (settings.holdouts && settings.holdouts->has(node))
+            if (world.holdouts.has(node))
                 out.holdouts.push_back({static_cast<std::uint32_t>(out.items.size()), glm::dot(bound.center - view.eye, view.forward)});
             out.items.push_back({node, scene.meshPart(node), glm::length(bound.center - view.eye),
                                  view.projectedArea(bound), level, settings.shading, fade});
@@ -49,14 +50,15 @@ struct SelectPass {
             visitLod(pos, node, bound, inside, fade);
             return;  // its children are levels: only the chosen ones are visited
         case NodeKind::Grouping:
-            if (settings.grouping && scene.payload(node) < settings.grouping->nodes.size()) {
+            if (settings.grouping) {
                 visitGrouping(pos, node, inside, level, fade);
                 return;  // its children are reached through the grouping tree
             }
             break;
         case NodeKind::SilhouetteRegion:
-            if (settings.silhouettes && scene.payload(node) < settings.silhouettes->nodes.size()) {
-                const SilhouetteNode& s = settings.silhouettes->nodes[scene.payload(node)];
+            {
+                ARCOMP_CHECK(scene.payload(node) < world.silhouettes.nodes.size(), "a silhouette node has its entry in world.silhouettes");
+                const SilhouetteNode& s = world.silhouettes.nodes[scene.payload(node)];
                 const glm::vec3 localEye = glm::vec3(glm::inverse(scene.world(node)) * glm::vec4(view.eye, 1.0f));
                 const SilhouetteRange r = s.rangeFor(localEye);
                 out.items.push_back({node, s.part, glm::length(bound.center - view.eye), view.projectedArea(bound), level,
@@ -70,12 +72,13 @@ struct SelectPass {
     }
 
     void visitLod(std::uint32_t pos, NodeId node, const Sphere& bound, bool inside, float fade) {
-        if (settings.lod == nullptr) {
+        if (!settings.lod) {
             visitLevel(pos, 0, inside, fade);
             return;
         }
-        LodTable& lods = *settings.lod;
+        LodTable& lods = world.lods;
         const std::uint32_t i = scene.payload(node);
+        ARCOMP_CHECK(i < lods.size(), "an LOD node has its entry in world.lods");
         const LodNode& n = lods.node(i);
         LodInputs in;
         in.distance = glm::length(bound.center - view.eye);
@@ -94,7 +97,8 @@ struct SelectPass {
     // otherwise its two children are tried; an object is visited as a
     // subtree, so its own LOD node picks its level.
     void visitGrouping(std::uint32_t pos, NodeId node, bool inside, std::uint8_t level, float fade) {
-        GroupingNode& g = settings.grouping->nodes[scene.payload(node)];
+        ARCOMP_CHECK(scene.payload(node) < world.grouping.nodes.size(), "a grouping node has its entry in world.grouping");
+        GroupingNode& g = world.grouping.nodes[scene.payload(node)];
         const GroupingTree& tree = g.tree;
         if (tree.objectCount() != g.objects.size()) return;  // not built: draws nothing rather than guess
         refreshObjectPositions(pos, g);
@@ -169,11 +173,12 @@ struct SelectPass {
 
 } // namespace
 
-void select(const Scene& scene, const View& view, const SelectSettings& settings, DrawList& out) {
+void select(World& world, const View& view, const SelectSettings& settings, DrawList& out) {
+    const Scene& scene = world.scene;
     out.clear();
     if (scene.order().empty()) return;
     const glm::vec3 gaze = glm::length(settings.gaze) > 0.0f ? glm::normalize(settings.gaze) : view.forward;
-    SelectPass pass{scene,          view,           settings,          out, Frustum::fromViewProjection(view.viewProjection()),
+    SelectPass pass{world,         scene,         view, settings, out, Frustum::fromViewProjection(view.viewProjection()),
                     scene.order(), scene.subtreeEnd(), view.pixelScale(), gaze};
     pass.visit(0, false, 0, 1.0f);
 }

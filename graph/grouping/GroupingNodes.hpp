@@ -8,12 +8,11 @@
 // tried; an object reached on its own is visited as a normal subtree, so
 // its LOD node picks its level.
 //
-//   GroupingNodes table;
-//   NodeId g = addGroupingNode(scene, scene.root(), table);
+//   NodeId g = addGroupingNode(world.scene, world.scene.root(), world.grouping);
 //   ... add each object's subtree under g ...
-//   scene.update();
-//   buildGrouping(scene, g, table, params);        // at load time
-//   select(scene, view, {.grouping = &table}, list);
+//   world.scene.update();
+//   buildGrouping(world.scene, g, world.grouping, params);   // at load time
+//   select(world, view, {}, list);                           // graph/core/World.hpp
 //
 // Proxies (selectable per node): the paper's box in the group's mean colour,
 // alpha-blended, or a camera-facing billboard with an image of the members

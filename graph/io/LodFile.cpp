@@ -127,4 +127,42 @@ std::vector<LodLevel> readLodFile(const std::filesystem::path& file) {
     return parseLodFile(bytes, file.string());
 }
 
+namespace {
+
+bool madeFrom(const std::vector<LodLevel>& levels, const Geometry& mesh, std::span<const float> ratios) {
+    if (levels.size() != ratios.size()) return false;
+    for (std::size_t i = 0; i < levels.size(); ++i)
+        if (levels[i].ratio != ratios[i]) return false;
+    const Geometry& full = levels[0].geometry;
+    return full.positions == mesh.positions && full.indices == mesh.indices;
+}
+
+} // namespace
+
+LoadedOrSimplified loadOrSimplifyLevels(const std::filesystem::path& baked, const Geometry& mesh,
+                                        std::span<const float> ratios) {
+    if (ratios.empty() || ratios[0] != 1.0f) return {simplifyLevels(mesh, ratios), false, "no ratio 1 first: not cached"};
+    if (!mesh.colors.empty()) return {simplifyLevels(mesh, ratios), false, "vertex colours, which .lod does not hold: not cached"};
+    std::string note;
+    std::error_code ec;
+    if (std::filesystem::exists(baked, ec)) {
+        try {
+            std::vector<LodLevel> levels = readLodFile(baked);
+            if (madeFrom(levels, mesh, ratios)) return {std::move(levels), true, baked.string() + ": loaded"};
+            note = baked.string() + ": made for another mesh or other ratios; simplified again";
+        } catch (const ModelError& e) {
+            note = std::string(e.what()) + "; simplified again";
+        }
+    } else {
+        note = baked.string() + ": not found; simplified";
+    }
+    std::vector<LodLevel> levels = simplifyLevels(mesh, ratios);
+    try {
+        writeLodFile(baked, levels);
+    } catch (const std::exception& e) {
+        note += std::string("; not saved: ") + e.what();
+    }
+    return {std::move(levels), false, std::move(note)};
+}
+
 } // namespace arcomp

@@ -28,4 +28,19 @@ std::vector<LodLevel> readLodFile(const std::filesystem::path& file);
 // The same check on bytes already in memory; `name` stands for the file in errors.
 std::vector<LodLevel> parseLodFile(std::span<const unsigned char> bytes, const std::string& name);
 
+// What a station does at load time with an object's generated levels: use
+// `baked` when it holds levels of these ratios made from exactly this mesh
+// (its ratio-1 level is the mesh itself); otherwise simplify, and write
+// `baked` for next time (a write failure is reported in `note`, the levels
+// are still returned). Without a ratio of 1 first there is nothing to know
+// the mesh by, and a mesh with vertex colours would lose them in the file:
+// such levels are simplified and not saved.
+struct LoadedOrSimplified {
+    std::vector<LodLevel> levels;
+    bool loaded = false;  // false: simplified now
+    std::string note;     // what happened and why, naming the file
+};
+LoadedOrSimplified loadOrSimplifyLevels(const std::filesystem::path& baked, const Geometry& mesh,
+                                        std::span<const float> ratios);
+
 } // namespace arcomp

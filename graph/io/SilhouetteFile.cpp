@@ -169,9 +169,9 @@ bool sameRegions(const std::vector<ViewRegion>& a, const std::vector<ViewRegion>
 
 } // namespace
 
-SilhouetteMesh loadOrBakeSilhouetteMesh(const std::filesystem::path& baked, std::span<const glm::vec3> positions,
-                                        std::span<const std::uint32_t> indices, const std::vector<ViewRegion>& regions,
-                                        std::string& note) {
+LoadedOrBaked loadOrBakeSilhouetteMesh(const std::filesystem::path& baked, std::span<const glm::vec3> positions,
+                                       std::span<const std::uint32_t> indices, const std::vector<ViewRegion>& regions) {
+    std::string note;
     std::error_code ec;
     if (std::filesystem::exists(baked, ec)) {
         try {
@@ -180,8 +180,7 @@ SilhouetteMesh loadOrBakeSilhouetteMesh(const std::filesystem::path& baked, std:
             const auto full = m.indicesOf(m.full);
             if (m.positions == w.positions && std::equal(full.begin(), full.end(), w.indices.begin(), w.indices.end()) &&
                 sameRegions(m.regions, regions)) {
-                note = baked.string() + ": loaded";
-                return m;
+                return {std::move(m), true, baked.string() + ": loaded"};
             }
             note = baked.string() + ": made for another mesh or other regions; baked again";
         } catch (const ModelError& e) {
@@ -196,7 +195,7 @@ SilhouetteMesh loadOrBakeSilhouetteMesh(const std::filesystem::path& baked, std:
     } catch (const std::exception& e) {
         note += std::string("; not saved: ") + e.what();
     }
-    return m;
+    return {std::move(m), false, std::move(note)};
 }
 
 } // namespace arcomp

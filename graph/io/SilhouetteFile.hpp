@@ -39,9 +39,13 @@ SilhouetteMesh readSilhouetteFile(const std::filesystem::path& file);
 // What a station does at load time: use `baked` when it holds exactly this
 // mesh (after welding) and these regions; otherwise bake, and write `baked`
 // for next time (a write failure is reported in `note`, the mesh is still
-// returned). `note` says which happened and why.
-SilhouetteMesh loadOrBakeSilhouetteMesh(const std::filesystem::path& baked, std::span<const glm::vec3> positions,
-                                        std::span<const std::uint32_t> indices, const std::vector<ViewRegion>& regions,
-                                        std::string& note);
+// returned).
+struct LoadedOrBaked {
+    SilhouetteMesh mesh;
+    bool loaded = false;  // false: baked now
+    std::string note;     // what happened and why, naming the file
+};
+LoadedOrBaked loadOrBakeSilhouetteMesh(const std::filesystem::path& baked, std::span<const glm::vec3> positions,
+                                       std::span<const std::uint32_t> indices, const std::vector<ViewRegion>& regions);
 
 } // namespace arcomp

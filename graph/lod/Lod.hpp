@@ -4,13 +4,12 @@
 // LodTable::choose() for the level in the same walk that culls, and visits
 // only that child (and, during a cross-fade, the level fading out).
 //
-//   LodTable lods;
 //   LodNode n;
 //   n.policy = LodPolicy::Distance;
 //   n.setThresholds({50.0f, 200.0f});           // [0,50) → 0, [50,200) → 1, beyond → 2
-//   NodeId lod = scene.addNode(parent, NodeKind::Lod, lods.add(n));
-//   scene.addMesh(lod, fine); scene.addMesh(lod, medium); scene.addMesh(lod, coarse);
-//   select(scene, view, {.lod = &lods, .gaze = gaze, .timeSeconds = t}, list);
+//   NodeId lod = world.scene.addNode(parent, NodeKind::Lod, world.lods.add(n));
+//   world.scene.addMesh(lod, fine); world.scene.addMesh(lod, medium); world.scene.addMesh(lod, coarse);
+//   select(world, view, {.gaze = gaze, .timeSeconds = t}, list);   // graph/core/World.hpp
 //
 // Policies, chosen per node: distance from the eye to the bound's centre (as
 // OpenSceneGraph's DISTANCE_FROM_EYE_POINT), projected diameter in pixels (as

@@ -66,12 +66,16 @@ std::vector<LodLevel> simplifyLevels(const Geometry& g, std::span<const float> r
 
 NodeId addGeneratedLod(Scene& scene, LodTable& lods, NodeId parent, MeshPart part, std::span<const float> ratios,
                        const LodNode& settings) {
-    ARCOMP_CHECK(settings.levelCount == ratios.size(), "one ratio per level");
+    return addLodLevels(scene, lods, parent, part, simplifyLevels(scene.geometry(part.geometry), ratios), settings);
+}
+
+NodeId addLodLevels(Scene& scene, LodTable& lods, NodeId parent, MeshPart part, std::vector<LodLevel> levels,
+                    const LodNode& settings) {
+    ARCOMP_CHECK(settings.levelCount == levels.size(), "one level per threshold band");
     const Geometry& source = scene.geometry(part.geometry);
     LodNode node = settings;
     node.center = source.bound.center;
     node.meanRadius = meanRadius(source.positions, source.bound.center);
-    std::vector<LodLevel> levels = simplifyLevels(source, ratios);
     const NodeId lod = scene.addNode(parent, NodeKind::Lod, lods.add(node));
     for (LodLevel& level : levels) {
         const std::uint32_t g = level.ratio == 1.0f ? part.geometry : scene.addGeometry(std::move(level.geometry));

@@ -37,5 +37,9 @@ std::vector<LodLevel> simplifyLevels(const Geometry& g, std::span<const float> r
 // per level under `parent`. settings' thresholds must match ratios.size().
 NodeId addGeneratedLod(Scene& scene, LodTable& lods, NodeId parent, MeshPart part, std::span<const float> ratios,
                        const LodNode& settings);
+// The same with levels made before (simplifyLevels, or read back from a
+// .lod file); a level of ratio 1 draws the part's own geometry.
+NodeId addLodLevels(Scene& scene, LodTable& lods, NodeId parent, MeshPart part, std::vector<LodLevel> levels,
+                    const LodNode& settings);
 
 } // namespace arcomp

@@ -6,24 +6,22 @@ namespace arcomp {
 
 ForestExperiment::ForestExperiment(ForestColouring colouring, const GroupingParams& params, glm::ivec2 viewport)
     : view(paperForestView(viewport)) {
-    forest = addPaperForest(scene, scene.root(), grouping, lods, colouring);
+    Scene& scene = world.scene;
+    forest = addPaperForest(scene, scene.root(), world.grouping, world.lods, colouring);
     scene.update();
-    buildGrouping(scene, forest.grouping, grouping, params);
+    buildGrouping(scene, forest.grouping, world.grouping, params);
 }
 
 const DrawList& ForestExperiment::select(ForestMode mode, float omegaT, GroupingProxy proxy) {
-    GroupingNode& g = grouping.nodes[scene.payload(forest.grouping)];
+    GroupingNode& g = world.grouping.nodes[world.scene.payload(forest.grouping)];
     g.omegaT = omegaT;
     g.proxy = proxy;
-    SelectSettings s;
-    s.lod = mode == ForestMode::Full ? nullptr : &lods;
-    s.grouping = mode == ForestMode::Grouped ? &grouping : nullptr;
-    arcomp::select(scene, view, s, list_);
+    arcomp::select(world, view, {.lod = mode != ForestMode::Full, .grouping = mode == ForestMode::Grouped}, list_);
     return list_;
 }
 
 std::size_t ForestExperiment::triangles(ForestMode mode, float omegaT) {
-    return drawnTriangles(scene, select(mode, omegaT));
+    return drawnTriangles(world.scene, select(mode, omegaT));
 }
 
 std::size_t drawnTriangles(const Scene& scene, const DrawList& list) {

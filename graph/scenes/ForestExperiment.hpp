@@ -7,6 +7,7 @@
 //   std::size_t n = mixed.triangles(ForestMode::Grouped, 0.011f);
 
 #include "graph/core/DrawList.hpp"
+#include "graph/core/World.hpp"
 #include "graph/scenes/PaperForest.hpp"
 
 namespace arcomp {
@@ -22,9 +23,7 @@ public:
     const DrawList& select(ForestMode mode, float omegaT, GroupingProxy proxy = GroupingProxy::Box);
     std::size_t triangles(ForestMode mode, float omegaT);
 
-    Scene scene;
-    GroupingNodes grouping;
-    LodTable lods;
+    World world;
     PaperForest forest;
     View view;
 

@@ -5,11 +5,10 @@
 // itself, so one renderer draws both and the holdout follows the CG node's
 // world matrix, its LOD level and the budget's choice of level.
 //
-//   HoldoutMeshes holdouts;
-//   holdouts.add(scene, meshNode, bakeSilhouetteMesh(positions, indices, regions), holdoutMaterial);
-//   select(scene, view, {.holdouts = &holdouts}, list);   // list.holdouts: CG items that have one
+//   world.holdouts.add(world.scene, meshNode, bakeSilhouetteMesh(positions, indices, regions), holdoutMaterial);
+//   select(world, view, {}, list);   // list.holdouts: CG items that have one
 //   // ... budget edits list.items ...
-//   DrawItem cut = holdouts.itemFor(scene, list.items[list.holdouts[0].cgItem], view);
+//   std::optional<DrawItem> cut = world.holdouts.itemFor(world.scene, list.items[list.holdouts[0].cgItem], view);
 //
 // An LOD node's levels are separate mesh nodes: each has its own entry, so
 // the holdout of a coarser level is that level's silhouette.

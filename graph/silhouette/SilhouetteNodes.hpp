@@ -5,9 +5,8 @@
 // The select pass picks the range of the region holding the eye, the full
 // mesh's range outside every region.
 //
-//   SilhouetteNodes table;
-//   NodeId n = addSilhouetteNode(scene, parent, table, mesh, material);
-//   select(scene, view, {.silhouettes = &table}, list);   // items carry firstIndex/indexCount
+//   NodeId n = addSilhouetteNode(world.scene, parent, world.silhouettes, mesh, material);
+//   select(world, view, {}, list);   // items carry firstIndex/indexCount
 
 #include "graph/core/Scene.hpp"
 #include "graph/silhouette/SilhouetteMesh.hpp"

@@ -23,7 +23,7 @@ TEST(ForestExperiment, treesHaveThePapersPolygonCounts) {
 
 TEST(ForestExperiment, redTreesNeverGroupWithGreenOnes) {
     ForestExperiment f(ForestColouring::Mixed);
-    const GroupingTree& tree = f.grouping.nodes[f.scene.payload(f.forest.grouping)].tree;
+    const GroupingTree& tree = f.world.grouping.nodes[f.world.scene.payload(f.forest.grouping)].tree;
     std::size_t greenGroups = 0;
     for (std::uint32_t n = 0; n < tree.nodeCount(); ++n) {
         if (!tree.alive(n) || tree.isLeaf(n)) continue;
@@ -95,15 +95,15 @@ std::uint32_t topOf(const GroupingTree& t, std::uint32_t n) {
 
 TEST(ForestExperiment, aTreeCarriedAwayLeavesItsGroupAndIsDrawnOnItsOwn) {
     ForestExperiment f(ForestColouring::Green);
-    const GroupingTree& tree = f.grouping.nodes[f.scene.payload(f.forest.grouping)].tree;
+    const GroupingTree& tree = f.world.grouping.nodes[f.world.scene.payload(f.forest.grouping)].tree;
     ASSERT_EQ(tree.roots().size(), 1u);
     const std::size_t before = f.triangles(ForestMode::Grouped, 0.1f);
     EXPECT_EQ(before, 12u) << "one box";
     // Tree 0 is carried 10 m towards the viewer at 2 m/s.
-    f.scene.setLocal(f.forest.trees[0], glm::translate(f.scene.local(f.forest.trees[0]), {0.0f, 0.0f, 1000.0f}));
-    f.scene.update();
+    f.world.scene.setLocal(f.forest.trees[0], glm::translate(f.world.scene.local(f.forest.trees[0]), {0.0f, 0.0f, 1000.0f}));
+    f.world.scene.update();
     const MovedObject moved[] = {{0, {0.0f, 0.0f, 200.0f}}};
-    const GroupingRebuildStats s = regroupMoved(f.scene, f.forest.grouping, f.grouping, moved);
+    const GroupingRebuildStats s = regroupMoved(f.world.scene, f.forest.grouping, f.world.grouping, moved);
     EXPECT_GT(s.dissolved, 0u);
     EXPECT_EQ(tree.parent(0), kNoGroupingNode);
     EXPECT_EQ(tree.objectsUnder(topOf(tree, 1)).size(), kForestTrees - 1) << "the others stay one group";
@@ -113,15 +113,15 @@ TEST(ForestExperiment, aTreeCarriedAwayLeavesItsGroupAndIsDrawnOnItsOwn) {
 
 TEST(ForestExperiment, treesCarriedTogetherStayGrouped) {
     ForestExperiment f(ForestColouring::Green);
-    const GroupingTree& tree = f.grouping.nodes[f.scene.payload(f.forest.grouping)].tree;
+    const GroupingTree& tree = f.world.grouping.nodes[f.world.scene.payload(f.forest.grouping)].tree;
     const std::uint32_t root = tree.roots()[0];
     std::vector<MovedObject> moved;
     for (std::uint32_t i = 0; i < kForestTrees; ++i) {
-        f.scene.setLocal(f.forest.trees[i], glm::translate(f.scene.local(f.forest.trees[i]), {50.0f, 0.0f, 0.0f}));
+        f.world.scene.setLocal(f.forest.trees[i], glm::translate(f.world.scene.local(f.forest.trees[i]), {50.0f, 0.0f, 0.0f}));
         moved.push_back({i, {150.0f, 0.0f, 0.0f}});
     }
-    f.scene.update();
-    const GroupingRebuildStats s = regroupMoved(f.scene, f.forest.grouping, f.grouping, moved);
+    f.world.scene.update();
+    const GroupingRebuildStats s = regroupMoved(f.world.scene, f.forest.grouping, f.world.grouping, moved);
     EXPECT_EQ(s.dissolved, 0u) << "common motion: Ff = 0";
     ASSERT_EQ(tree.roots().size(), 1u);
     EXPECT_EQ(tree.roots()[0], root);
@@ -135,7 +135,7 @@ namespace {
 
 TEST(ForestExperiment, anImpostorIsUsedOnlyWhileItsGroupStaysWhereItWasBaked) {
     ForestExperiment f(ForestColouring::Green);
-    GroupingNode& g = f.grouping.nodes[f.scene.payload(f.forest.grouping)];
+    GroupingNode& g = f.world.grouping.nodes[f.world.scene.payload(f.forest.grouping)];
     const std::uint32_t root = g.tree.roots()[0];
     // As a baker would leave it: a material and the sphere it was made around.
     g.impostorMaterial.assign(g.tree.nodeCount(), GroupingNode::kNoImpostor);
@@ -150,11 +150,11 @@ TEST(ForestExperiment, anImpostorIsUsedOnlyWhileItsGroupStaysWhereItWasBaked) {
     EXPECT_EQ(proxyGeometry(), g.quadGeometry);
     std::vector<MovedObject> moved;
     for (std::uint32_t i = 0; i < kForestTrees; ++i) {
-        f.scene.setLocal(f.forest.trees[i], glm::translate(f.scene.local(f.forest.trees[i]), {400.0f, 0.0f, 0.0f}));
+        f.world.scene.setLocal(f.forest.trees[i], glm::translate(f.world.scene.local(f.forest.trees[i]), {400.0f, 0.0f, 0.0f}));
         moved.push_back({i, {100.0f, 0.0f, 0.0f}});
     }
-    f.scene.update();
-    regroupMoved(f.scene, f.forest.grouping, f.grouping, moved);
+    f.world.scene.update();
+    regroupMoved(f.world.scene, f.forest.grouping, f.world.grouping, moved);
     EXPECT_EQ(proxyGeometry(), g.boxPart.geometry) << "moved since baking: the box stands in";
 }
 

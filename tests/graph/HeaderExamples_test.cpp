@@ -4,6 +4,8 @@
 
 #include "graph/budget/RecursiveLeastSquares.hpp"
 #include "graph/core/Scene.hpp"
+#include "graph/core/SelectPass.hpp"
+#include "graph/core/World.hpp"
 #include "graph/lod/GazeAcuity.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -46,4 +48,24 @@ TEST(HeaderExamples, recursiveLeastSquares) {
     }
     double a = rls.parameters()[0];
     EXPECT_NEAR(a, 0.002, 1e-4);
+}
+
+TEST(HeaderExamples, world) {
+    LodNode settings;
+    settings.levelCount = 2;
+    settings.thresholds[0] = 10.0f;
+    const View view = View::lookAt({0, 0, 20}, {0, 0, 0}, {0, 1, 0}, 60.0f, {64, 64});
+    const double t = 0.0;
+    // graph/core/World.hpp
+    World world;
+    const MeshPart fine{world.scene.addGeometry(makeUvSphere(1.0f, 32, 16)), world.scene.addMaterial({})};
+    const MeshPart coarse{world.scene.addGeometry(makeUvSphere(1.0f, 8, 4)), fine.material};
+    const NodeId lod = world.scene.addNode(world.scene.root(), NodeKind::Lod, world.lods.add(settings));
+    world.scene.addMesh(lod, fine);
+    world.scene.addMesh(lod, coarse);
+    world.scene.update();
+    DrawList list;
+    select(world, view, {.shading = Shading::Phong, .timeSeconds = t}, list);
+    ASSERT_EQ(list.items.size(), 1u);
+    EXPECT_EQ(list.items[0].level, 1);  // 20 away, past the threshold at 10
 }

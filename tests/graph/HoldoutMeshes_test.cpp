@@ -12,8 +12,9 @@ namespace {
 // A sphere mesh node 10 units along x with a holdout whose one region is a
 // box of eyes between 3 and 4 units in front of it (in its local space).
 struct OneHoldout {
-    Scene scene;
-    HoldoutMeshes holdouts;
+    World world;
+    Scene& scene = world.scene;
+    HoldoutMeshes& holdouts = world.holdouts;
     SilhouetteMesh silhouette;
     NodeId place, mesh;
     OneHoldout() {
@@ -38,15 +39,17 @@ TEST(HoldoutMeshes, selectPutsTheCgItemInTheHoldoutBinWithItsDepth) {
                     f.scene.meshPart(f.mesh));
     f.scene.update();
     DrawList list;
-    select(f.scene, lookingAtX10From(6.0f), {.holdouts = &f.holdouts}, list);
+    select(f.world, lookingAtX10From(6.0f), {}, list);
     ASSERT_EQ(list.items.size(), 2u);
     ASSERT_EQ(list.holdouts.size(), 1u);
     const DrawItem& cg = list.items[list.holdouts[0].cgItem];
     EXPECT_EQ(cg.node, f.mesh);
     EXPECT_NEAR(list.holdouts[0].depth, 6.0f, 1e-4f);  // along the view axis to the sphere's centre
     EXPECT_NE(list.items[1 - list.holdouts[0].cgItem].node, f.mesh);
-    // Without the table the bin stays empty: the CG is drawn all the same.
-    select(f.scene, lookingAtX10From(6.0f), {}, list);
+    // A world without holdouts leaves the bin empty: the CG is drawn all the same.
+    World plain;
+    plain.scene = f.scene;
+    select(plain, lookingAtX10From(6.0f), {}, list);
     EXPECT_EQ(list.items.size(), 2u);
     EXPECT_TRUE(list.holdouts.empty());
 }
@@ -56,7 +59,7 @@ TEST(HoldoutMeshes, itemForDrawsTheRegionsListFromInsideAndTheFullMeshFromOutsid
     DrawList list;
     for (const float z : {3.5f, 8.0f}) {
         const View view = lookingAtX10From(z);
-        select(f.scene, view, {.holdouts = &f.holdouts}, list);
+        select(f.world, view, {}, list);
         ASSERT_EQ(list.holdouts.size(), 1u);
         const std::optional<DrawItem> cut = f.holdouts.itemFor(f.scene, list.items[list.holdouts[0].cgItem], view);
         ASSERT_TRUE(cut);
@@ -71,13 +74,14 @@ TEST(HoldoutMeshes, itemForDrawsTheRegionsListFromInsideAndTheFullMeshFromOutsid
 }
 
 TEST(HoldoutMeshes, eachLodLevelHasItsOwnHoldoutAndTheChosenOneIsBinned) {
-    Scene scene;
-    LodTable lods;
+    World world;
+    Scene& scene = world.scene;
+    LodTable& lods = world.lods;
     LodNode node;
     node.levelCount = 2;
     node.thresholds[0] = 20.0f;  // level 1 beyond 20 units
     const NodeId lod = scene.addNode(scene.root(), NodeKind::Lod, lods.add(node));
-    HoldoutMeshes holdouts;
+    HoldoutMeshes& holdouts = world.holdouts;
     const std::uint32_t material = scene.addMaterial({});
     std::vector<NodeId> levelNodes;
     std::vector<SilhouetteMesh> silhouettes;
@@ -91,7 +95,7 @@ TEST(HoldoutMeshes, eachLodLevelHasItsOwnHoldoutAndTheChosenOneIsBinned) {
     DrawList list;
     for (const auto& [distance, level] : {std::pair{5.0f, 0}, std::pair{40.0f, 1}}) {
         const View view = View::lookAt({0, 0, distance}, {0, 0, 0}, {0, 1, 0}, 60.0f, {64, 64});
-        select(scene, view, {.lod = &lods, .holdouts = &holdouts}, list);
+        select(world, view, {}, list);
         ASSERT_EQ(list.holdouts.size(), 1u) << distance;
         const DrawItem& cg = list.items[list.holdouts[0].cgItem];
         EXPECT_EQ(cg.node, levelNodes[static_cast<std::size_t>(level)]) << distance;

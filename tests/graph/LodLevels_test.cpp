@@ -141,3 +141,32 @@ TEST(LodFile, mutatedBytesParseOrThrowModelError) {
         }
     }
 }
+
+TEST(LodFile, loadOrSimplifyReusesLevelsMadeFromTheSameMeshAndRatios) {
+    const std::filesystem::path file =
+        std::filesystem::temp_directory_path() / ("lod_cache_test_" + std::to_string(::getpid()) + ".lod");
+    std::filesystem::remove(file);
+    const Geometry sphere = makeUvSphere(1.0f, 16, 8);
+    const LoadedOrSimplified first = loadOrSimplifyLevels(file, sphere, kRatios);
+    EXPECT_FALSE(first.loaded);
+    EXPECT_NE(first.note.find("not found"), std::string::npos) << first.note;
+    const LoadedOrSimplified second = loadOrSimplifyLevels(file, sphere, kRatios);
+    EXPECT_TRUE(second.loaded) << second.note;
+    ASSERT_EQ(second.levels.size(), first.levels.size());
+    for (std::size_t i = 0; i < first.levels.size(); ++i)
+        EXPECT_EQ(second.levels[i].geometry.indices, first.levels[i].geometry.indices);
+
+    const float otherRatios[2] = {1.0f, 0.5f};
+    const LoadedOrSimplified third = loadOrSimplifyLevels(file, sphere, otherRatios);
+    EXPECT_FALSE(third.loaded);
+    EXPECT_NE(third.note.find("other ratios"), std::string::npos) << third.note;
+    EXPECT_EQ(third.levels.size(), 2u);
+    // The file now holds the other ratios' levels, made from the sphere, not this one.
+    const LoadedOrSimplified otherMesh = loadOrSimplifyLevels(file, makeUvSphere(1.0f, 12, 6), otherRatios);
+    EXPECT_FALSE(otherMesh.loaded);
+    std::ofstream(file, std::ios::trunc) << "not a lod file";
+    const LoadedOrSimplified damaged = loadOrSimplifyLevels(file, sphere, kRatios);
+    EXPECT_FALSE(damaged.loaded);
+    EXPECT_EQ(damaged.levels.size(), 3u);
+    std::filesystem::remove(file);
+}

@@ -13,8 +13,9 @@ using namespace arcomp;
 namespace {
 
 struct LodRow {
-    Scene scene;
-    LodTable lods;
+    World world;
+    Scene& scene = world.scene;
+    LodTable& lods = world.lods;
     std::vector<NodeId> lodNodes;
     std::vector<glm::vec3> positions;
 };
@@ -52,7 +53,7 @@ TEST(LodSelect, levelsFallOffAwayFromGazeAsK1Says) {
     const glm::vec3 gaze = glm::normalize(row.positions.front());  // at the leftmost object
 
     DrawList list;
-    select(row.scene, camera, {.lod = &row.lods, .gaze = gaze, .timeSeconds = 0.0}, list);
+    select(row.world, camera, {.gaze = gaze, .timeSeconds = 0.0}, list);
 
     ASSERT_EQ(list.items.size(), row.positions.size());  // one level per object, all in view
     std::vector<std::uint8_t> levels;
@@ -74,7 +75,7 @@ TEST(LodSelect, onlyChosenLevelIsVisited) {
     LodRow row;
     buildRow(row, node);
     DrawList list;
-    select(row.scene, camera, {.lod = &row.lods}, list);
+    select(row.world, camera, {}, list);
     // root + per object: transform, LOD node, one of three meshes.
     EXPECT_EQ(list.nodesVisited, 1 + 3 * row.positions.size());
     for (const DrawItem& item : list.items) EXPECT_EQ(item.level, 0);
@@ -89,13 +90,13 @@ TEST(LodSelect, fastMovingObjectDropsToCoarseLevel) {
     buildRow(row, node);
     const glm::vec3 gaze = glm::normalize(row.positions[5]);  // the middle object, at x = 0
     DrawList list;
-    select(row.scene, camera, {.lod = &row.lods, .gaze = gaze, .timeSeconds = 0.0}, list);
+    select(row.world, camera, {.gaze = gaze, .timeSeconds = 0.0}, list);
     EXPECT_EQ(list.items[5].level, 0);
     // Move the gazed-at object 2 units sideways within 1/60 s: far beyond c2.
     const NodeId transform = row.scene.parent(row.lodNodes[5]);
     row.scene.setLocal(transform, glm::translate(glm::mat4(1.0f), row.positions[5] + glm::vec3(2, 0, 0)));
     row.scene.update();
-    select(row.scene, camera, {.lod = &row.lods, .gaze = gaze, .timeSeconds = 1.0 / 60.0}, list);
+    select(row.world, camera, {.gaze = gaze, .timeSeconds = 1.0 / 60.0}, list);
     const auto moved = std::find_if(list.items.begin(), list.items.end(), [&](const DrawItem& i) {
         return row.scene.parent(i.node) == row.lodNodes[5];
     });
@@ -111,10 +112,10 @@ TEST(LodSelect, crossFadeListsBothLevelsWithWeightsSummingToOne) {
     LodRow row;
     buildRow(row, node);
     DrawList list;
-    select(row.scene, camera, {.lod = &row.lods, .timeSeconds = 0.0}, list);
+    select(row.world, camera, {.timeSeconds = 0.0}, list);
     const View back = View::lookAt({0, 0, 10}, {0, 0, -1}, {0, 1, 0}, 60.0f, {1280, 720});
-    select(row.scene, back, {.lod = &row.lods, .timeSeconds = 0.1}, list);
-    select(row.scene, back, {.lod = &row.lods, .timeSeconds = 0.35}, list);
+    select(row.world, back, {.timeSeconds = 0.1}, list);
+    select(row.world, back, {.timeSeconds = 0.35}, list);
     // Every object went from under 30 away to at least 30: both levels listed at half weight.
     ASSERT_EQ(list.items.size(), 2 * row.positions.size());
     for (std::size_t k = 0; k < list.items.size(); k += 2) {
@@ -125,13 +126,16 @@ TEST(LodSelect, crossFadeListsBothLevelsWithWeightsSummingToOne) {
     }
 }
 
-TEST(LodSelect, withoutLodTableFinestLevelIsShown) {
+TEST(LodSelect, withLodOffTheFinestLevelIsShown) {
     LodNode node;
-    node.setThresholds({1.0f, 2.0f});
+    node.setThresholds({1.0f, 2.0f});  // by distance: every object, 20 away, is past both
     LodRow row;
     buildRow(row, node);
     DrawList list;
-    select(row.scene, camera, {}, list);
+    select(row.world, camera, {.lod = false}, list);
     ASSERT_EQ(list.items.size(), row.positions.size());
     for (const DrawItem& item : list.items) EXPECT_EQ(item.level, 0);
+    select(row.world, camera, {}, list);
+    ASSERT_EQ(list.items.size(), row.positions.size());
+    for (const DrawItem& item : list.items) EXPECT_EQ(item.level, 2);
 }

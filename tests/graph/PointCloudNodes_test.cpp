@@ -35,8 +35,9 @@ TEST(PointCloudNodes, addsAPointCloudNodeBoundingItsPoints) {
 }
 
 TEST(PointCloudNodes, selectBinsTheCloudsInViewWithTheirDistance) {
-    Scene scene;
-    PointCloudNodes clouds;
+    World world;
+    Scene& scene = world.scene;
+    PointCloudNodes& clouds = world.pointClouds;
     const PointCloud cloud = twoPoints();
     const auto cams = ldiCamerasAround(Sphere{{0, 0, 0}, 1.0f}, 1, 0.1f);
     const NodeId ahead = clouds.add(scene, scene.addTransform(scene.root(), glm::translate(glm::mat4(1.0f), {0, 0, -10})),
@@ -44,7 +45,7 @@ TEST(PointCloudNodes, selectBinsTheCloudsInViewWithTheirDistance) {
     clouds.add(scene, scene.addTransform(scene.root(), glm::translate(glm::mat4(1.0f), {0, 0, 10})), buildLdis(cloud, cams));
     scene.update();
     DrawList list;
-    select(scene, View::lookAt({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60.0f, {64, 64}), {}, list);
+    select(world, View::lookAt({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60.0f, {64, 64}), {}, list);
     ASSERT_EQ(list.pointClouds.size(), 1u) << "the cloud behind the eye is culled";
     EXPECT_EQ(list.pointClouds[0].node, ahead);
     EXPECT_NEAR(list.pointClouds[0].viewDistance, 10.0f, 1e-4f);

@@ -8,7 +8,8 @@ using namespace arcomp;
 
 namespace {
 struct Fixture {
-    Scene scene;
+    World world;
+    Scene& scene = world.scene;
     std::uint32_t geometry, material;
     Fixture() {
         geometry = scene.addGeometry(makeBox({1, 1, 1}));
@@ -78,7 +79,7 @@ TEST(SelectPass, culledSubtreesAreSkippedAndVisibleMeshesListed) {
     f.scene.update();
     const View view = View::lookAt({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60, {640, 480});
     DrawList list;
-    select(f.scene, view, {.shading = Shading::Flat}, list);
+    select(f.world, view, {.shading = Shading::Flat}, list);
     ASSERT_EQ(list.items.size(), 3u);
     for (const DrawItem& item : list.items) {
         EXPECT_LT(f.scene.worldBound(item.node).center.z, 0.0f);

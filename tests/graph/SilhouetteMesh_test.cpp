@@ -157,19 +157,20 @@ TEST(SilhouetteNodes, selectPassDrawsTheRangeOfTheRegionHoldingTheEye) {
     const Geometry sphere = makeUvSphere(1.0f, 16, 8);
     const SilhouetteMesh m = bakeSilhouetteMesh(sphere.positions, sphere.indices,
                                                 {ViewRegion::fromBox({{-0.5f, -0.5f, 3}, {0.5f, 0.5f, 4}})});
-    Scene scene;
-    SilhouetteNodes table;
+    World world;
+    Scene& scene = world.scene;
+    SilhouetteNodes& table = world.silhouettes;
     // The node sits 10 units along x: regions are in its local space.
     const NodeId t = scene.addTransform(scene.root(), glm::mat4{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 10, 0, 0, 1});
     const NodeId n = addSilhouetteNode(scene, t, table, m, scene.addMaterial({}));
     scene.update();
     DrawList list;
-    select(scene, View::lookAt({10, 0, 3.5f}, {10, 0, 0}, {0, 1, 0}, 60.0f, {64, 64}), {.silhouettes = &table}, list);
+    select(world, View::lookAt({10, 0, 3.5f}, {10, 0, 0}, {0, 1, 0}, 60.0f, {64, 64}), {}, list);
     ASSERT_EQ(list.items.size(), 1u);
     EXPECT_EQ(list.items[0].node, n);
     EXPECT_EQ(list.items[0].firstIndex, m.ranges[0].firstIndex);
     EXPECT_EQ(list.items[0].indexCount, m.ranges[0].indexCount);
-    select(scene, View::lookAt({10, 0, 8}, {10, 0, 0}, {0, 1, 0}, 60.0f, {64, 64}), {.silhouettes = &table}, list);
+    select(world, View::lookAt({10, 0, 8}, {10, 0, 0}, {0, 1, 0}, 60.0f, {64, 64}), {}, list);
     ASSERT_EQ(list.items.size(), 1u);
     EXPECT_EQ(list.items[0].firstIndex, m.full.firstIndex);
     EXPECT_EQ(list.items[0].indexCount, m.full.indexCount);

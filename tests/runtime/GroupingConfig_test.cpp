@@ -28,8 +28,8 @@ TEST(GroupingConfig, absentSectionGroupsNothing) {
     const StationConfig cfg = loadStationConfig(dir.write("a.yaml", kScene));
     EXPECT_FALSE(cfg.grouping.enabled);
     SceneFile f = loadSceneFile(dir.write("b.yaml", kScene));
-    EXPECT_TRUE(f.grouping.nodes.empty());
-    for (NodeId n = 0; n < f.scene.nodeCount(); ++n) EXPECT_NE(f.scene.kind(n), NodeKind::Grouping);
+    EXPECT_TRUE(f.world.grouping.nodes.empty());
+    for (NodeId n = 0; n < f.world.scene.nodeCount(); ++n) EXPECT_NE(f.world.scene.kind(n), NodeKind::Grouping);
 }
 
 TEST(GroupingConfig, defaultsAreThePapersParameters) {
@@ -99,18 +99,18 @@ TEST(GroupingConfig, badValuesAreReportedWithTheirLine) {
 
 TEST(GroupingConfig, forestConfigBuildsTheGroupedForest) {
     SceneFile f = loadSceneFile(std::filesystem::path(ARCOMP_SOURCE_DIR) / "configs/forest-grouping.yaml");
-    ASSERT_EQ(f.grouping.nodes.size(), 1u);
-    const GroupingNode& g = f.grouping.nodes[0];
+    ASSERT_EQ(f.world.grouping.nodes.size(), 1u);
+    const GroupingNode& g = f.world.grouping.nodes[0];
     EXPECT_EQ(g.objects.size(), kForestTrees);
     EXPECT_EQ(g.omegaT, 0.011f);
     ASSERT_TRUE(f.camera.has_value());
-    f.scene.update();
+    f.world.scene.update();
     DrawList grouped, full;
-    select(f.scene, *f.camera, {.lod = &f.lods, .grouping = &f.grouping}, grouped);
-    select(f.scene, *f.camera, {}, full);
+    select(f.world, *f.camera, {}, grouped);
+    select(f.world, *f.camera, {.lod = false, .grouping = false}, full);
     const std::size_t groundTriangles = 12;
-    EXPECT_EQ(drawnTriangles(f.scene, full), kForestTrees * kTreeTriangles + groundTriangles);
-    EXPECT_LT(drawnTriangles(f.scene, grouped), drawnTriangles(f.scene, full) / 4);
+    EXPECT_EQ(drawnTriangles(f.world.scene, full), kForestTrees * kTreeTriangles + groundTriangles);
+    EXPECT_LT(drawnTriangles(f.world.scene, grouped), drawnTriangles(f.world.scene, full) / 4);
 }
 
 TEST(GroupingConfig, objectsTrueGroupsTheConfigsObjects) {
@@ -126,8 +126,8 @@ TEST(GroupingConfig, objectsTrueGroupsTheConfigsObjects) {
 grouping:
   objects: true
 )"));
-    ASSERT_EQ(f.grouping.nodes.size(), 1u);
-    const GroupingTree& tree = f.grouping.nodes[0].tree;
+    ASSERT_EQ(f.world.grouping.nodes.size(), 1u);
+    const GroupingTree& tree = f.world.grouping.nodes[0].tree;
     EXPECT_EQ(tree.objectCount(), 2u);
     ASSERT_EQ(tree.roots().size(), 1u) << "two touching boxes of one colour group";
     EXPECT_FALSE(tree.isLeaf(tree.roots()[0]));

@@ -24,7 +24,7 @@ Shot render(ForestExperiment& f, Renderer& renderer, ForestMode mode, GroupingPr
     RenderTarget target(f.view.viewport);
     target.bind();
     const DrawList& list = f.select(mode, 0.1f, proxy);
-    renderer.draw(f.scene, list, f.view, {.clearColor = background});
+    renderer.draw(f.world.scene, list, f.view, {.clearColor = background});
     return {target.read(), renderer.trianglesDrawn()};
 }
 
@@ -52,7 +52,7 @@ TEST(GroupingRender, boxProxyIsBlendedOverTheBackground) {
     const glm::vec4 blue{0.0f, 0.0f, 1.0f, 1.0f};
     const Shot grouped = render(f, renderer, ForestMode::Grouped, GroupingProxy::Box, blue);
     EXPECT_EQ(grouped.triangles, 12u) << "the whole green forest is one box at Ωt = 0.1";
-    const glm::ivec2 centre = screenOf(f.view, f.scene.worldBound(f.forest.grouping).center);
+    const glm::ivec2 centre = screenOf(f.view, f.world.scene.worldBound(f.forest.grouping).center);
     const std::uint8_t* p = pixel(grouped.image, centre);
     // Drawn in the blended pass over an opaque background the result stays
     // opaque (an unblended 0.7-alpha box would leave alpha at 178), and the
@@ -67,7 +67,7 @@ TEST(GroupingRender, boxProxyIsBlendedOverTheBackground) {
 TEST(GroupingRender, impostorLooksCloserToTheFullForestThanNothing) {
     auto ctx = HeadlessContext::create(GlRequest::Auto);
     ForestExperiment f(ForestColouring::Green, {}, {320, 180});
-    EXPECT_GT(bakeImpostors(f.scene, f.forest.grouping, f.grouping, {.pixelsPerUnit = 0.3f, .eye = f.view.eye}), 0u);
+    EXPECT_GT(bakeImpostors(f.world.scene, f.forest.grouping, f.world.grouping, {.pixelsPerUnit = 0.3f, .eye = f.view.eye}), 0u);
     Renderer renderer;
     const glm::vec4 sky{0.6f, 0.7f, 0.8f, 1.0f};
     const Shot full = render(f, renderer, ForestMode::Full, GroupingProxy::Box, sky);

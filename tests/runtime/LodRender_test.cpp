@@ -17,8 +17,9 @@ using namespace arcomp;
 
 TEST(LodRender, levelsFallOffToTheRightOfTheGazeInTheImage) {
     auto ctx = HeadlessContext::create(GlRequest::Auto);
-    Scene scene;
-    LodTable lods;
+    World world;
+    Scene& scene = world.scene;
+    LodTable& lods = world.lods;
     const glm::vec4 levelColors[3] = {{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}};
     std::uint32_t geometry[3], material[3];
     const int tessellation[3][2] = {{32, 16}, {12, 6}, {6, 4}};
@@ -42,7 +43,7 @@ TEST(LodRender, levelsFallOffToTheRightOfTheGazeInTheImage) {
     const View view = View::lookAt({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 40.0f, size);
     const glm::vec3 gaze = glm::normalize(positions.front());
     DrawList list;
-    select(scene, view, {.shading = Shading::Unlit, .lod = &lods, .gaze = gaze}, list);
+    select(world, view, {.shading = Shading::Unlit, .gaze = gaze}, list);
     RenderTarget target(size);
     target.bind();
     Renderer renderer;

@@ -26,7 +26,7 @@ TEST(PointCloudConfig, absentSectionAddsNoClouds) {
     TempDir dir;
     EXPECT_TRUE(loadStationConfig(dir.write("a.yaml", kScene)).pointClouds.clouds.empty());
     SceneFile f = loadSceneFile(dir.write("b.yaml", kScene));
-    EXPECT_EQ(f.pointClouds.size(), 0u);
+    EXPECT_EQ(f.world.pointClouds.size(), 0u);
 }
 
 TEST(PointCloudConfig, treeEntryBecomesAPointCloudNodeWithItsLdis) {
@@ -39,18 +39,18 @@ TEST(PointCloudConfig, treeEntryBecomesAPointCloudNodeWithItsLdis) {
     position: [5, 0, 0]
     scale: 2
 )"));
-    ASSERT_EQ(f.pointClouds.size(), 1u);
-    f.scene.update();
+    ASSERT_EQ(f.world.pointClouds.size(), 1u);
+    f.world.scene.update();
     NodeId cloud = kNoNode;
-    for (NodeId n = 0; n < f.scene.nodeCount(); ++n)
-        if (f.scene.kind(n) == NodeKind::PointCloud) cloud = n;
+    for (NodeId n = 0; n < f.world.scene.nodeCount(); ++n)
+        if (f.world.scene.kind(n) == NodeKind::PointCloud) cloud = n;
     ASSERT_NE(cloud, kNoNode);
-    EXPECT_EQ(f.scene.name(cloud), "oak");
-    const LdiSet& set = f.pointClouds.at(f.scene, cloud);
+    EXPECT_EQ(f.world.scene.name(cloud), "oak");
+    const LdiSet& set = f.world.pointClouds.at(f.world.scene, cloud);
     EXPECT_EQ(set.ldis.size(), 3u);
     EXPECT_GT(set.cloud.size(), 100u);
-    EXPECT_NEAR(f.scene.world(cloud)[3].x, 5.0f, 1e-6f);
-    EXPECT_NEAR(glm::length(glm::vec3(f.scene.world(cloud)[0])), 2.0f, 1e-5f);
+    EXPECT_NEAR(f.world.scene.world(cloud)[3].x, 5.0f, 1e-6f);
+    EXPECT_NEAR(glm::length(glm::vec3(f.world.scene.world(cloud)[0])), 2.0f, 1e-5f);
 }
 
 TEST(PointCloudConfig, badValuesAndUnknownKeysAreReportedWithTheirLine) {
@@ -79,7 +79,7 @@ TEST(PointCloudConfig, unreadableVoxelFileIsAWarningNotAFailure) {
     source: voxels
     voxels: broken.arvox
 )"));
-    EXPECT_EQ(f.pointClouds.size(), 0u);
+    EXPECT_EQ(f.world.pointClouds.size(), 0u);
     ASSERT_EQ(f.warnings.size(), 1u);
     EXPECT_NE(f.warnings[0].find("broken"), std::string::npos);
 }

@@ -43,7 +43,7 @@ class TranslucentTrees : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
         file_ = std::make_unique<SceneFile>(loadSceneFile(std::string(ARCOMP_SOURCE_DIR) + "/configs/translucent-trees.yaml"));
-        file_->scene.update();
+        file_->world.scene.update();
         const View view = *file_->camera;
         auto ctx = HeadlessContext::create(GlRequest::Auto);
         RenderTarget target(view.viewport);
@@ -51,16 +51,16 @@ protected:
         Renderer renderer;
         PointCloudLayer layer;
         DrawList list, none;
-        select(file_->scene, view, {}, list);
+        select(file_->world, view, {.lod = false, .grouping = false}, list);
         renders_ = std::make_unique<Renders>();
-        renderer.draw(file_->scene, list, view, {.clearColor = glm::vec4(0.0f)});
+        renderer.draw(file_->world.scene, list, view, {.clearColor = glm::vec4(0.0f)});
         renders_->cgOnly = target.read();
-        renderer.draw(file_->scene, none, view, {.clearColor = glm::vec4(0.0f)});
-        layer.draw(file_->scene, file_->pointClouds, list.pointClouds, view);
+        renderer.draw(file_->world.scene, none, view, {.clearColor = glm::vec4(0.0f)});
+        layer.draw(file_->world.scene, file_->world.pointClouds, list.pointClouds, view);
         renders_->cloudsOnly = target.read();
         clouds_ = layer.cloudsDrawn();
-        renderer.draw(file_->scene, list, view, {.clearColor = glm::vec4(0.0f)});
-        layer.draw(file_->scene, file_->pointClouds, list.pointClouds, view);
+        renderer.draw(file_->world.scene, list, view, {.clearColor = glm::vec4(0.0f)});
+        layer.draw(file_->world.scene, file_->world.pointClouds, list.pointClouds, view);
         renders_->both = target.read();
     }
     static void TearDownTestSuite() {
@@ -76,7 +76,7 @@ protected:
 
 TEST_F(TranslucentTrees, configAddsBothCloudsAndTheLayerDrawsThem) {
     EXPECT_TRUE(file_->warnings.empty());
-    EXPECT_EQ(file_->pointClouds.size(), 2u);
+    EXPECT_EQ(file_->world.pointClouds.size(), 2u);
     EXPECT_EQ(clouds_, 2u);
 }
 

@@ -41,7 +41,8 @@ double meanDifference(const Image& a, const Image& b) {
 // A red box on the left, a green sphere on the right, seen from +Z.
 Image renderTestScene(GlRequest request, Shading shading, glm::ivec2 size = {320, 240}) {
     auto ctx = HeadlessContext::create(request);
-    Scene scene;
+    World world;
+    Scene& scene = world.scene;
     const auto red = scene.addMaterial({.name = "red", .baseColor = {1, 0, 0, 1}});
     const auto green = scene.addMaterial({.name = "green", .baseColor = {0, 1, 0, 1}});
     const NodeId left = scene.addTransform(scene.root(), glm::translate(glm::mat4(1), {-1.2f, 0, 0}));
@@ -54,7 +55,7 @@ Image renderTestScene(GlRequest request, Shading shading, glm::ivec2 size = {320
     target.bind();
     Renderer renderer;
     DrawList list;
-    select(scene, view, {.shading = shading}, list);
+    select(world, view, {.shading = shading}, list);
     EXPECT_EQ(list.items.size(), 2u);
     renderer.draw(scene, list, view, {.clearColor = glm::vec4(0, 0, 0, 0)});
     return target.read();

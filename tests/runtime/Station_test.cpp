@@ -48,12 +48,13 @@ Image renderObjects(const StationConfig& cfg, const std::vector<std::size_t>& wh
     StationConfig some = cfg;
     some.objects.clear();
     for (std::size_t i : which) some.objects.push_back(cfg.objects[i]);
-    Scene scene;
+    World world;
     std::vector<std::string> warnings;
-    buildScene(some, scene, warnings);
+    buildScene(some, world, warnings);
+    Scene& scene = world.scene;
     scene.update();
     DrawList list;
-    select(scene, view, {.shading = shading}, list);
+    select(world, view, {.shading = shading, .lod = false, .grouping = false}, list);
     RenderTarget target(view.viewport);
     target.bind();
     Renderer renderer;
@@ -343,34 +344,56 @@ TEST(Station, holdoutIsTheSilhouetteOfTheLevelTheCgDraws) {
     EXPECT_LT(coarseTriangles * 5, fineTriangles);  // a twentieth of the triangles, as the ratios say
 }
 
-// A station that restarts loads yesterday's holdouts instead of baking them
-// again, and cuts exactly as the station that baked them.
-TEST(Station, aRestartLoadsTheBakedHoldoutsFromTheCache) {
+// A station that restarts loads yesterday's holdouts and LOD levels instead
+// of baking them again, and draws exactly as the station that baked them.
+TEST(Station, aRestartLoadsWhatItBakedFromTheCache) {
     auto ctx = HeadlessContext::create(GlRequest::Auto);
     test::TempDir dir;
     StationConfig cfg = occluderConfig(HoldoutMesh::Silhouette);
-    cfg.compositing.compositor.holdoutCache = dir.path() / "cache";
+    cfg.compositing.compositor.bakeCache = dir.path() / "cache";
+    ObjectConfig far;
+    far.name = "far sphere";
+    far.shape = "sphere";
+    far.position = {0.0f, 0.0f, -30.0f};  // level 1, behind the person plane
+    far.lodRatios = {1.0f, 0.25f};
+    far.lodThresholds = {20.0f};
+    cfg.objects.push_back(far);
+    const auto files = [&](const char* extension) {
+        std::size_t n = 0;
+        for (const fs::directory_entry& e : fs::directory_iterator(dir.path() / "cache")) n += e.path().extension() == extension;
+        return n;
+    };
     Station first(cfg, pattern({320, 240}));
     ASSERT_TRUE(first.frame());
     const std::size_t meshes = first.holdoutBake().baked;
     EXPECT_EQ(first.holdoutBake().loaded, 0u);
     EXPECT_GT(meshes, 0u);
-    EXPECT_EQ(static_cast<std::size_t>(std::distance(fs::directory_iterator(dir.path() / "cache"), {})), meshes);
+    EXPECT_EQ(files(".sil"), meshes);
+    EXPECT_EQ(first.lodBake().baked, 1u);
+    EXPECT_EQ(first.lodBake().loaded, 0u);
+    EXPECT_EQ(files(".lod"), 1u);
 
     Station second(cfg, pattern({320, 240}));
     ASSERT_TRUE(second.frame());
     EXPECT_EQ(second.holdoutBake().loaded, meshes);
     EXPECT_EQ(second.holdoutBake().baked, 0u);
+    EXPECT_EQ(second.lodBake().loaded, 1u);
+    EXPECT_EQ(second.lodBake().baked, 0u);
     EXPECT_EQ(cv::countNonZero(holdoutMask(first) != holdoutMask(second)), 0);
+    EXPECT_EQ(cv::norm(bgrOf(first.compositedFrame().read()), bgrOf(second.compositedFrame().read()), cv::NORM_INF), 0.0);
 
-    // Another region is another bake: the stale files are baked again.
+    // Another region is another bake: the stale files are baked again. So
+    // are levels of other ratios.
     cfg.compositing.compositor.holdoutRegionMetres = 0.25f;
+    cfg.objects.back().lodRatios = {1.0f, 0.5f};
     Station moved(cfg, pattern({320, 240}));
     EXPECT_EQ(moved.holdoutBake().baked, meshes);
     EXPECT_EQ(moved.holdoutBake().loaded, 0u);
+    EXPECT_EQ(moved.lodBake().baked, 1u);
 
-    cfg.compositing.compositor.holdoutCache = "none";
+    cfg.compositing.compositor.bakeCache = "none";
     Station uncached(cfg, pattern({320, 240}));
     EXPECT_TRUE(uncached.holdoutBake().folder.empty());
     EXPECT_EQ(uncached.holdoutBake().baked, meshes);
+    EXPECT_EQ(uncached.lodBake().baked, 1u);
 }

@@ -16,14 +16,15 @@ TEST(WindowContext, sameRendererDrawsIntoAWindowOnEachApi) {
     for (GlRequest request : {GlRequest::Gl33, GlRequest::Es3}) {
         auto window = WindowContext::create({.title = "arcomp test", .size = {200, 150}, .vsync = false}, request);
         EXPECT_EQ(window->api(), request == GlRequest::Gl33 ? GlApiKind::Gl33 : GlApiKind::Es3);
-        Scene scene;
+        World world;
+        Scene& scene = world.scene;
         scene.addMesh(scene.root(), {scene.addGeometry(makeBox({2, 2, 2})), scene.addMaterial({.name = "red", .baseColor = {1, 0, 0, 1}})});
         scene.update();
         const glm::ivec2 size = window->framebufferSize();
         ASSERT_GT(size.x, 0);
         const View view = View::lookAt({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 45, size);
         DrawList list;
-        select(scene, view, {.shading = Shading::Unlit}, list);
+        select(world, view, {.shading = Shading::Unlit}, list);
         gl::glBindFramebuffer(GL_FRAMEBUFFER, 0);
         gl::glViewport(0, 0, size.x, size.y);
         Renderer renderer;

@@ -21,16 +21,15 @@ int check(const std::string& file) {
     } catch (const std::exception& e) {
         throw InputError(file + ": " + e.what());
     }
-    Scene scene;
+    World world;  // everything a station would build, voxel files included
     std::vector<std::string> problems;
-    PointCloudNodes clouds;  // so that voxel files are read too
-    buildScene(cfg, scene, problems, nullptr, nullptr, nullptr, &clouds);
+    buildScene(cfg, world, problems);
     for (const std::string& p : problems) std::cerr << file << ": " << p << "\n";
     if (!problems.empty()) {
         std::cerr << file << ": " << problems.size() << " problem(s); the station would run without those objects\n";
         return kExitBadInput;
     }
-    std::cout << file << ": ok (" << cfg.objects.size() << " objects, " << scene.nodeCount() << " nodes)\n";
+    std::cout << file << ": ok (" << cfg.objects.size() << " objects, " << world.scene.nodeCount() << " nodes)\n";
     return kExitOk;
 }
 

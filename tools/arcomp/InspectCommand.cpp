@@ -25,7 +25,7 @@ const char* kindName(NodeKind k) {
 
 int inspect(const std::string& path) {
     SceneFile file = loadSceneFile(path);
-    Scene& scene = file.scene;
+    Scene& scene = file.world.scene;
     scene.update();
     std::size_t meshes = 0, triangles = 0;
     const auto order = scene.order();

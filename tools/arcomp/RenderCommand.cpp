@@ -35,7 +35,8 @@ int render(const RenderOptions& o) {
     }
     SceneFile file = loadSceneFile(o.scene);
     for (const std::string& w : file.warnings) std::cerr << "warning: " << w << "\n";
-    Scene& scene = file.scene;
+    World& world = file.world;
+    Scene& scene = world.scene;
     scene.update();
 
     View view = file.camera ? *file.camera : View::framing(scene.bound(), 45.0f, size);
@@ -50,17 +51,17 @@ int render(const RenderOptions& o) {
     }
 
     auto context = HeadlessContext::create(request);
-    bakeImpostors(scene, file.grouping, view.eye);  // for grouping nodes that use them; needs the context
+    bakeImpostors(scene, world.grouping, view.eye);  // for grouping nodes that use them; needs the context
     RenderTarget target(size);
     target.bind();
     Renderer renderer;
     DrawList list;
-    select(scene, view, {.shading = *shading, .lod = file.lods.size() ? &file.lods : nullptr, .grouping = &file.grouping}, list);
+    select(world, view, {.shading = *shading}, list);
     renderer.draw(scene, list, view, {.clearColor = file.background});
     std::optional<PointCloudLayer> clouds;
-    if (file.pointClouds.size()) {
+    if (world.pointClouds.size()) {
         clouds.emplace();
-        clouds->draw(scene, file.pointClouds, list.pointClouds, view);
+        clouds->draw(scene, world.pointClouds, list.pointClouds, view);
     }
     const Image image = target.read();
     writePng(o.out, image);

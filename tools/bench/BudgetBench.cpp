@@ -122,14 +122,14 @@ std::string frameStats(const std::vector<double>& ms) {
 }
 
 // Flies the path once; with a budget, each frame goes through it.
-Series fly(const FlightScene& flight, Renderer& renderer, FrameTimer& timer, int frames, glm::ivec2 size,
+Series fly(FlightScene& flight, Renderer& renderer, FrameTimer& timer, int frames, glm::ivec2 size,
            const CostModel& table, FrameBudget* budget) {
     Series s;
     DrawList list;
-    const LodAlternatives alternatives(flight.scene);
+    const LodAlternatives alternatives(flight.world.scene);
     for (int f = 0; f < frames; ++f) {
         const View view = flightView(frames > 1 ? f / double(frames - 1) : 0.0, size);
-        select(flight.scene, view, {.shading = Shading::Phong}, list);
+        select(flight.world, view, {.shading = Shading::Phong}, list);
         double floorItems = 0.0;
         for (const DrawItem& item : list.items)
             floorItems += table.itemMs(alternatives.levelCount(item.node) - 1u, Shading::Unlit, item.screenArea);
@@ -140,7 +140,7 @@ Series fly(const FlightScene& flight, Renderer& renderer, FrameTimer& timer, int
         std::size_t reduced = 0;
         if (budget) {
             const auto t0 = std::chrono::steady_clock::now();
-            const BudgetStats st = budget->apply(flight.scene, list, view);
+            const BudgetStats st = budget->apply(flight.world.scene, list, view);
             s.applyUs.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
             predicted = st.predictedMs;
             quality = st.quality;
@@ -148,7 +148,7 @@ Series fly(const FlightScene& flight, Renderer& renderer, FrameTimer& timer, int
             s.gain.push_back(budget->model().gain());
         }
         timer.begin();
-        renderer.draw(flight.scene, list, view, {.clearColor = kSky});
+        renderer.draw(flight.world.scene, list, view, {.clearColor = kSky});
         const double ms = timer.end();
         if (budget) budget->observe(ms);
         s.ms.push_back(ms);
@@ -163,14 +163,14 @@ Series fly(const FlightScene& flight, Renderer& renderer, FrameTimer& timer, int
 
 // The platform's own noise: one view at full detail drawn again and again;
 // how far the 95th percentile lies above the median, in percent.
-double repeatJitterPct(const FlightScene& flight, Renderer& renderer, FrameTimer& timer, glm::ivec2 size) {
+double repeatJitterPct(FlightScene& flight, Renderer& renderer, FrameTimer& timer, glm::ivec2 size) {
     DrawList list;
     const View view = flightView(0.0, size);
-    select(flight.scene, view, {.shading = Shading::Phong}, list);
+    select(flight.world, view, {.shading = Shading::Phong}, list);
     std::vector<double> ms;
     for (int k = 0; k < 60; ++k) {
         timer.begin();
-        renderer.draw(flight.scene, list, view, {.clearColor = kSky});
+        renderer.draw(flight.world.scene, list, view, {.clearColor = kSky});
         ms.push_back(timer.end());
     }
     const double median = percentile(ms, 50);
@@ -197,7 +197,7 @@ int run(const Options& o) {
     const std::filesystem::path out(o.out);
     std::filesystem::create_directories(out);
 
-    const FlightScene flight = buildFlightScene({.mountains = o.mountains});
+    FlightScene flight = buildFlightScene({.mountains = o.mountains});
     // llvmpipe reads it when the context is made.
     if (o.rasterThreads >= 0) setenv("LP_NUM_THREADS", std::to_string(o.rasterThreads).c_str(), 1);
     auto context = HeadlessContext::create(GlRequest::Auto);
@@ -210,9 +210,9 @@ int run(const Options& o) {
     {
         DrawList all;
         for (const auto& levels : flight.mountains)
-            for (NodeId n : levels) all.items.push_back({n, flight.scene.meshPart(n), 1.0f, 1.0f, 0, Shading::Phong});
-        const View v = View::framing(flight.scene.bound(), 45.0f, size);
-        renderer.draw(flight.scene, all, v);
+            for (NodeId n : levels) all.items.push_back({n, flight.world.scene.meshPart(n), 1.0f, 1.0f, 0, Shading::Phong});
+        const View v = View::framing(flight.world.scene.bound(), 45.0f, size);
+        renderer.draw(flight.world.scene, all, v);
         timer.begin();
         timer.end();
     }
@@ -225,7 +225,7 @@ int run(const Options& o) {
         const auto t0 = std::chrono::steady_clock::now();
         CalibrationOptions options;
         options.viewport = size;
-        table = calibrateCosts(flight.scene, flight.mountains[0], renderer, timer, options);
+        table = calibrateCosts(flight.world.scene, flight.mountains[0], renderer, timer, options);
         // Then whole frames from views along the path, every object at a
         // random setting: occlusion and the scene's real mix enter the fit.
         std::vector<View> views;
@@ -233,9 +233,9 @@ int run(const Options& o) {
         for (int k = 0; k < 24; ++k) {
             views.push_back(flightView((k + 0.5) / 24.0, size));
             lists.emplace_back();
-            select(flight.scene, views.back(), {.shading = Shading::Phong}, lists.back());
+            select(flight.world, views.back(), {.shading = Shading::Phong}, lists.back());
         }
-        table = fitCostsOnFrames(flight.scene, lists, views, renderer, timer, table, o.sceneFrames, options);
+        table = fitCostsOnFrames(flight.world.scene, lists, views, renderer, timer, table, o.sceneFrames, options);
         calibrationSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         writeCalibration(out / "calibration.yaml", table, {glDescription(), size});
     }

@@ -43,7 +43,7 @@ int run(const Options& o) {
     CalibrationOptions options;
     options.viewport = size;
     options.repeats = o.repeats;
-    const CostModel model = calibrateCosts(flight.scene, flight.mountains[0], renderer, timer, options);
+    const CostModel model = calibrateCosts(flight.world.scene, flight.mountains[0], renderer, timer, options);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const auto file = std::filesystem::path(o.out) / "calibration.yaml";
     writeCalibration(file, model, {glDescription(), size});

@@ -22,8 +22,9 @@ namespace {
 constexpr int kWarmupFrames = 20;
 
 struct ArcompCullScene {
-    Scene scene;
-    LodTable lods;
+    World world;
+    Scene& scene = world.scene;
+    LodTable& lods = world.lods;
     std::uint32_t levelGeometry[3] = {};
 };
 
@@ -63,9 +64,9 @@ CullRun runArcompCull(ArcompCullScene& a, const CullScene& s, int frames) {
     for (int f = -kWarmupFrames; f < frames; ++f) {
         const int frame = std::max(f, 0);
         const View view = cameraView(s, frame, frames);
-        const SelectSettings settings{.lod = &a.lods, .timeSeconds = frame / 60.0};
+        const SelectSettings settings{.timeSeconds = frame / 60.0};
         const auto start = std::chrono::steady_clock::now();
-        select(a.scene, view, settings, list);
+        select(a.world, view, settings, list);
         const auto stop = std::chrono::steady_clock::now();
         if (f < 0) continue;
         run.msPerFrame.push_back(std::chrono::duration<double, std::milli>(stop - start).count());

@@ -37,7 +37,7 @@ Geometry mountainMesh(int cells, float ridgePhase) {
 
 FlightScene buildFlightScene(const FlightOptions& o) {
     FlightScene f;
-    Scene& s = f.scene;
+    Scene& s = f.world.scene;
     // A fine level 0: the controller's room is what levels save, and the
     // pixels of the range seen close up cost the same at every level; with a
     // coarse level 0 that floor would lie above the open-country frames'
@@ -72,7 +72,7 @@ FlightScene buildFlightScene(const FlightOptions& o) {
                                                    {0, 1, 0}),
                                        {r, r * height(rng), r});
         const NodeId t = s.addTransform(s.root(), m);
-        const NodeId lod = s.addNode(t, NodeKind::Lod, 0);
+        const NodeId lod = s.addNode(t, NodeKind::Lod, f.world.lods.add(LodNode{}));
         const std::uint32_t material = materials[k % 4];
         std::array<NodeId, 3> levels{};
         for (std::size_t l = 0; l < 3; ++l) levels[l] = s.addMesh(lod, {geometry[l], material});

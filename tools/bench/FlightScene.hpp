@@ -7,7 +7,7 @@
 //   FlightScene f = buildFlightScene({.mountains = 60});
 //   View v = flightView(f, frame / double(frames - 1), {1280, 720});
 
-#include "graph/core/Scene.hpp"
+#include "graph/core/World.hpp"
 #include "graph/core/View.hpp"
 
 #include <array>
@@ -21,7 +21,9 @@ struct FlightOptions {
 };
 
 struct FlightScene {
-    Scene scene;
+    // Its LOD nodes have one level as far as select is concerned: the
+    // budget controller picks each mountain's level.
+    World world;
     // Each mountain's level meshes, finest first.
     std::vector<std::array<NodeId, 3>> mountains;
     std::array<std::size_t, 3> trianglesPerLevel{};

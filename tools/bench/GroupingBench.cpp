@@ -45,8 +45,9 @@ int run(const Options& o) {
     const glm::vec3 palette[3] = {{0.1f, 0.5f, 0.1f}, {0.15f, 0.45f, 0.1f}, {0.7f, 0.2f, 0.1f}};
     const float edges[3] = {180.0f, 200.0f, 220.0f};
 
-    Scene scene;
-    GroupingNodes table;
+    World world;
+    Scene& scene = world.scene;
+    GroupingNodes& table = world.grouping;
     const NodeId grouping = addGroupingNode(scene, scene.root(), table, "field");
     std::uint32_t boxes[3], materials[9];
     for (int k = 0; k < 3; ++k) boxes[k] = scene.addGeometry(makeBox({edges[k], 300.0f, edges[k]}));
@@ -93,12 +94,12 @@ int run(const Options& o) {
     for (int f = 0; f < o.frames; ++f) {
         const View v = viewAt(f);
         auto t = Clock::now();
-        select(scene, v, {.grouping = &table}, list);
+        select(world, v, {}, list);
         selectMs += msSince(t);
         drawn += list.items.size();
         visited += list.nodesVisited;
         t = Clock::now();
-        select(scene, v, {}, list);
+        select(world, v, {.grouping = false}, list);
         ungroupedMs += msSince(t);
         drawnUngrouped += list.items.size();
     }

@@ -101,16 +101,16 @@ int run(const Options& o) {
     const char* names[2] = {"mixed", "green"};
     for (int f = 0; f < 2; ++f) {
         ForestExperiment& e = *forests[f];
-        const std::size_t baked = bakeImpostors(e.scene, e.forest.grouping, e.grouping, {.pixelsPerUnit = 0.6f, .eye = e.view.eye});
+        const std::size_t baked = bakeImpostors(e.world.scene, e.forest.grouping, e.world.grouping, {.pixelsPerUnit = 0.6f, .eye = e.view.eye});
         std::cerr << names[f] << ": " << baked << " impostors baked\n";
         Renderer renderer;
         const auto shot = [&](ForestMode mode, GroupingProxy proxy, const char* label) {
             const DrawList& list = e.select(mode, o.omegaT, proxy);
             target.bind();
-            renderer.draw(e.scene, list, e.view, {.clearColor = kSky});
+            renderer.draw(e.world.scene, list, e.view, {.clearColor = kSky});
             Image img = target.read();
             writePng(dir / (std::string("forest-") + names[f] + "-" + label + ".png"), img);
-            return std::pair{img, drawnTriangles(e.scene, list)};
+            return std::pair{img, drawnTriangles(e.world.scene, list)};
         };
         const auto [full, fullTris] = shot(ForestMode::Full, GroupingProxy::Box, "full");
         const auto [simple, simpleTris] = shot(ForestMode::Simplified, GroupingProxy::Box, "simplified");

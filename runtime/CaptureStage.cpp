@@ -1,0 +1,87 @@
+#include "runtime/CaptureStage.hpp"
+
+#include "video/VideoError.hpp"
+
+#include <opencv2/imgproc.hpp>
+
+#include <thread>
+
+namespace arcomp {
+
+StationInput StationInput::fromReplay(std::unique_ptr<FrameGrabber> g, double fps) {
+    StationInput in;
+    in.replay = std::move(g);
+    in.fps = fps;
+    return in;
+}
+
+StationInput StationInput::fromLive(std::unique_ptr<FrameSource> s, double fps) {
+    StationInput in;
+    in.live = std::move(s);
+    in.fps = fps;
+    return in;
+}
+
+CaptureStage::CaptureStage(StationInput input) : input_(std::move(input)) {
+    firstPending_ = grab();
+    if (!firstPending_) throw VideoError(name(), "first frame", "no frame to start from");
+}
+
+bool CaptureStage::next() {
+    if (firstPending_) {
+        firstPending_ = false;
+        newFrame_ = true;
+        return true;
+    }
+    return grab();
+}
+
+double CaptureStage::seconds() const {
+    if (input_.replay) return videoSeconds_;
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - clockStart_).count();
+}
+
+bool CaptureStage::grab() {
+    std::optional<Frame> f;
+    if (input_.replay) {
+        GrabResult r = input_.replay->grab();
+        replayState_ = r.state;
+        if (!r.frame) {
+            end_ = r.state.reason;
+            return false;
+        }
+        replayState_.status = SourceStatus::Streaming;
+        f = std::move(r.frame);
+        videoSeconds_ = std::chrono::duration<double>(f->timestamp).count();
+    } else {
+        f = input_.live->newest();
+        // A camera takes a moment to deliver its first frame; the station
+        // needs one to know its size.
+        for (int wait = 0; !f && frame_.empty() && wait < 600; ++wait) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+            f = input_.live->newest();
+        }
+    }
+    newFrame_ = f.has_value();
+    if (f) {
+        if (!frame_.empty() && f->image.size() != frame_.size())
+            cv::resize(f->image, frame_, frame_.size(), 0, 0, cv::INTER_AREA);  // a fallback of another size
+        else frame_ = f->image;
+        if (!frame_.isContinuous()) frame_ = frame_.clone();
+    }
+    return !frame_.empty();
+}
+
+std::string CaptureStage::name() const {
+    if (input_.replay) return input_.replay->name();
+    return input_.live ? input_.live->name() : std::string();
+}
+
+SourceState CaptureStage::state() const {
+    if (input_.live) return input_.live->state();
+    return replayState_;
+}
+
+std::uint64_t CaptureStage::drops() const { return input_.live ? input_.live->drops() : 0; }
+
+} // namespace arcomp

@@ -1,0 +1,78 @@
+#pragma once
+// The frame's first stage: the video input. Replay pulls every frame in
+// order, with no thread and no drops, so the same file gives the same
+// frames; live takes the camera's newest frame and keeps the last one when
+// the camera has nothing new. The first frame fixes the station's size: a
+// frame of another size (a fallback source) is scaled to it.
+//
+//   CaptureStage capture(StationInput::fromReplay(std::move(grabber), 25.0));  // reads the first frame
+//   while (capture.next()) use(capture.image(), capture.seconds());
+
+#include "video/FrameGrabber.hpp"
+#include "video/FrameSource.hpp"
+
+#include <glm/glm.hpp>
+#include <opencv2/core/mat.hpp>
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace arcomp {
+
+// Where frames come from: a grabber pulled frame by frame (replay: every
+// frame, in order) or a live source whose newest frame is taken.
+struct StationInput {
+    std::unique_ptr<FrameGrabber> replay;
+    std::unique_ptr<FrameSource> live;
+    double fps = 25.0;  // for the video file output
+
+    static StationInput fromReplay(std::unique_ptr<FrameGrabber> g, double fps);
+    static StationInput fromLive(std::unique_ptr<FrameSource> s, double fps);
+};
+
+class CaptureStage {
+public:
+    // Reads the first frame (a live source gets up to 3 s to deliver it);
+    // throws VideoError when there is none.
+    explicit CaptureStage(StationInput input);
+
+    // The next frame (the first one, read by the constructor, comes first);
+    // false when a replay input has ended: end() says why.
+    bool next();
+    const cv::Mat& image() const { return frame_; }  // BGR, continuous
+    bool newFrame() const { return newFrame_; }      // live: false when the camera had nothing new
+    glm::ivec2 size() const { return {frame_.cols, frame_.rows}; }
+    double fps() const { return input_.fps; }
+
+    // The current frame's time, which movers and the gaze track run on: the
+    // video's own timestamp in replay (deterministic), the wall time since
+    // clockStart() live. A reloaded live station keeps the previous start.
+    double seconds() const;
+    void setClockStart(std::chrono::steady_clock::time_point start) { clockStart_ = start; }
+    std::chrono::steady_clock::time_point clockStart() const { return clockStart_; }
+
+    // The input as an operator sees it.
+    std::string name() const;
+    SourceState state() const;
+    std::uint64_t drops() const;
+    // Why a replay ended ("end after 795 frames", a decoder error); empty while it runs.
+    const std::string& end() const { return end_; }
+    // The input, still open, for the next station after a config reload.
+    StationInput release() { return std::move(input_); }
+
+private:
+    bool grab();
+
+    StationInput input_;
+    cv::Mat frame_;
+    bool firstPending_ = false;
+    bool newFrame_ = false;
+    std::string end_;
+    SourceState replayState_{SourceStatus::Opening, ""};
+    std::chrono::steady_clock::time_point clockStart_ = std::chrono::steady_clock::now();
+    double videoSeconds_ = 0.0;
+};
+
+} // namespace arcomp

@@ -1,0 +1,31 @@
+#pragma once
+// A station's holdout meshes, made at start: every CG mesh of the world,
+// each LOD level included, gets its silhouette mesh baked for the box of
+// eyes around the camera (paper: silhouette-preserving reduction per
+// viewpoint region). A baked mesh is kept in a cache folder and loaded at
+// the next start when it still matches the mesh and the region, so a
+// station that restarts does not bake again what it baked yesterday.
+//
+//   const HoldoutBake bake = bakeHoldouts(world, view, cfg.compositing.compositor, cfg.file);
+//   // world.holdouts now has an entry per mesh node; bake.loaded + bake.baked of them
+
+#include "graph/core/View.hpp"
+#include "graph/core/World.hpp"
+#include "runtime/BakeCache.hpp"
+#include "runtime/CompositingConfig.hpp"
+
+#include <filesystem>
+
+namespace arcomp {
+
+struct HoldoutBake : BakeTally {
+    std::filesystem::path folder;  // empty: no cache, every start bakes
+};
+
+// Adds the holdouts to world.holdouts. A mover leaves the region it was
+// baked for, so its holdout is its full mesh; so is every holdout with
+// `holdout: full`. `configFile` names the cache files.
+HoldoutBake bakeHoldouts(World& world, const View& view, const CompositorConfig& config,
+                         const std::filesystem::path& configFile);
+
+} // namespace arcomp
