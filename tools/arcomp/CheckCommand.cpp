@@ -19,7 +19,7 @@ int check(const std::string& file) {
     try {
         Station::preflight(cfg);  // calibration, gaze track, matte settings
     } catch (const std::exception& e) {
-        throw InputError(file + ": " + e.what());
+        throw InputError(file, "", e.what());
     }
     Scene scene;
     std::vector<std::string> problems;
