@@ -31,26 +31,21 @@ void main() {
 
 } // namespace
 
-Compositor::Compositor(glm::ivec2 size) : size_(size), output_(size) {
-    glGenTextures(1, &personTexture_);
-    glBindTexture(GL_TEXTURE_2D, personTexture_);
+Compositor::PersonProgram::PersonProgram()
+    : program(kPersonShader), person(program.requiredLocation("uPerson")), height(program.requiredLocation("uHeight")) {}
+
+Compositor::Compositor(glm::ivec2 size)
+    : size_(size), output_(size), personTexture_(GlTexture::generate()), tileVao_(GlVertexArray::generate()),
+      tileBuffer_(GlBuffer::generate()) {
+    glBindTexture(GL_TEXTURE_2D, personTexture_.get());
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, size.x, size.y, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glGenVertexArrays(1, &tileVao_);
-    glBindVertexArray(tileVao_);
-    glGenBuffers(1, &tileBuffer_);
-    glBindBuffer(GL_ARRAY_BUFFER, tileBuffer_);
+    glBindVertexArray(tileVao_.get());
+    glBindBuffer(GL_ARRAY_BUFFER, tileBuffer_.get());
     glEnableVertexAttribArray(0);
     glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
     glBindVertexArray(0);
-    program_.emplace(kPersonShader);
-}
-
-Compositor::~Compositor() {
-    glDeleteTextures(1, &personTexture_);
-    glDeleteBuffers(1, &tileBuffer_);
-    glDeleteVertexArrays(1, &tileVao_);
 }
 
 void Compositor::begin(const cv::Mat& frame, const CompositeSettings& settings) {
@@ -133,7 +128,7 @@ void Compositor::person(const cv::Mat& person) {
     findTiles(person);
     if (tileCount_ == 0) return;
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glBindTexture(GL_TEXTURE_2D, personTexture_);
+    glBindTexture(GL_TEXTURE_2D, personTexture_.get());
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size_.x, size_.y, GL_RGBA, GL_UNSIGNED_BYTE, person.data);
 
     output_.bind();
@@ -144,14 +139,13 @@ void Compositor::person(const cv::Mat& person) {
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied "over"
-    ShaderProgram& p = *program_;
-    p.use();
+    program_.program.use();
     glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, personTexture_);
-    glUniform1i(p.uniform("uPerson"), 0);
-    glUniform1i(p.uniform("uHeight"), size_.y);
-    glBindVertexArray(tileVao_);
-    glBindBuffer(GL_ARRAY_BUFFER, tileBuffer_);
+    glBindTexture(GL_TEXTURE_2D, personTexture_.get());
+    glUniform1i(program_.person, 0);
+    glUniform1i(program_.height, size_.y);
+    glBindVertexArray(tileVao_.get());
+    glBindBuffer(GL_ARRAY_BUFFER, tileBuffer_.get());
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(tiles_.size() * sizeof(float)), tiles_.data(), GL_STREAM_DRAW);
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(tiles_.size() / 2));
     glBindVertexArray(0);

@@ -29,6 +29,7 @@
 // decode/encode per pixel, at the price of slightly dark soft edges between
 // very different colours.
 
+#include "runtime/GlHandle.hpp"
 #include "runtime/RenderTarget.hpp"
 #include "runtime/ShaderProgram.hpp"
 
@@ -50,7 +51,6 @@ public:
     static constexpr int kTile = 32;
 
     explicit Compositor(glm::ivec2 size);
-    ~Compositor();
     Compositor(const Compositor&) = delete;
     Compositor& operator=(const Compositor&) = delete;
 
@@ -70,13 +70,21 @@ public:
 private:
     void findTiles(const cv::Mat& person);
 
+    struct PersonProgram {
+        PersonProgram();
+        ShaderProgram program;
+        GLint person, height;  // uniform locations
+    };
+
     glm::ivec2 size_;
     RenderTarget output_;
     cv::Mat plate_;  // the frame as RGBA, rows bottom first
-    GLuint personTexture_ = 0, tileVao_ = 0, tileBuffer_ = 0;
+    GlTexture personTexture_;
+    GlVertexArray tileVao_;
+    GlBuffer tileBuffer_;
     std::vector<float> tiles_;  // two triangles per occupied tile, NDC x, y
     std::size_t tileCount_ = 0;
-    std::optional<ShaderProgram> program_;
+    PersonProgram program_;
 };
 
 } // namespace arcomp

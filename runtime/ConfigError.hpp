@@ -1,8 +1,13 @@
 #pragma once
 // Everything wrong with a config file, found in one read. Each issue names
 // the place ("station.yaml:12:5") and says what was expected there.
+//
+// As BadInput it reads as the first issue: source its file, where
+// "line 12, column 5" (empty for the file as a whole), reason its message
+// with how many more there are. what() lists them all, one a line.
 
-#include <stdexcept>
+#include "graph/core/BadInput.hpp"
+
 #include <string>
 #include <vector>
 
@@ -17,7 +22,7 @@ struct ConfigIssue {
     std::string format() const;
 };
 
-class ConfigError : public std::runtime_error {
+class ConfigError : public BadInput {
 public:
     explicit ConfigError(std::vector<ConfigIssue> issues);
     std::vector<ConfigIssue> issues;

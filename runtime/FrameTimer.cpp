@@ -7,16 +7,12 @@ namespace arcomp {
 using namespace gl;
 
 FrameTimer::FrameTimer(TimerMode mode) : processCpu_(mode == TimerMode::ProcessCpu) {
-    if ((mode == TimerMode::Auto || mode == TimerMode::Query) && hasTimerQueries()) glGenQueries(1, &query_);
-}
-
-FrameTimer::~FrameTimer() {
-    if (query_) glDeleteQueries(1, &query_);
+    if ((mode == TimerMode::Auto || mode == TimerMode::Query) && hasTimerQueries()) query_ = GlQuery::generate();
 }
 
 void FrameTimer::begin() {
     if (query_) {
-        glBeginQuery(GL_TIME_ELAPSED, query_);
+        glBeginQuery(GL_TIME_ELAPSED, query_.get());
         return;
     }
     glFinish();
@@ -28,7 +24,7 @@ double FrameTimer::end() {
     if (query_) {
         glEndQuery(GL_TIME_ELAPSED);
         GLuint64 ns = 0;
-        glGetQueryObjectui64v(query_, GL_QUERY_RESULT, &ns);
+        glGetQueryObjectui64v(query_.get(), GL_QUERY_RESULT, &ns);
         return static_cast<double>(ns) * 1e-6;
     }
     glFinish();

@@ -17,6 +17,7 @@
 // from the machine's cores is left out of it, as it is on a GPU.
 
 #include "runtime/GlApi.hpp"
+#include "runtime/GlHandle.hpp"
 
 #include <chrono>
 #include <string_view>
@@ -30,20 +31,19 @@ public:
     // Auto: queries where hasTimerQueries(), else Finish; Query where there
     // are none falls back to Finish too.
     explicit FrameTimer(TimerMode mode = TimerMode::Auto);
-    ~FrameTimer();
     FrameTimer(const FrameTimer&) = delete;
     FrameTimer& operator=(const FrameTimer&) = delete;
 
     void begin();
     // Waits for the work issued since begin() and gives its milliseconds.
     double end();
-    bool usesQueries() const { return query_ != 0; }
+    bool usesQueries() const { return static_cast<bool>(query_); }
     std::string_view method() const {
         return usesQueries() ? "gl_time_elapsed" : processCpu_ ? "process_cpu_glfinish" : "wall_glfinish";
     }
 
 private:
-    GLuint query_ = 0;
+    GlQuery query_;  // none: timed with glFinish
     bool processCpu_ = false;
     double startCpuMs_ = 0.0;
     std::chrono::steady_clock::time_point start_{};

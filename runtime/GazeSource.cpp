@@ -60,8 +60,9 @@ std::optional<GazeSample> RecordedGaze::sample(double timeSeconds) {
 }
 
 GazeTrackError::GazeTrackError(std::string file_, std::size_t line_, std::string reason_)
-    : std::runtime_error(file_ + ":" + std::to_string(line_) + ": " + reason_),
-      file(std::move(file_)), line(line_), reason(std::move(reason_)) {}
+    : BadInput(file_, line_ == 0 ? "" : "line " + std::to_string(line_), reason_,
+               file_ + ":" + std::to_string(line_) + ": " + reason_),
+      file(std::move(file_)), line(line_) {}
 
 namespace {
 

@@ -13,6 +13,7 @@
 // optional header line starting with "time", blank lines and '#' comments.
 // Times must increase strictly.
 
+#include "graph/core/BadInput.hpp"
 #include "graph/core/View.hpp"
 
 #include <filesystem>
@@ -85,13 +86,14 @@ private:
     std::vector<GazeSample> samples_;
 };
 
-// A track file that cannot be used; what() reads "<file>:<line>: <reason>".
-class GazeTrackError : public std::runtime_error {
+// A track file that cannot be used; what() reads "<file>:<line>: <reason>",
+// the form config issues take. As BadInput: source the file, where
+// "line N" (empty for the file as a whole, line 0).
+class GazeTrackError : public BadInput {
 public:
     GazeTrackError(std::string file, std::size_t line, std::string reason);
-    std::string file;
+    std::string file;  // the same as source
     std::size_t line;
-    std::string reason;
 };
 
 std::vector<GazeSample> readGazeTrackCsv(const std::filesystem::path& file);

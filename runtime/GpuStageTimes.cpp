@@ -12,20 +12,14 @@ GpuStageTimes::GpuStageTimes(int stages)
     for (int parity = 0; parity < 2; ++parity) {
         issued_[parity].assign(static_cast<std::size_t>(stages), false);
         if (finish_ || !hasTimerQueries()) continue;
-        queries_[parity].resize(static_cast<std::size_t>(stages));
-        glGenQueries(stages, queries_[parity].data());
+        for (int s = 0; s < stages; ++s) queries_[parity].push_back(GlQuery::generate());
     }
-}
-
-GpuStageTimes::~GpuStageTimes() {
-    for (std::vector<GLuint>& q : queries_)
-        if (!q.empty()) glDeleteQueries(static_cast<GLsizei>(q.size()), q.data());
 }
 
 void GpuStageTimes::begin(int stage) {
     const auto s = static_cast<std::size_t>(stage);
     if (usesQueries()) {
-        glBeginQuery(GL_TIME_ELAPSED, queries_[current_][s]);
+        glBeginQuery(GL_TIME_ELAPSED, queries_[current_][s].get());
         return;
     }
     if (finish_) glFinish();  // what came before is not this stage's
@@ -56,7 +50,7 @@ void GpuStageTimes::collect() {
             continue;
         }
         GLuint64 ns = 0;
-        glGetQueryObjectui64v(queries_[previous][s], GL_QUERY_RESULT, &ns);
+        glGetQueryObjectui64v(queries_[previous][s].get(), GL_QUERY_RESULT, &ns);
         ms_[s] = static_cast<double>(ns) * 1e-6;
     }
 }

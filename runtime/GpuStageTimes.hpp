@@ -19,6 +19,7 @@
 // Stages must not overlap: GL allows one TIME_ELAPSED query at a time.
 
 #include "runtime/GlApi.hpp"
+#include "runtime/GlHandle.hpp"
 
 #include <array>
 #include <chrono>
@@ -29,7 +30,6 @@ namespace arcomp {
 class GpuStageTimes {
 public:
     explicit GpuStageTimes(int stages);
-    ~GpuStageTimes();
     GpuStageTimes(const GpuStageTimes&) = delete;
     GpuStageTimes& operator=(const GpuStageTimes&) = delete;
 
@@ -53,7 +53,7 @@ public:
 
 private:
     using Clock = std::chrono::steady_clock;
-    std::array<std::vector<GLuint>, 2> queries_;  // one set per frame parity
+    std::array<std::vector<GlQuery>, 2> queries_;  // one set per frame parity
     std::array<std::vector<bool>, 2> issued_;
     std::vector<double> cpuMs_;  // without queries: this frame's submission times
     std::vector<double> ms_;

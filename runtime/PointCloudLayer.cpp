@@ -54,16 +54,10 @@ View localView(const View& view, const glm::mat4& world) {
 
 } // namespace
 
-PointCloudLayer::PointCloudLayer(int threads) : threads_(threads) {
-    program_.emplace(kLayerShader);
-    glGenVertexArrays(1, &vao_);
-}
+PointCloudLayer::LayerProgram::LayerProgram()
+    : program(kLayerShader), color(program.requiredLocation("uColor")), depth(program.requiredLocation("uDepth")) {}
 
-PointCloudLayer::~PointCloudLayer() {
-    glDeleteVertexArrays(1, &vao_);
-    if (color_) glDeleteTextures(1, &color_);
-    if (depth_) glDeleteTextures(1, &depth_);
-}
+PointCloudLayer::PointCloudLayer(int threads) : threads_(threads), vao_(GlVertexArray::generate()) {}
 
 LdiRenderer& PointCloudLayer::rendererFor(const LdiSet& set) {
     for (auto& [s, r] : renderers_)
@@ -82,24 +76,23 @@ void PointCloudLayer::draw(const Scene& scene, const PointCloudNodes& clouds, st
 
     const glm::ivec2 size = view.viewport;
     if (size != textureSize_) {
-        for (GLuint* t : {&color_, &depth_}) {
-            if (*t) glDeleteTextures(1, t);
-            glGenTextures(1, t);
-            glBindTexture(GL_TEXTURE_2D, *t);
+        for (GlTexture* t : {&color_, &depth_}) {
+            *t = GlTexture::generate();  // the old one, if any, goes
+            glBindTexture(GL_TEXTURE_2D, t->get());
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         }
-        glBindTexture(GL_TEXTURE_2D, color_);
+        glBindTexture(GL_TEXTURE_2D, color_.get());
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, size.x, size.y, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-        glBindTexture(GL_TEXTURE_2D, depth_);
+        glBindTexture(GL_TEXTURE_2D, depth_.get());
         glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, size.x, size.y, 0, GL_RED, GL_FLOAT, nullptr);
         textureSize_ = size;
     }
 
-    program_->use();
-    glUniform1i(program_->uniform("uColor"), 0);
-    glUniform1i(program_->uniform("uDepth"), 1);
-    glBindVertexArray(vao_);
+    program_.program.use();
+    glUniform1i(program_.color, 0);
+    glUniform1i(program_.depth, 1);
+    glBindVertexArray(vao_.get());
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_FALSE);
@@ -122,10 +115,10 @@ void PointCloudLayer::draw(const Scene& scene, const PointCloudNodes& clouds, st
             ndcDepth_[i] = std::clamp(ndc * 0.5f + 0.5f, 0.0f, 1.0f);
         }
         glActiveTexture(GL_TEXTURE0);
-        glBindTexture(GL_TEXTURE_2D, color_);
+        glBindTexture(GL_TEXTURE_2D, color_.get());
         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
         glActiveTexture(GL_TEXTURE1);
-        glBindTexture(GL_TEXTURE_2D, depth_);
+        glBindTexture(GL_TEXTURE_2D, depth_.get());
         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size.x, size.y, GL_RED, GL_FLOAT, ndcDepth_.data());
         glDrawArrays(GL_TRIANGLES, 0, 3);
         ++cloudsDrawn_;

@@ -23,6 +23,7 @@
 #include "graph/points/LdiRenderer.hpp"
 #include "graph/points/PointCloudNodes.hpp"
 #include "graph/core/View.hpp"
+#include "runtime/GlHandle.hpp"
 #include "runtime/ShaderProgram.hpp"
 
 #include <memory>
@@ -35,7 +36,6 @@ namespace arcomp {
 class PointCloudLayer {
 public:
     explicit PointCloudLayer(int threads = 2);
-    ~PointCloudLayer();
     PointCloudLayer(const PointCloudLayer&) = delete;
     PointCloudLayer& operator=(const PointCloudLayer&) = delete;
 
@@ -48,9 +48,16 @@ public:
 private:
     LdiRenderer& rendererFor(const LdiSet& set);
 
+    struct LayerProgram {
+        LayerProgram();
+        ShaderProgram program;
+        GLint color, depth;  // uniform locations
+    };
+
     int threads_;
-    std::optional<ShaderProgram> program_;
-    GLuint vao_ = 0, color_ = 0, depth_ = 0;
+    LayerProgram program_;
+    GlVertexArray vao_;
+    GlTexture color_, depth_;
     glm::ivec2 textureSize_{0, 0};
     std::vector<std::pair<const LdiSet*, std::unique_ptr<LdiRenderer>>> renderers_;
     std::vector<PointCloudItem> farthestFirst_;

@@ -14,33 +14,27 @@ RenderTarget::RenderTarget(glm::ivec2 size) : size_(size) {
     if (size.x <= 0 || size.y <= 0 || size.x > maxSize || size.y > maxSize)
         throw std::invalid_argument("render target size " + std::to_string(size.x) + "x" + std::to_string(size.y) +
                                     " is outside 1.." + std::to_string(maxSize));
-    glGenTextures(1, &color_);
-    glBindTexture(GL_TEXTURE_2D, color_);
+    color_ = GlTexture::generate();
+    glBindTexture(GL_TEXTURE_2D, color_.get());
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, size.x, size.y, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glGenRenderbuffers(1, &depthStencil_);
-    glBindRenderbuffer(GL_RENDERBUFFER, depthStencil_);
+    depthStencil_ = GlRenderbuffer::generate();
+    glBindRenderbuffer(GL_RENDERBUFFER, depthStencil_.get());
     glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, size.x, size.y);
-    glGenFramebuffers(1, &framebuffer_);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_, 0);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depthStencil_);
+    framebuffer_ = GlFramebuffer::generate();
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_.get(), 0);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depthStencil_.get());
     const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE)
         throw std::runtime_error("framebuffer incomplete: status 0x" + std::to_string(status));
 }
 
-RenderTarget::~RenderTarget() {
-    glDeleteFramebuffers(1, &framebuffer_);
-    glDeleteRenderbuffers(1, &depthStencil_);
-    glDeleteTextures(1, &color_);
-}
-
 void RenderTarget::bind() const {
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
     glViewport(0, 0, size_.x, size_.y);
 }
 
@@ -62,6 +56,6 @@ Image readFramebuffer(GLuint framebuffer, glm::ivec2 size) {
     return img;
 }
 
-Image RenderTarget::read() const { return readFramebuffer(framebuffer_, size_); }
+Image RenderTarget::read() const { return readFramebuffer(framebuffer_.get(), size_); }
 
 } // namespace arcomp

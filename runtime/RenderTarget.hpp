@@ -9,6 +9,7 @@
 
 #include "graph/core/Material.hpp"
 #include "runtime/GlApi.hpp"
+#include "runtime/GlHandle.hpp"
 
 #include <glm/glm.hpp>
 
@@ -17,19 +18,20 @@ namespace arcomp {
 class RenderTarget {
 public:
     explicit RenderTarget(glm::ivec2 size);
-    ~RenderTarget();
     RenderTarget(const RenderTarget&) = delete;
     RenderTarget& operator=(const RenderTarget&) = delete;
 
     void bind() const;  // also sets the viewport to the whole target
     Image read() const;
     glm::ivec2 size() const { return size_; }
-    GLuint colorTexture() const { return color_; }
-    GLuint framebuffer() const { return framebuffer_; }
+    GLuint colorTexture() const { return color_.get(); }
+    GLuint framebuffer() const { return framebuffer_.get(); }
 
 private:
     glm::ivec2 size_;
-    GLuint framebuffer_ = 0, color_ = 0, depthStencil_ = 0;
+    GlTexture color_;
+    GlRenderbuffer depthStencil_;
+    GlFramebuffer framebuffer_;
 };
 
 // Reads a framebuffer's colour (0: the window's) as an image, rows top to bottom.

@@ -93,22 +93,30 @@ void main() {
 
 } // namespace
 
+// Lighting's uniforms are read only where a level lights (not unlit; the
+// normal matrix not by flat either), and the compiler drops them elsewhere:
+// those may be -1. The rest every level reads.
+Renderer::MeshProgram::MeshProgram(Shading shading)
+    : program(kMeshShader, "#define SHADING " + std::to_string(static_cast<int>(shading)) + "\n"),
+      model(program.requiredLocation("uModel")),
+      viewProjection(program.requiredLocation("uViewProjection")),
+      normalMatrix(program.location("uNormalMatrix")),
+      eye(program.location("uEye")),
+      lightDirection(program.location("uLightDirection")),
+      baseColor(program.requiredLocation("uBaseColor")),
+      specular(program.location("uSpecular")),
+      alphaMode(program.requiredLocation("uAlphaMode")),
+      alphaCutoff(program.requiredLocation("uAlphaCutoff")),
+      fade(program.requiredLocation("uFade")),
+      hasTexture(program.requiredLocation("uHasTexture")),
+      baseTexture(program.requiredLocation("uBaseTexture")) {}
+
 Renderer::Renderer() {
-    for (int s = 0; s < kShadingCount; ++s)
-        programs_[static_cast<std::size_t>(s)].emplace(kMeshShader, "#define SHADING " + std::to_string(s) + "\n");
+    for (int s = 0; s < kShadingCount; ++s) programs_[static_cast<std::size_t>(s)].emplace(static_cast<Shading>(s));
 }
 
-Renderer::~Renderer() { forget(); }
-
 void Renderer::forget() {
-    for (GpuGeometry& g : geometries_) {
-        glDeleteVertexArrays(1, &g.vao);
-        glDeleteBuffers(1, &g.vertices);
-        glDeleteBuffers(1, &g.indices);
-    }
     geometries_.clear();
-    for (GLuint t : textures_)
-        if (t) glDeleteTextures(1, &t);
     textures_.clear();
     scene_ = nullptr;
 }
@@ -126,13 +134,13 @@ const Renderer::GpuGeometry& Renderer::geometry(const Scene& scene, std::uint32_
         vertices.insert(vertices.end(), {g.positions[i].x, g.positions[i].y, g.positions[i].z, g.normals[i].x,
                                          g.normals[i].y, g.normals[i].z, uv.x, uv.y});
     }
-    glGenVertexArrays(1, &gpu.vao);
-    glBindVertexArray(gpu.vao);
-    glGenBuffers(1, &gpu.vertices);
-    glBindBuffer(GL_ARRAY_BUFFER, gpu.vertices);
+    gpu.vao = GlVertexArray::generate();
+    glBindVertexArray(gpu.vao.get());
+    gpu.vertices = GlBuffer::generate();
+    glBindBuffer(GL_ARRAY_BUFFER, gpu.vertices.get());
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(float)), vertices.data(), GL_STATIC_DRAW);
-    glGenBuffers(1, &gpu.indices);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.indices);
+    gpu.indices = GlBuffer::generate();
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.indices.get());
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(g.indices.size() * sizeof(std::uint32_t)),
                  g.indices.data(), GL_STATIC_DRAW);
     const GLsizei stride = 8 * sizeof(float);
@@ -148,50 +156,48 @@ const Renderer::GpuGeometry& Renderer::geometry(const Scene& scene, std::uint32_
 GLuint Renderer::texture(const Scene& scene, int image) {
     if (image < 0) return 0;
     const auto index = static_cast<std::size_t>(image);
-    if (index >= textures_.size()) textures_.resize(scene.images().size(), 0);
-    if (textures_[index]) return textures_[index];
+    if (index >= textures_.size()) textures_.resize(scene.images().size());
+    if (textures_[index]) return textures_[index].get();
     const Image& img = scene.images()[index];
-    GLuint t = 0;
-    glGenTextures(1, &t);
-    glBindTexture(GL_TEXTURE_2D, t);
+    GlTexture& t = textures_[index];
+    t = GlTexture::generate();
+    glBindTexture(GL_TEXTURE_2D, t.get());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
     glGenerateMipmap(GL_TEXTURE_2D);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    textures_[index] = t;
-    return t;
+    return t.get();
 }
 
 void Renderer::drawItem(const Scene& scene, const DrawItem& item, const View& view, const RenderSettings& settings) {
     const Material& m = scene.material(item.part.material);
     const Shading shading = m.unlit ? Shading::Unlit : item.shading;
-    ShaderProgram& p = *programs_[static_cast<std::size_t>(shading)];
-    p.use();
+    const MeshProgram& p = *programs_[static_cast<std::size_t>(shading)];
+    p.program.use();
     const glm::mat4& model = item.model ? *item.model : scene.world(item.node);
     const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(model)));
     const glm::mat4 viewProjection = view.viewProjection();
-    glUniformMatrix4fv(p.uniform("uModel"), 1, GL_FALSE, glm::value_ptr(model));
-    glUniformMatrix4fv(p.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
-    glUniformMatrix3fv(p.uniform("uNormalMatrix"), 1, GL_FALSE, glm::value_ptr(normalMatrix));
-    glUniform3f(p.uniform("uEye"), view.eye.x, view.eye.y, view.eye.z);
-    glUniform3f(p.uniform("uLightDirection"), settings.lightDirection.x, settings.lightDirection.y,
-                settings.lightDirection.z);
+    glUniformMatrix4fv(p.model, 1, GL_FALSE, glm::value_ptr(model));
+    glUniformMatrix4fv(p.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProjection));
+    glUniformMatrix3fv(p.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
+    glUniform3f(p.eye, view.eye.x, view.eye.y, view.eye.z);
+    glUniform3f(p.lightDirection, settings.lightDirection.x, settings.lightDirection.y, settings.lightDirection.z);
     const glm::vec4 base = m.baseColor * item.tint;
-    glUniform4f(p.uniform("uBaseColor"), base.r, base.g, base.b, base.a);
-    glUniform1f(p.uniform("uSpecular"), 0.5f * (1.0f - m.roughness) + 0.1f);
-    glUniform1i(p.uniform("uAlphaMode"), static_cast<int>(m.alphaMode));
-    glUniform1f(p.uniform("uAlphaCutoff"), m.alphaCutoff);
-    glUniform1f(p.uniform("uFade"), item.fade);
+    glUniform4f(p.baseColor, base.r, base.g, base.b, base.a);
+    glUniform1f(p.specular, 0.5f * (1.0f - m.roughness) + 0.1f);
+    glUniform1i(p.alphaMode, static_cast<int>(m.alphaMode));
+    glUniform1f(p.alphaCutoff, m.alphaCutoff);
+    glUniform1f(p.fade, item.fade);
     const GLuint tex = texture(scene, m.baseColorImage);
-    glUniform1i(p.uniform("uHasTexture"), tex ? 1 : 0);
-    glUniform1i(p.uniform("uBaseTexture"), 0);
+    glUniform1i(p.hasTexture, tex ? 1 : 0);
+    glUniform1i(p.baseTexture, 0);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, tex);
     if (m.doubleSided) glDisable(GL_CULL_FACE);
     else glEnable(GL_CULL_FACE);
     const GpuGeometry& g = geometry(scene, item.part.geometry);
-    glBindVertexArray(g.vao);
+    glBindVertexArray(g.vao.get());
     // A silhouette region draws its own range of the shared index list.
     const GLsizei count = item.indexCount ? static_cast<GLsizei>(item.indexCount) : g.indexCount;
     const auto offset = static_cast<std::uintptr_t>(item.indexCount ? item.firstIndex : 0) * sizeof(std::uint32_t);

@@ -14,6 +14,7 @@
 
 #include "graph/core/DrawList.hpp"
 #include "graph/core/View.hpp"
+#include "runtime/GlHandle.hpp"
 #include "runtime/ShaderProgram.hpp"
 
 #include <array>
@@ -30,7 +31,6 @@ struct RenderSettings {
 class Renderer {
 public:
     Renderer();
-    ~Renderer();
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
@@ -42,17 +42,26 @@ public:
 
 private:
     struct GpuGeometry {
-        GLuint vao = 0, vertices = 0, indices = 0;
+        GlVertexArray vao;
+        GlBuffer vertices, indices;
         GLsizei indexCount = 0;
+    };
+    // One shading level's program and its uniforms' locations, looked up
+    // once: a draw item sets a dozen uniforms.
+    struct MeshProgram {
+        explicit MeshProgram(Shading shading);
+        ShaderProgram program;
+        GLint model, viewProjection, normalMatrix, eye, lightDirection, baseColor, specular, alphaMode, alphaCutoff,
+            fade, hasTexture, baseTexture;
     };
     const GpuGeometry& geometry(const Scene& scene, std::uint32_t id);
     GLuint texture(const Scene& scene, int image);
     void drawItem(const Scene& scene, const DrawItem& item, const View& view, const RenderSettings& settings);
 
-    std::array<std::optional<ShaderProgram>, kShadingCount> programs_;
+    std::array<std::optional<MeshProgram>, kShadingCount> programs_;
     const Scene* scene_ = nullptr;
     std::vector<GpuGeometry> geometries_;
-    std::vector<GLuint> textures_;
+    std::vector<GlTexture> textures_;
     std::size_t trianglesDrawn_ = 0;
 };
 

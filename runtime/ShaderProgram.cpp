@@ -1,5 +1,6 @@
 #include "runtime/ShaderProgram.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <vector>
 
@@ -9,19 +10,18 @@ using namespace gl;
 
 namespace {
 
-GLuint compile(GLenum stage, const std::string& text) {
-    const GLuint shader = glCreateShader(stage);
+GlShader compile(GLenum stage, const std::string& text) {
+    GlShader shader(glCreateShader(stage));
     const char* src = text.c_str();
-    glShaderSource(shader, 1, &src, nullptr);
-    glCompileShader(shader);
+    glShaderSource(shader.get(), 1, &src, nullptr);
+    glCompileShader(shader.get());
     GLint ok = 0;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &ok);
     if (!ok) {
         GLint length = 0;
-        glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+        glGetShaderiv(shader.get(), GL_INFO_LOG_LENGTH, &length);
         std::vector<char> log(static_cast<std::size_t>(std::max(length, 1)));
-        glGetShaderInfoLog(shader, length, nullptr, log.data());
-        glDeleteShader(shader);
+        glGetShaderInfoLog(shader.get(), length, nullptr, log.data());
         throw std::runtime_error(std::string(stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
                                  " shader does not compile: " + log.data());
     }
@@ -30,43 +30,41 @@ GLuint compile(GLenum stage, const std::string& text) {
 
 } // namespace
 
-ShaderProgram::ShaderProgram(const std::string& source, const std::string& defines) {
+ShaderProgram::ShaderProgram(const std::string& source, const std::string& defines) : defines_(defines) {
     const std::string common = shaderPreamble() + defines;
-    const GLuint vs = compile(GL_VERTEX_SHADER, common + "#define VERTEX\n" + source);
-    const GLuint fs = compile(GL_FRAGMENT_SHADER, common + "#define FRAGMENT\n" + source);
-    program_ = glCreateProgram();
-    glAttachShader(program_, vs);
-    glAttachShader(program_, fs);
-    glLinkProgram(program_);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
+    // The stages are deleted as the constructor returns, linked or not: GL
+    // keeps attached ones for as long as the program needs them.
+    const GlShader vs = compile(GL_VERTEX_SHADER, common + "#define VERTEX\n" + source);
+    const GlShader fs = compile(GL_FRAGMENT_SHADER, common + "#define FRAGMENT\n" + source);
+    program_ = GlProgram::generate();
+    glAttachShader(program_.get(), vs.get());
+    glAttachShader(program_.get(), fs.get());
+    glLinkProgram(program_.get());
     GLint ok = 0;
-    glGetProgramiv(program_, GL_LINK_STATUS, &ok);
+    glGetProgramiv(program_.get(), GL_LINK_STATUS, &ok);
     if (!ok) {
         GLint length = 0;
-        glGetProgramiv(program_, GL_INFO_LOG_LENGTH, &length);
+        glGetProgramiv(program_.get(), GL_INFO_LOG_LENGTH, &length);
         std::vector<char> log(static_cast<std::size_t>(std::max(length, 1)));
-        glGetProgramInfoLog(program_, length, nullptr, log.data());
-        glDeleteProgram(program_);
+        glGetProgramInfoLog(program_.get(), length, nullptr, log.data());
         throw std::runtime_error(std::string("shader program does not link: ") + log.data());
     }
 }
 
-ShaderProgram::ShaderProgram(ShaderProgram&& other) noexcept
-    : program_(other.program_), uniforms_(std::move(other.uniforms_)) {
-    other.program_ = 0;
-}
+void ShaderProgram::use() const { glUseProgram(program_.get()); }
 
-ShaderProgram::~ShaderProgram() {
-    if (program_) glDeleteProgram(program_);
-}
+GLint ShaderProgram::location(const char* name) const { return glGetUniformLocation(program_.get(), name); }
 
-void ShaderProgram::use() const { glUseProgram(program_); }
-
-GLint ShaderProgram::uniform(const char* name) {
-    auto it = uniforms_.find(name);
-    if (it == uniforms_.end()) it = uniforms_.emplace(name, glGetUniformLocation(program_, name)).first;
-    return it->second;
+GLint ShaderProgram::requiredLocation(const char* name) const {
+    const GLint at = location(name);
+    if (at < 0) {
+        std::string variant = defines_;
+        std::replace(variant.begin(), variant.end(), '\n', ' ');
+        while (!variant.empty() && variant.back() == ' ') variant.pop_back();
+        throw std::runtime_error("shader program" + (variant.empty() ? "" : " (" + variant + ")") +
+                                 " has no active uniform " + name);
+    }
+    return at;
 }
 
 } // namespace arcomp

@@ -3,13 +3,17 @@
 // version line and precision come from GlApi's shaderPreamble(), so sources
 // are written once for GL 3.3 and GLES 3.0.
 //
+// Uniform locations are looked up once, after linking, and kept by the
+// program's user (a struct of GLints beside the program), so that drawing
+// hashes no names:
+//
 //   ShaderProgram p(kSource, "#define SHADING 3\n");
-//   p.use(); glUniform4f(p.uniform("uBaseColor"), ...);
+//   const GLint baseColor = p.location("uBaseColor");
+//   p.use(); glUniform4f(baseColor, ...);
 
-#include "runtime/GlApi.hpp"
+#include "runtime/GlHandle.hpp"
 
 #include <string>
-#include <unordered_map>
 
 namespace arcomp {
 
@@ -18,17 +22,19 @@ public:
     // `source` holds both stages: the vertex stage sees VERTEX defined,
     // the fragment stage FRAGMENT. Throws std::runtime_error with the log.
     ShaderProgram(const std::string& source, const std::string& defines = {});
-    ~ShaderProgram();
-    ShaderProgram(const ShaderProgram&) = delete;
-    ShaderProgram& operator=(const ShaderProgram&) = delete;
-    ShaderProgram(ShaderProgram&& other) noexcept;
 
     void use() const;
-    GLint uniform(const char* name);
+
+    // -1 where the compiler dropped the uniform because this variant of the
+    // shader never reads it: legal, glUniform* with -1 does nothing.
+    GLint location(const char* name) const;
+    // For a uniform every variant reads: a missing one is a misspelt name
+    // or a shader that changed, and throws std::runtime_error naming it.
+    GLint requiredLocation(const char* name) const;
 
 private:
-    GLuint program_ = 0;
-    std::unordered_map<std::string, GLint> uniforms_;
+    GlProgram program_;
+    std::string defines_;  // says which variant, in errors
 };
 
 } // namespace arcomp

@@ -30,20 +30,15 @@ void main() { fragColor = texture(uImage, vUv); }
 
 } // namespace
 
-WindowPresenter::WindowPresenter() {
-    program_.emplace(kOverlayShader);
-    glGenVertexArrays(1, &vao_);
-    glGenTextures(1, &overlayTexture_);
-    glBindTexture(GL_TEXTURE_2D, overlayTexture_);
+WindowPresenter::OverlayProgram::OverlayProgram()
+    : program(kOverlayShader), image(program.requiredLocation("uImage")), rect(program.requiredLocation("uRect")) {}
+
+WindowPresenter::WindowPresenter() : vao_(GlVertexArray::generate()), overlayTexture_(GlTexture::generate()) {
+    glBindTexture(GL_TEXTURE_2D, overlayTexture_.get());
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-}
-
-WindowPresenter::~WindowPresenter() {
-    glDeleteTextures(1, &overlayTexture_);
-    glDeleteVertexArrays(1, &vao_);
 }
 
 void WindowPresenter::present(const RenderTarget& frame, glm::ivec2 windowSize, const cv::Mat* overlay) {
@@ -66,7 +61,7 @@ void WindowPresenter::present(const RenderTarget& frame, glm::ivec2 windowSize, 
 
     if (!overlay || overlay->empty()) return;
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glBindTexture(GL_TEXTURE_2D, overlayTexture_);
+    glBindTexture(GL_TEXTURE_2D, overlayTexture_.get());
     const glm::ivec2 overlaySize(overlay->cols, overlay->rows);
     if (overlaySize != overlaySize_) {
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, overlaySize.x, overlaySize.y, 0, GL_RGBA, GL_UNSIGNED_BYTE, overlay->data);
@@ -78,13 +73,13 @@ void WindowPresenter::present(const RenderTarget& frame, glm::ivec2 windowSize, 
     glDisable(GL_CULL_FACE);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied "over"
-    program_->use();
+    program_.program.use();
     glActiveTexture(GL_TEXTURE0);
-    glUniform1i(program_->uniform("uImage"), 0);
+    glUniform1i(program_.image, 0);
     const glm::vec2 ndc = 2.0f * glm::vec2(overlaySize) / glm::vec2(windowSize);
     const float margin = 2.0f * 8.0f / static_cast<float>(windowSize.y);
-    glUniform4f(program_->uniform("uRect"), -1.0f + margin, 1.0f - margin - ndc.y, ndc.x, ndc.y);
-    glBindVertexArray(vao_);
+    glUniform4f(program_.rect, -1.0f + margin, 1.0f - margin - ndc.y, ndc.x, ndc.y);
+    glBindVertexArray(vao_.get());
     glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
     glBindVertexArray(0);
     glDisable(GL_BLEND);

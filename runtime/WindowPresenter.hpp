@@ -8,6 +8,7 @@
 //   window.swap();
 //   writePng("shot.png", presenter.screenshot(window.framebufferSize()));
 
+#include "runtime/GlHandle.hpp"
 #include "runtime/RenderTarget.hpp"
 #include "runtime/ShaderProgram.hpp"
 
@@ -20,7 +21,6 @@ namespace arcomp {
 class WindowPresenter {
 public:
     WindowPresenter();
-    ~WindowPresenter();
     WindowPresenter(const WindowPresenter&) = delete;
     WindowPresenter& operator=(const WindowPresenter&) = delete;
 
@@ -30,8 +30,15 @@ public:
     Image screenshot(glm::ivec2 windowSize) const;
 
 private:
-    std::optional<ShaderProgram> program_;
-    GLuint vao_ = 0, overlayTexture_ = 0;
+    struct OverlayProgram {
+        OverlayProgram();
+        ShaderProgram program;
+        GLint image, rect;  // uniform locations
+    };
+
+    OverlayProgram program_;
+    GlVertexArray vao_;
+    GlTexture overlayTexture_;
     glm::ivec2 overlaySize_{0};
 };
 

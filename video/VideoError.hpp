@@ -2,21 +2,15 @@
 // A video input that cannot be used: what() reads
 // "<source>: <where>: <reason>", e.g.
 // "clips/a.avi: frame 287 of 795: decoder returned no image (truncated or damaged)".
+// Bad input like any other (graph/core/BadInput.hpp holds no scene types).
 
-#include <stdexcept>
-#include <string>
+#include "graph/core/BadInput.hpp"
 
 namespace arcomp {
 
-class VideoError : public std::runtime_error {
+class VideoError : public BadInput {
 public:
-    VideoError(std::string source, std::string where, std::string reason)
-        : std::runtime_error(source + ": " + (where.empty() ? "" : where + ": ") + reason),
-          source(std::move(source)), where(std::move(where)), reason(std::move(reason)) {}
-
-    std::string source;
-    std::string where;
-    std::string reason;
+    using BadInput::BadInput;
 };
 
 } // namespace arcomp

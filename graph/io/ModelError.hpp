@@ -3,20 +3,18 @@
 // "<file>: <where>: <reason>", where `where` is a JSON pointer for glTF
 // ("/accessors/3/bufferView") or "line N" for OBJ.
 
-#include <stdexcept>
+#include "graph/core/BadInput.hpp"
+
 #include <string>
 
 namespace arcomp {
 
-class ModelError : public std::runtime_error {
+class ModelError : public BadInput {
 public:
-    ModelError(std::string file, std::string where, std::string reason)
-        : std::runtime_error(file + ": " + (where.empty() ? "" : where + ": ") + reason),
-          file(std::move(file)), where(std::move(where)), reason(std::move(reason)) {}
+    ModelError(std::string file_, std::string where_, std::string reason_)
+        : BadInput(std::move(file_), std::move(where_), std::move(reason_)), file(source) {}
 
-    std::string file;
-    std::string where;
-    std::string reason;
+    std::string file;  // the same as source: the name model code has always used
 };
 
 } // namespace arcomp

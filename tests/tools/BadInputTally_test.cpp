@@ -9,8 +9,7 @@
 
 #include "../support/ChildProcess.hpp"
 #include "../support/TempDir.hpp"
-#include "graph/io/ModelError.hpp"
-#include "runtime/ConfigError.hpp"
+#include "graph/core/BadInput.hpp"
 #include "runtime/SceneFile.hpp"
 #include "tests/support/BoxStation.hpp"
 
@@ -62,10 +61,7 @@ ChildResult loadInChild(const fs::path& file) {
             const arcomp::SceneFile scene = arcomp::loadSceneFile(file);
             // check refuses a config whose models are skipped; a model with warnings still loads
             return scene.warnings.empty() || file.extension() != ".yaml" ? 0 : 2;
-        } catch (const arcomp::ModelError& e) {
-            std::fprintf(stderr, "%s\n", e.what());
-            return 2;
-        } catch (const arcomp::ConfigError& e) {
+        } catch (const arcomp::BadInput& e) {  // ModelError, ConfigError
             std::fprintf(stderr, "%s\n", e.what());
             return 2;
         } catch (const std::exception& e) {

@@ -19,7 +19,7 @@ int check(const std::string& file) {
     try {
         Station::preflight(cfg);  // calibration, gaze track, matte settings
     } catch (const std::exception& e) {
-        throw InputError(file + ": " + e.what());
+        throw InputError(file, "", e.what());
     }
     World world;  // everything a station would build, voxel files included
     std::vector<std::string> problems;

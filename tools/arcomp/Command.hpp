@@ -13,14 +13,16 @@
 // benchmark prints exactly one JSON object as the last line of stdout), and
 // `arcomp bake <name>` through registerBake.
 //
-// Exit codes: 0 ok, 1 runtime failure, 2 bad input or usage. Throwing
-// InputError (or ModelError, ConfigError) from an action gives 2 with its
+// Exit codes: 0 ok, 1 runtime failure, 2 bad input or usage. Throwing a
+// BadInput (graph/core/BadInput.hpp: InputError below, ModelError,
+// ConfigError, VideoError, GazeTrackError) from an action gives 2 with its
 // message on stderr; any other exception gives 1.
+
+#include "graph/core/BadInput.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <functional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -42,9 +44,12 @@ std::vector<Command>& registeredCommands();
 std::vector<Command>& registeredBenches();
 std::vector<Command>& registeredBakes();
 
-// Bad input from the user: a missing file, a value out of range.
-struct InputError : std::runtime_error {
-    using std::runtime_error::runtime_error;
+// Bad input from the user: a missing file, a value out of range. The
+// one-message form is the reason alone (no source, no where), so what() is
+// the message as given.
+struct InputError : BadInput {
+    explicit InputError(std::string reason_) : BadInput("", "", std::move(reason_)) {}
+    using BadInput::BadInput;
 };
 
 enum ExitCode : int { kExitOk = 0, kExitFailure = 1, kExitBadInput = 2 };

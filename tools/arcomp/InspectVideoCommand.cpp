@@ -8,7 +8,6 @@
 #include "video/LibcameraSource.hpp"
 #include "video/TestPatternSource.hpp"
 #include "video/V4l2Source.hpp"
-#include "video/VideoError.hpp"
 
 #include <cstdio>
 
@@ -36,23 +35,20 @@ void printPattern(const std::string& arg) {
     std::printf("pattern: %s (BGR, generated, deterministic)\n", p.name().c_str());
 }
 
+// A VideoError (no such file, a device that will not open) is BadInput: exit 2.
 int inspectVideo(const std::string& source) {
-    try {
-        if (source.rfind("/dev/", 0) == 0) {
-            printDevice(source);
-        } else if (source == "pattern" || source.rfind("pattern:", 0) == 0) {
-            printPattern(source);
-        } else if (source == "libcamera") {
-            const auto cams = listLibcameraCameras();
-            std::printf("libcamera: %zu camera(s)\n", cams.size());
-            for (const auto& id : cams) std::printf("  %s\n", id.c_str());
-        } else {
-            const VideoFileInfo i = probeVideoFile(source);
-            std::printf("file: %s\n  codec %s\n  size %dx%d\n  fps %.3f\n  frames %lld\n", source.c_str(),
-                        i.codec.c_str(), i.width, i.height, i.fps, static_cast<long long>(i.frameCount));
-        }
-    } catch (const VideoError& e) {
-        throw InputError(e.what());
+    if (source.rfind("/dev/", 0) == 0) {
+        printDevice(source);
+    } else if (source == "pattern" || source.rfind("pattern:", 0) == 0) {
+        printPattern(source);
+    } else if (source == "libcamera") {
+        const auto cams = listLibcameraCameras();
+        std::printf("libcamera: %zu camera(s)\n", cams.size());
+        for (const auto& id : cams) std::printf("  %s\n", id.c_str());
+    } else {
+        const VideoFileInfo i = probeVideoFile(source);
+        std::printf("file: %s\n  codec %s\n  size %dx%d\n  fps %.3f\n  frames %lld\n", source.c_str(),
+                    i.codec.c_str(), i.width, i.height, i.fps, static_cast<long long>(i.frameCount));
     }
     return kExitOk;
 }

@@ -9,7 +9,6 @@
 #include "runtime/StationLog.hpp"
 #include "runtime/StationRunner.hpp"
 #include "tools/arcomp/Command.hpp"
-#include "video/VideoError.hpp"
 
 #include <iostream>
 #include <memory>
@@ -54,12 +53,7 @@ int replay(const ReplayOptions& o) {
     // bad input (exit 2) rather than a runtime failure. A reload with a
     // changed video section opens again through the same path.
     std::vector<std::string> warnings;
-    std::optional<StationInput> first;
-    try {
-        first = openReplayInput(*cfg.compositing.video, warnings);
-    } catch (const VideoError& e) {
-        throw InputError(e.what());
-    }
+    std::optional<StationInput> first = openReplayInput(*cfg.compositing.video, warnings);
     const bool endless = cfg.compositing.video->kind == SourceKind::Pattern || !warnings.empty() ||
                          cfg.compositing.video->loop;
     const long frames = o.frames >= 0 ? o.frames : endless ? kPatternFrames : -1;

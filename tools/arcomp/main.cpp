@@ -2,11 +2,8 @@
 // Command.hpp); this file only parses the command line and maps failures to
 // exit codes.
 
-#include "runtime/GazeSource.hpp"
-#include "graph/io/ModelError.hpp"
-#include "runtime/ConfigError.hpp"
+#include "graph/core/BadInput.hpp"
 #include "tools/arcomp/Command.hpp"
-#include "video/VideoError.hpp"
 
 #include <spdlog/spdlog.h>
 
@@ -23,12 +20,6 @@ void addAll(CLI::App& parent, std::vector<Command>& commands, std::vector<std::p
         CLI::App* sub = parent.add_subcommand(c.name, c.help);
         actions.emplace_back(sub, c.setup(*sub));
     }
-}
-
-bool isBadInput(const std::exception& e) {
-    return dynamic_cast<const InputError*>(&e) || dynamic_cast<const ModelError*>(&e) ||
-           dynamic_cast<const ConfigError*>(&e) || dynamic_cast<const VideoError*>(&e) ||
-           dynamic_cast<const GazeTrackError*>(&e);
 }
 
 } // namespace
@@ -61,9 +52,12 @@ int main(int argc, char** argv) {
         if (!sub->parsed()) continue;
         try {
             return action();
+        } catch (const BadInput& e) {
+            std::cerr << "arcomp " << sub->get_name() << ": " << e.what() << "\n";
+            return kExitBadInput;
         } catch (const std::exception& e) {
             std::cerr << "arcomp " << sub->get_name() << ": " << e.what() << "\n";
-            return isBadInput(e) ? kExitBadInput : kExitFailure;
+            return kExitFailure;
         }
     }
     return kExitBadInput;

@@ -57,8 +57,10 @@
 #include "runtime/RenderTarget.hpp"
 #include "tools/arcomp/CliParse.hpp"
 #include "tools/arcomp/Command.hpp"
+#include "tools/bench/BenchJson.hpp"
 #include "tools/bench/FlightScene.hpp"
 #include "tools/bench/LinePlot.hpp"
+#include "tools/bench/Stats.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -67,7 +69,6 @@
 #include <iostream>
 #include <memory>
 #include <numeric>
-#include <sstream>
 
 namespace arcomp {
 
@@ -95,15 +96,6 @@ struct Series {
     std::vector<std::size_t> items, reduced;
 };
 
-double percentile(std::vector<double> v, double p) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    const double at = p / 100.0 * static_cast<double>(v.size() - 1);
-    const auto lo = static_cast<std::size_t>(std::floor(at));
-    const std::size_t hi = std::min(lo + 1, v.size() - 1);
-    return v[lo] + (v[hi] - v[lo]) * (at - static_cast<double>(lo));
-}
-
 double stddev(const std::vector<double>& v) {
     if (v.size() < 2) return 0.0;
     const double mean = std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
@@ -112,13 +104,11 @@ double stddev(const std::vector<double>& v) {
     return std::sqrt(s / static_cast<double>(v.size() - 1));
 }
 
-std::string frameStats(const std::vector<double>& ms) {
-    std::ostringstream j;
+// A run's frame-time fields, into the object `j` has open.
+void writeFrameStats(BenchJson& j, const std::vector<double>& ms) {
     const double lo = *std::min_element(ms.begin(), ms.end()), hi = *std::max_element(ms.begin(), ms.end());
-    j << "\"frame_ms_median\":" << percentile(ms, 50) << ",\"frame_ms_p95\":" << percentile(ms, 95)
-      << ",\"frame_ms_max\":" << hi << ",\"frame_ms_min\":" << lo << ",\"frame_ms_stddev\":" << stddev(ms)
-      << ",\"max_min_ratio\":" << (lo > 0 ? hi / lo : 0.0);
-    return j.str();
+    j.field("frame_ms_median", median(ms)).field("frame_ms_p95", percentile(ms, 95)).field("frame_ms_max", hi)
+        .field("frame_ms_min", lo).field("frame_ms_stddev", stddev(ms)).field("max_min_ratio", lo > 0 ? hi / lo : 0.0);
 }
 
 // Flies the path once; with a budget, each frame goes through it.
@@ -173,8 +163,8 @@ double repeatJitterPct(FlightScene& flight, Renderer& renderer, FrameTimer& time
         renderer.draw(flight.world.scene, list, view, {.clearColor = kSky});
         ms.push_back(timer.end());
     }
-    const double median = percentile(ms, 50);
-    return median > 0.0 ? 100.0 * (percentile(ms, 95) / median - 1.0) : 0.0;
+    const double middle = median(ms);
+    return middle > 0.0 ? 100.0 * (percentile(ms, 95) / middle - 1.0) : 0.0;
 }
 
 std::vector<double> frameAxis(std::size_t n) {
@@ -250,7 +240,7 @@ int run(const Options& o) {
     std::vector<double> tableGain;
     for (std::size_t f = 0; f < unmanaged.ms.size(); ++f)
         if (unmanaged.itemsMs[f] > 0.0) tableGain.push_back((unmanaged.ms[f] - table.overheadMs) / unmanaged.itemsMs[f]);
-    const double gainU = tableGain.empty() ? 1.0 : std::max(0.25, percentile(tableGain, 50));
+    const double gainU = tableGain.empty() ? 1.0 : std::max(0.25, median(tableGain));
     double floorMs = 0.0;
     for (double items : unmanaged.floorItemsMs) floorMs = std::max(floorMs, gainU * items + table.overheadMs);
     const double unmanagedFastest = *std::min_element(unmanaged.ms.begin(), unmanaged.ms.end());
@@ -284,7 +274,7 @@ int run(const Options& o) {
         unmanagedPredictionError.push_back(100.0 * std::abs(unmanaged.predicted[f] - unmanaged.ms[f]) / unmanaged.ms[f]);
     const double n = static_cast<double>(managed.ms.size());
     const double p95Dev = percentile(absDev, 95), over20Pct = 100.0 * static_cast<double>(over20) / n;
-    const double predErr = percentile(predictionError, 50);
+    const double predErr = median(predictionError);
     const double ratio = *std::max_element(unmanaged.ms.begin(), unmanaged.ms.end()) / unmanagedFastest;
 
     {
@@ -310,23 +300,33 @@ int run(const Options& o) {
     prediction.writePng(out / "budget_prediction.png");
 
     const bool met = p95Dev <= 10.0 && over20Pct <= 1.0 && predErr <= 10.0 && ratio >= 3.0;
-    std::ostringstream json;
-    json << "{\"bench\":\"budget\",\"device\":\"" << glDescription() << "\",\"timer\":\"" << timer.method()
-         << "\",\"raster_threads\":" << o.rasterThreads << ",\"repeat_jitter_p95_pct\":" << jitterPct
-         << ",\"size\":[" << size.x << "," << size.y << "],\"frames\":" << o.frames
-         << ",\"mountains\":" << o.mountains << ",\"triangles_per_level\":[" << flight.trianglesPerLevel[0] << ","
-         << flight.trianglesPerLevel[1] << "," << flight.trianglesPerLevel[2] << "],\"calibration_s\":"
-         << calibrationSeconds << ",\"target_ms\":" << targetMs
-         << ",\"target_rule\":\"" << targetRule << "\",\"floor_ms_max_estimate\":" << floorMs
-         << ",\"unmanaged\":{" << frameStats(unmanaged.ms)
-         << ",\"frames_over_target_pct\":" << 100.0 * static_cast<double>(unmanagedOver) / n
-         << ",\"prediction_error_pct_median\":" << percentile(unmanagedPredictionError, 50) << "}"
-         << ",\"managed\":{" << frameStats(managed.ms) << ",\"p95_abs_dev_from_target_pct\":" << p95Dev
-         << ",\"frames_over_target_by_20pct_pct\":" << over20Pct
-         << ",\"predicted_p95_abs_dev_from_target_pct\":" << percentile(predictedDev, 95) << ",\"mean_quality\":" << qualityArea / n
-         << ",\"prediction_error_pct_median\":" << predErr << ",\"apply_us_median\":" << percentile(managed.applyUs, 50)
-         << ",\"final_gain\":" << budget.model().gain() << ",\"final_offset_ms\":" << budget.model().offset() << "}"
-         << ",\"targets_met\":" << (met ? "true" : "false") << ",\"out\":\"" << out.string() << "\"}";
+    BenchJson json;
+    json.field("bench", "budget").field("device", glDescription()).field("timer", timer.method())
+        .field("raster_threads", o.rasterThreads).field("repeat_jitter_p95_pct", jitterPct);
+    json.beginArray("size").value(size.x).value(size.y).end();
+    json.field("frames", o.frames).field("mountains", o.mountains);
+    json.beginArray("triangles_per_level");
+    for (const std::size_t triangles : flight.trianglesPerLevel) json.value(triangles);
+    json.end();
+    json.field("calibration_s", calibrationSeconds).field("target_ms", targetMs).field("target_rule", targetRule)
+        .field("floor_ms_max_estimate", floorMs);
+    json.beginObject("unmanaged");
+    writeFrameStats(json, unmanaged.ms);
+    json.field("frames_over_target_pct", 100.0 * static_cast<double>(unmanagedOver) / n)
+        .field("prediction_error_pct_median", median(unmanagedPredictionError))
+        .end();
+    json.beginObject("managed");
+    writeFrameStats(json, managed.ms);
+    json.field("p95_abs_dev_from_target_pct", p95Dev)
+        .field("frames_over_target_by_20pct_pct", over20Pct)
+        .field("predicted_p95_abs_dev_from_target_pct", percentile(predictedDev, 95))
+        .field("mean_quality", qualityArea / n)
+        .field("prediction_error_pct_median", predErr)
+        .field("apply_us_median", median(managed.applyUs))
+        .field("final_gain", budget.model().gain())
+        .field("final_offset_ms", budget.model().offset())
+        .end();
+    json.field("targets_met", met).field("out", out.string());
     std::cout << json.str() << std::endl;
     return kExitOk;
 }

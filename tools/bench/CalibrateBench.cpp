@@ -11,12 +11,12 @@
 #include "runtime/RenderTarget.hpp"
 #include "tools/arcomp/CliParse.hpp"
 #include "tools/arcomp/Command.hpp"
+#include "tools/bench/BenchJson.hpp"
 #include "tools/bench/FlightScene.hpp"
 
 #include <chrono>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 namespace arcomp {
 
@@ -49,19 +49,20 @@ int run(const Options& o) {
     writeCalibration(file, model, {glDescription(), size});
     std::cerr << "wrote " << file.string() << "\n";
 
-    std::ostringstream json;
-    json << "{\"bench\":\"calibrate\",\"device\":\"" << glDescription() << "\",\"timer\":\"" << timer.method()
-         << "\",\"size\":[" << size.x << "," << size.y << "],\"seconds\":" << seconds
-         << ",\"overhead_ms\":" << model.overheadMs << ",\"levels\":[";
+    BenchJson json;
+    json.field("bench", "calibrate").field("device", glDescription()).field("timer", timer.method());
+    json.beginArray("size").value(size.x).value(size.y).end();
+    json.field("seconds", seconds).field("overhead_ms", model.overheadMs);
+    json.beginArray("levels");
     for (std::size_t l = 0; l < model.levels(); ++l) {
-        json << (l ? "," : "") << "{\"triangles\":" << flight.trianglesPerLevel[l];
+        json.beginObject().field("triangles", flight.trianglesPerLevel[l]);
         for (int s = 0; s < kShadingCount; ++s) {
             const CostCoefficients& c = model.at(l, static_cast<Shading>(s));
-            json << ",\"" << toString(static_cast<Shading>(s)) << "\":[" << c.msPerPixel << "," << c.ms << "]";
+            json.beginArray(toString(static_cast<Shading>(s))).value(c.msPerPixel).value(c.ms).end();
         }
-        json << "}";
+        json.end();
     }
-    json << "],\"file\":\"" << file.string() << "\"}";
+    json.end().field("file", file.string());
     std::cout << json.str() << std::endl;
     return kExitOk;
 }

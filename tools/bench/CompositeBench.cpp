@@ -20,6 +20,8 @@
 #include "runtime/ReplayInput.hpp"
 #include "runtime/Station.hpp"
 #include "tools/arcomp/Command.hpp"
+#include "tools/bench/BenchJson.hpp"
+#include "tools/bench/Stats.hpp"
 #include "video/FileSource.hpp"
 #include "video/TestPatternSource.hpp"
 #include "video/VideoFileWriter.hpp"
@@ -28,7 +30,6 @@
 #include <chrono>
 #include <filesystem>
 #include <iostream>
-#include <sstream>
 
 #include <unistd.h>
 
@@ -43,12 +44,6 @@ struct CompositeOptions {
     int frames = 100;
     int warmup = 10;
 };
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
 
 struct RunResult {
     std::string source;
@@ -106,16 +101,24 @@ RunResult run(Station& station, const std::string& source, int frames, int warmu
     return r;
 }
 
-std::string json(const RunResult& r) {
-    std::ostringstream o;
+// One run's fields, into the object `j` has open.
+void writeRun(BenchJson& j, const RunResult& r) {
     const FrameStats& m = r.medians;
-    o << "{\"source\":\"" << r.source << "\",\"size\":[" << r.size.x << "," << r.size.y << "],\"frames\":" << r.frames
-      << ",\"fps\":" << r.fps << ",\"mean_ms\":" << r.meanTotal << ",\"median_ms\":{\"capture\":" << m.captureMs
-      << ",\"matte\":" << m.matteMs << ",\"update\":" << m.updateMs << ",\"select\":" << m.selectMs
-      << ",\"cg_render\":" << m.renderMs << ",\"holdout\":" << m.holdoutMs << ",\"composite\":" << m.compositeMs
-      << ",\"output\":" << m.outputMs << ",\"total\":" << m.totalMs << "},\"cg_triangles\":" << m.cgTriangles
-      << ",\"holdout_triangles\":" << m.holdoutTriangles << "}";
-    return o.str();
+    j.field("source", r.source);
+    j.beginArray("size").value(r.size.x).value(r.size.y).end();
+    j.field("frames", r.frames).field("fps", r.fps).field("mean_ms", r.meanTotal);
+    j.beginObject("median_ms")
+        .field("capture", m.captureMs)
+        .field("matte", m.matteMs)
+        .field("update", m.updateMs)
+        .field("select", m.selectMs)
+        .field("cg_render", m.renderMs)
+        .field("holdout", m.holdoutMs)
+        .field("composite", m.compositeMs)
+        .field("output", m.outputMs)
+        .field("total", m.totalMs)
+        .end();
+    j.field("cg_triangles", m.cgTriangles).field("holdout_triangles", m.holdoutTriangles);
 }
 
 fs::path scratchDir() {
@@ -229,16 +232,26 @@ int bench(const CompositeOptions& o) {
 
     const bool vtestOk = vtest.fps >= 60.0, hdOk = hdRun.fps >= 30.0,
                holdoutOk = sil.medians.holdoutMs < full.medians.holdoutMs;
-    std::cout << "{\"bench\":\"composite\",\"gl\":\"" << toString(context->api()) << "\",\"vtest\":" << json(vtest)
-              << ",\"hd\":" << json(hdRun) << ",\"hd_matte_scale\":0.25"
-              << ",\"holdout\":{\"occluders\":\"" << used << "\",\"objects_in_front\":" << sil.medians.objectsInFront
-              << ",\"cg_triangles\":" << modelTriangles << ",\"silhouette_ms\":" << sil.medians.holdoutMs
-              << ",\"full_ms\":" << full.medians.holdoutMs << ",\"silhouette_triangles\":" << sil.medians.holdoutTriangles
-              << ",\"full_triangles\":" << full.medians.holdoutTriangles << ",\"setup_with_bake_ms\":" << bakeMs
-              << "},\"targets\":{\"vtest_60fps\":" << (vtestOk ? "true" : "false")
-              << ",\"hd_30fps\":" << (hdOk ? "true" : "false")
-              << ",\"silhouette_cheaper\":" << (holdoutOk ? "true" : "false") << "},\"targets_met\":"
-              << (vtestOk && hdOk && holdoutOk ? "true" : "false") << "}\n";
+    BenchJson j;
+    j.field("bench", "composite").field("gl", toString(context->api()));
+    j.beginObject("vtest");
+    writeRun(j, vtest);
+    j.end().beginObject("hd");
+    writeRun(j, hdRun);
+    j.end().field("hd_matte_scale", 0.25);
+    j.beginObject("holdout")
+        .field("occluders", used)
+        .field("objects_in_front", sil.medians.objectsInFront)
+        .field("cg_triangles", modelTriangles)
+        .field("silhouette_ms", sil.medians.holdoutMs)
+        .field("full_ms", full.medians.holdoutMs)
+        .field("silhouette_triangles", sil.medians.holdoutTriangles)
+        .field("full_triangles", full.medians.holdoutTriangles)
+        .field("setup_with_bake_ms", bakeMs)
+        .end();
+    j.beginObject("targets").field("vtest_60fps", vtestOk).field("hd_30fps", hdOk).field("silhouette_cheaper", holdoutOk).end();
+    j.field("targets_met", vtestOk && hdOk && holdoutOk);
+    std::cout << j.str() << "\n";
     return kExitOk;
 }
 

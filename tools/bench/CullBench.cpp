@@ -5,7 +5,9 @@
 #include "graph/lod/Lod.hpp"
 #include "graph/core/SelectPass.hpp"
 #include "tools/arcomp/Command.hpp"
+#include "tools/bench/BenchJson.hpp"
 #include "tools/bench/CullScene.hpp"
+#include "tools/bench/Stats.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -13,7 +15,6 @@
 #include <chrono>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 namespace arcomp {
 
@@ -78,13 +79,6 @@ CullRun runArcompCull(ArcompCullScene& a, const CullScene& s, int frames) {
     return run;
 }
 
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 struct Summary {
     double medianMs = 0, minMs = 0, maxMs = 0;
     double visibleMedian = 0;
@@ -119,13 +113,16 @@ int runCullBench(std::uint32_t objects, const std::string& layoutName, int frame
     const CullRun ours = runArcompCull(*scene, description, frames);
     const Summary s = summarize(ours);
 
-    std::ostringstream json;
-    json << "{\"bench\":\"cull\",\"objects\":" << objects << ",\"layout\":\"" << layoutName << "\",\"frames\":" << frames
-         << ",\"warmup_frames\":" << kWarmupFrames << ",\"ms_per_frame_median\":" << s.medianMs
-         << ",\"ms_per_frame_min\":" << s.minMs << ",\"ms_per_frame_max\":" << s.maxMs
-         << ",\"ns_per_object_median\":" << s.medianMs * 1e6 / objects << ",\"visible_median\":" << s.visibleMedian
-         << ",\"lod_level_counts\":[" << s.levels[0] << "," << s.levels[1] << "," << s.levels[2] << "]"
-         << ",\"nodes\":" << scene->scene.nodeCount();
+    BenchJson json;
+    const auto levelCounts = [&json](const char* key, const Summary& summary) {
+        json.beginArray(key).value(summary.levels[0]).value(summary.levels[1]).value(summary.levels[2]).end();
+    };
+    json.field("bench", "cull").field("objects", objects).field("layout", layoutName).field("frames", frames)
+        .field("warmup_frames", kWarmupFrames).field("ms_per_frame_median", s.medianMs)
+        .field("ms_per_frame_min", s.minMs).field("ms_per_frame_max", s.maxMs)
+        .field("ns_per_object_median", s.medianMs * 1e6 / objects).field("visible_median", s.visibleMedian);
+    levelCounts("lod_level_counts", s);
+    json.field("nodes", scene->scene.nodeCount());
 #ifdef ARCOMP_HAVE_OSG
     scene.reset();  // give OpenSceneGraph the memory
     std::cerr << "cull: timing OpenSceneGraph CullVisitor\n";
@@ -133,16 +130,14 @@ int runCullBench(std::uint32_t objects, const std::string& layoutName, int frame
     const Summary o = summarize(osg);
     std::size_t mismatched = 0;
     for (std::size_t f = 0; f < ours.counts.size(); ++f) mismatched += ours.counts[f] == osg.counts[f] ? 0 : 1;
-    json << ",\"osg_ms_per_frame_median\":" << o.medianMs << ",\"osg_ms_per_frame_min\":" << o.minMs
-         << ",\"osg_ms_per_frame_max\":" << o.maxMs << ",\"osg_visible_median\":" << o.visibleMedian
-         << ",\"osg_lod_level_counts\":[" << o.levels[0] << "," << o.levels[1] << "," << o.levels[2] << "]"
-         << ",\"frames_with_count_mismatch\":" << mismatched
-         << ",\"counts_match_osg\":" << (mismatched == 0 ? "true" : "false")
-         << ",\"speedup_vs_osg\":" << (s.medianMs > 0 ? o.medianMs / s.medianMs : 0.0);
+    json.field("osg_ms_per_frame_median", o.medianMs).field("osg_ms_per_frame_min", o.minMs)
+        .field("osg_ms_per_frame_max", o.maxMs).field("osg_visible_median", o.visibleMedian);
+    levelCounts("osg_lod_level_counts", o);
+    json.field("frames_with_count_mismatch", mismatched).field("counts_match_osg", mismatched == 0)
+        .field("speedup_vs_osg", s.medianMs > 0 ? o.medianMs / s.medianMs : 0.0);
 #else
-    json << ",\"osg\":\"not built (OpenSceneGraph not found)\"";
+    json.field("osg", "not built (OpenSceneGraph not found)");
 #endif
-    json << "}";
     std::cout << json.str() << std::endl;
     return kExitOk;
 }

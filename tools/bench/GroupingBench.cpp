@@ -12,6 +12,7 @@
 #include "graph/grouping/GroupingNodes.hpp"
 #include "graph/core/SelectPass.hpp"
 #include "tools/arcomp/Command.hpp"
+#include "tools/bench/BenchJson.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -139,21 +140,23 @@ int run(const Options& o) {
     const double frames = double(o.frames);
     const bool big = o.objects >= 100000;
     const double buildTarget = big ? 20000.0 : 1000.0;
-    std::cout << "{\"bench\":\"grouping\",\"objects\":" << o.objects << ",\"build_ms\":" << buildMs
-              << ",\"tree_depth\":" << tree.depth() << ",\"groups\":" << groups << ",\"top_level\":" << tree.roots().size()
-              << ",\"frames\":" << o.frames << ",\"select_ms_per_frame\":" << selectMs / frames
-              << ",\"drawn_items_per_frame\":" << double(drawn) / frames
-              << ",\"visited_nodes_per_frame\":" << double(visited) / frames
-              << ",\"baseline_ungrouped_select_ms_per_frame\":" << ungroupedMs / frames
-              << ",\"baseline_ungrouped_items_per_frame\":" << double(drawnUngrouped) / frames
-              << ",\"moving_per_frame\":" << moving << ",\"rebuild_ms_per_frame\":" << rebuildMs / frames
-              << ",\"refitted_per_frame\":" << double(total.refitted) / frames
-              << ",\"dissolved_per_frame\":" << double(total.dissolved) / frames
-              << ",\"merged_per_frame\":" << double(total.merged) / frames << ",\"targets\":{\"build_ms\":" << buildTarget
-              << ",\"select_ms_per_frame\":2,\"rebuild_ms_per_frame\":5},\"build_within_target\":"
-              << (buildMs < buildTarget ? "true" : "false") << ",\"select_within_target\":"
-              << (selectMs / frames <= 2.0 ? "true" : "false") << ",\"rebuild_within_target\":"
-              << (rebuildMs / frames <= 5.0 ? "true" : "false") << "}\n";
+    BenchJson j;
+    j.field("bench", "grouping").field("objects", o.objects).field("build_ms", buildMs)
+        .field("tree_depth", tree.depth()).field("groups", groups).field("top_level", tree.roots().size())
+        .field("frames", o.frames).field("select_ms_per_frame", selectMs / frames)
+        .field("drawn_items_per_frame", double(drawn) / frames)
+        .field("visited_nodes_per_frame", double(visited) / frames)
+        .field("baseline_ungrouped_select_ms_per_frame", ungroupedMs / frames)
+        .field("baseline_ungrouped_items_per_frame", double(drawnUngrouped) / frames)
+        .field("moving_per_frame", moving).field("rebuild_ms_per_frame", rebuildMs / frames)
+        .field("refitted_per_frame", double(total.refitted) / frames)
+        .field("dissolved_per_frame", double(total.dissolved) / frames)
+        .field("merged_per_frame", double(total.merged) / frames);
+    j.beginObject("targets").field("build_ms", buildTarget).field("select_ms_per_frame", 2).field("rebuild_ms_per_frame", 5).end();
+    j.field("build_within_target", buildMs < buildTarget)
+        .field("select_within_target", selectMs / frames <= 2.0)
+        .field("rebuild_within_target", rebuildMs / frames <= 5.0);
+    std::cout << j.str() << "\n";
     return kExitOk;
 }
 

@@ -16,13 +16,13 @@
 #include "runtime/Renderer.hpp"
 #include "tools/arcomp/CliParse.hpp"
 #include "tools/arcomp/Command.hpp"
+#include "tools/bench/BenchJson.hpp"
 #include "tools/bench/LinePlot.hpp"
 
 #include <cmath>
 #include <fstream>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 namespace arcomp {
 
@@ -39,13 +39,6 @@ struct Curve {
 };
 
 const glm::vec4 kSky{0.62f, 0.72f, 0.82f, 1.0f};
-
-std::string number(double v) {
-    if (!std::isfinite(v)) return "null";
-    std::ostringstream s;
-    s << v;
-    return s.str();
-}
 
 int run(const Options& o) {
     if (o.out.empty()) throw InputError("--out: a folder is required");
@@ -125,20 +118,36 @@ int run(const Options& o) {
         (void)impTris;
     }
 
-    std::cout << "{\"bench\":\"grouping-forest\",\"omega_t_steps\":" << thresholds.size()
-              << ",\"full_triangles\":" << curves[0].full.front()
-              << ",\"grouping_helps_from_omega_t\":{\"mixed\":" << number(helpsFrom[0]) << ",\"green\":" << number(helpsFrom[1])
-              << "},\"triangles_at_omega_t_0_1\":{\"mixed_simplified\":" << curves[0].simplified.back()
-              << ",\"mixed_grouped\":" << curves[0].grouped.back() << ",\"green_grouped\":" << curves[1].grouped.back()
-              << "},\"render_omega_t\":" << o.omegaT << ",\"render_triangles\":{\"mixed\":{\"full\":" << trianglesAt[0][0]
-              << ",\"simplified\":" << trianglesAt[0][1] << ",\"grouped\":" << trianglesAt[0][2]
-              << "},\"green\":{\"full\":" << trianglesAt[1][0] << ",\"simplified\":" << trianglesAt[1][1]
-              << ",\"grouped\":" << trianglesAt[1][2] << "}},\"psnr_db_vs_full\":{\"mixed_simplified\":"
-              << number(psnrSimplified[0]) << ",\"mixed_grouped_box\":" << number(psnrBox[0])
-              << ",\"mixed_grouped_impostor\":" << number(psnrImpostor[0]) << ",\"green_simplified\":"
-              << number(psnrSimplified[1]) << ",\"green_grouped_box\":" << number(psnrBox[1])
-              << ",\"green_grouped_impostor\":" << number(psnrImpostor[1]) << "},\"csv\":\""
-              << (dir / "forest.csv").string() << "\",\"plot\":\"" << (dir / "forest.png").string() << "\"}\n";
+    // Ωt lies on GroupingParams' 0.001 grid, summed in float steps: more
+    // decimals than the grid's would print their rounding.
+    const auto onGrid = [](double t) { return Fixed{t, 3}; };
+    BenchJson j;
+    j.field("bench", "grouping-forest").field("omega_t_steps", thresholds.size())
+        .field("full_triangles", curves[0].full.front());
+    j.beginObject("grouping_helps_from_omega_t").field("mixed", onGrid(helpsFrom[0])).field("green", onGrid(helpsFrom[1])).end();
+    j.beginObject("triangles_at_omega_t_0_1")
+        .field("mixed_simplified", curves[0].simplified.back())
+        .field("mixed_grouped", curves[0].grouped.back())
+        .field("green_grouped", curves[1].grouped.back())
+        .end();
+    j.field("render_omega_t", o.omegaT);
+    j.beginObject("render_triangles");
+    for (int f = 0; f < 2; ++f)
+        j.beginObject(names[f])
+            .field("full", trianglesAt[f][0])
+            .field("simplified", trianglesAt[f][1])
+            .field("grouped", trianglesAt[f][2])
+            .end();
+    j.end();
+    // Identical images have no PSNR (infinite): null.
+    j.beginObject("psnr_db_vs_full");
+    for (int f = 0; f < 2; ++f)
+        j.field(std::string(names[f]) + "_simplified", psnrSimplified[f])
+            .field(std::string(names[f]) + "_grouped_box", psnrBox[f])
+            .field(std::string(names[f]) + "_grouped_impostor", psnrImpostor[f]);
+    j.end();
+    j.field("csv", (dir / "forest.csv").string()).field("plot", (dir / "forest.png").string());
+    std::cout << j.str() << "\n";
     return kExitOk;
 }
 

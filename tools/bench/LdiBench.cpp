@@ -26,6 +26,8 @@
 #include "graph/scenes/ProceduralTree.hpp"
 #include "graph/points/Voxelizer.hpp"
 #include "tools/arcomp/Command.hpp"
+#include "tools/bench/BenchJson.hpp"
+#include "tools/bench/Stats.hpp"
 
 #include <glm/gtc/constants.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -36,7 +38,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
-#include <sstream>
+#include <string>
 
 namespace arcomp {
 
@@ -70,11 +72,6 @@ void compare(const PointImage& a, const PointImage& b, Difference& d) {
                 break;
             }
     }
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
 // Over white, for people to look at.
@@ -207,27 +204,41 @@ int benchLdi(const Options& o) {
     const bool buildOk = seven.buildS <= 1.0;
     const bool speedupOk = sortMs >= 5.0 * seven.renderMs;
     const bool orderOk = rbDiff6.pct() < rbDiff1.pct();
-    std::ostringstream json;
-    json.setf(std::ios::fixed);
-    json.precision(3);
-    json << "{\"bench\":\"ldi\",\"voxels\":" << grid.size() << ",\"grid\":" << o.resolution << ",\"output\":\"" << o.size
-         << "x" << o.size << "\",\"frames\":" << o.frames << ",\"threads\":" << o.threads
-         << ",\"tolerance_levels\":" << kTolerance << ",\"depth_sort_ms_per_frame\":" << sortMs
-         << ",\"depth_sort_min_ms\":" << sortMinMs << ",\"depth_sort_cpu_ms_per_frame\":" << sortCpuMs
-         << ",\"depth_sort_order_ms_per_frame\":" << sortOrderMs << ",\"ldi\":[";
-    for (std::size_t i = 0; i < measured.size(); ++i) {
-        const Measured& m = measured[i];
-        json << (i ? "," : "") << "{\"ldis\":" << m.ldis << ",\"build_s\":" << m.buildS
-             << ",\"render_ms_per_frame\":" << m.renderMs << ",\"render_min_ms\":" << m.renderMinMs
-             << ",\"render_cpu_ms_per_frame\":" << m.renderCpuMs << ",\"speedup_vs_depth_sort\":" << sortMs / m.renderMs
-             << ",\"order_ms_per_frame\":" << m.orderMs << ",\"order_speedup_vs_depth_sort\":" << sortOrderMs / m.orderMs
-             << ",\"wrong_pixels_pct\":" << m.wrongPct << ",\"splats\":" << m.splats << "}";
-    }
-    json << "],\"red_black\":{\"wrong_pixels_pct_1_ldi\":" << rbDiff1.pct() << ",\"wrong_pixels_pct_6_ldis\":" << rbDiff6.pct()
-         << "},\"targets\":{\"render_7_le_6ms_and_1_le_1_5ms\":" << (renderOk ? "true" : "false")
-         << ",\"build_7_le_1s\":" << (buildOk ? "true" : "false") << ",\"mcmillan_7_ge_5x_faster\":" << (speedupOk ? "true" : "false")
-         << ",\"wrong_6_lt_1\":" << (orderOk ? "true" : "false") << "},\"strips\":[\"" << written[0] << "\",\"" << written[1]
-         << "\"]}";
+    // Every figure to three places, as this bench has always reported them.
+    const auto rounded = [](double x) { return Fixed{x, 3}; };
+    BenchJson json;
+    json.field("bench", "ldi").field("voxels", grid.size()).field("grid", o.resolution)
+        .field("output", std::to_string(o.size) + "x" + std::to_string(o.size)).field("frames", o.frames)
+        .field("threads", o.threads).field("tolerance_levels", kTolerance)
+        .field("depth_sort_ms_per_frame", rounded(sortMs)).field("depth_sort_min_ms", rounded(sortMinMs))
+        .field("depth_sort_cpu_ms_per_frame", rounded(sortCpuMs))
+        .field("depth_sort_order_ms_per_frame", rounded(sortOrderMs));
+    json.beginArray("ldi");
+    for (const Measured& m : measured)
+        json.beginObject()
+            .field("ldis", m.ldis)
+            .field("build_s", rounded(m.buildS))
+            .field("render_ms_per_frame", rounded(m.renderMs))
+            .field("render_min_ms", rounded(m.renderMinMs))
+            .field("render_cpu_ms_per_frame", rounded(m.renderCpuMs))
+            .field("speedup_vs_depth_sort", rounded(sortMs / m.renderMs))
+            .field("order_ms_per_frame", rounded(m.orderMs))
+            .field("order_speedup_vs_depth_sort", rounded(sortOrderMs / m.orderMs))
+            .field("wrong_pixels_pct", rounded(m.wrongPct))
+            .field("splats", m.splats)
+            .end();
+    json.end();
+    json.beginObject("red_black")
+        .field("wrong_pixels_pct_1_ldi", rounded(rbDiff1.pct()))
+        .field("wrong_pixels_pct_6_ldis", rounded(rbDiff6.pct()))
+        .end();
+    json.beginObject("targets")
+        .field("render_7_le_6ms_and_1_le_1_5ms", renderOk)
+        .field("build_7_le_1s", buildOk)
+        .field("mcmillan_7_ge_5x_faster", speedupOk)
+        .field("wrong_6_lt_1", orderOk)
+        .end();
+    json.beginArray("strips").value(written[0]).value(written[1]).end();
     std::printf("%s\n", json.str().c_str());
     return kExitOk;
 }

@@ -4,6 +4,8 @@
 
 #include "graph/io/ModelLoader.hpp"
 #include "tools/arcomp/Command.hpp"
+#include "tools/bench/BenchJson.hpp"
+#include "tools/bench/Stats.hpp"
 
 #include <tiny_obj_loader.h>
 
@@ -15,11 +17,6 @@
 
 namespace arcomp {
 namespace {
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
 
 int loadBench(const std::string& model, int repeats) {
     using Clock = std::chrono::steady_clock;
@@ -45,13 +42,15 @@ int loadBench(const std::string& model, int repeats) {
             baseline.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
         }
     }
-    std::printf("{\"bench\":\"load\",\"model\":\"%s\",\"repeats\":%d,\"load_ms\":%.3f,\"load_ms_min\":%.3f,"
-                "\"triangles\":%zu,\"vertices\":%zu",
-                model.c_str(), repeats, median(ours), *std::min_element(ours.begin(), ours.end()), triangles, vertices);
+    BenchJson j;
+    j.field("bench", "load").field("model", model).field("repeats", repeats);
+    j.field("load_ms", Fixed{median(ours), 3}).field("load_ms_min", Fixed{*std::min_element(ours.begin(), ours.end()), 3});
+    j.field("triangles", triangles).field("vertices", vertices);
     if (isObj)
-        std::printf(",\"baseline\":\"tinyobjloader parse only\",\"baseline_ms\":%.3f,\"overhead_ratio\":%.3f",
-                    median(baseline), median(ours) / median(baseline));
-    std::printf("}\n");
+        j.field("baseline", "tinyobjloader parse only")
+            .field("baseline_ms", Fixed{median(baseline), 3})
+            .field("overhead_ratio", Fixed{median(ours) / median(baseline), 3});
+    std::printf("%s\n", j.str().c_str());
     return kExitOk;
 }
 

@@ -20,7 +20,9 @@
 
 #include "graph/core/ElapsedTime.hpp"
 #include "tools/arcomp/Command.hpp"
+#include "tools/bench/BenchJson.hpp"
 #include "tools/bench/LinePlot.hpp"
+#include "tools/bench/Stats.hpp"
 #include "video/CdnetSequence.hpp"
 #include "video/MatteScore.hpp"
 #include "video/MatteSpec.hpp"
@@ -207,9 +209,7 @@ int matteBench(const Options& o) {
         // so the spread of its runs shows such a spell.
         for (int run = 0; run < o.speedRuns; ++run)
             results[m].ms768Runs.push_back(timeAtSize(all[m], o.speedClip, {768, 576}, o.speedSkip, o.speedFrames));
-        std::vector<double> sorted = results[m].ms768Runs;
-        std::sort(sorted.begin(), sorted.end());
-        results[m].ms768 = sorted[sorted.size() / 2];
+        results[m].ms768 = median(results[m].ms768Runs);
         results[m].ms1080 = timeAtSize(all[m], o.speedClip, {1920, 1080}, o.speedSkip, std::max(1, o.speedFrames / 3));
     }
 
@@ -232,25 +232,42 @@ int matteBench(const Options& o) {
         if (all[m].peer) bestPeerF = std::max(bestPeerF, results[m].score.fMeasure());
         if (all[m].name == defaultName) defaultF = results[m].score.fMeasure(), default768 = results[m].ms768;
     }
-    std::printf("{\"bench\":\"matte\",\"sequence\":\"%s\",\"frames\":%d,\"scored\":[%d,%d],\"fps\":%.3g,\"default\":\"%s\",\"methods\":[",
-                seq.dir.filename().c_str(), seq.frameCount, seq.firstScored, seq.lastScored, o.fps, defaultName.c_str());
+    // Scores to four places and milliseconds to three, as this bench has always reported them.
+    BenchJson j;
+    j.field("bench", "matte").field("sequence", seq.dir.filename().string()).field("frames", seq.frameCount);
+    j.beginArray("scored").value(seq.firstScored).value(seq.lastScored).end();
+    j.field("fps", o.fps).field("default", defaultName);
+    j.beginArray("methods");
     for (std::size_t m = 0; m < all.size(); ++m) {
         const Result& r = results[m];
-        std::printf("%s{\"name\":\"%s\",\"peer\":%s,\"precision\":%.4f,\"recall\":%.4f,\"f_measure\":%.4f,\"iou\":%.4f,"
-                    "\"pwc\":%.4f,\"ms_per_frame\":%.3f",
-                    m ? "," : "", all[m].name.c_str(), all[m].peer ? "true" : "false", r.score.precision(),
-                    r.score.recall(), r.score.fMeasure(), r.score.iou(), r.score.percentWrong(), r.msPerFrame);
+        j.beginObject()
+            .field("name", all[m].name)
+            .field("peer", all[m].peer)
+            .field("precision", Fixed{r.score.precision(), 4})
+            .field("recall", Fixed{r.score.recall(), 4})
+            .field("f_measure", Fixed{r.score.fMeasure(), 4})
+            .field("iou", Fixed{r.score.iou(), 4})
+            .field("pwc", Fixed{r.score.percentWrong(), 4})
+            .field("ms_per_frame", Fixed{r.msPerFrame, 3});
         if (haveClip) {
-            std::printf(",\"ms_per_frame_768x576\":%.3f,\"ms_768x576_runs\":[", r.ms768);
-            for (std::size_t k = 0; k < r.ms768Runs.size(); ++k) std::printf("%s%.3f", k ? "," : "", r.ms768Runs[k]);
-            std::printf("],\"ms_per_frame_1920x1080\":%.3f}", r.ms1080);
+            j.field("ms_per_frame_768x576", Fixed{r.ms768, 3});
+            j.beginArray("ms_768x576_runs");
+            for (const double ms : r.ms768Runs) j.value(Fixed{ms, 3});
+            j.end().field("ms_per_frame_1920x1080", Fixed{r.ms1080, 3});
         } else {
-            std::printf(",\"ms_per_frame_768x576\":null,\"ms_per_frame_1920x1080\":null}");
+            j.null("ms_per_frame_768x576").null("ms_per_frame_1920x1080");
         }
+        j.end();
     }
-    std::printf("],\"targets\":{\"f_measure_min\":0.86,\"f_met\":%s,\"ahead_of_peers\":%s,\"ms_768x576_max\":8,\"speed_met\":%s}}\n",
-                defaultF >= 0.86 ? "true" : "false", defaultF > bestPeerF ? "true" : "false",
-                haveClip && default768 <= 8.0 ? "true" : "false");
+    j.end();
+    j.beginObject("targets")
+        .field("f_measure_min", 0.86)
+        .field("f_met", defaultF >= 0.86)
+        .field("ahead_of_peers", defaultF > bestPeerF)
+        .field("ms_768x576_max", 8)
+        .field("speed_met", haveClip && default768 <= 8.0)
+        .end();
+    std::printf("%s\n", j.str().c_str());
     return kExitOk;
 }
 

@@ -9,6 +9,7 @@
 #include "graph/silhouette/SilhouetteMesh.hpp"
 #include "graph/core/View.hpp"
 #include "tools/arcomp/Command.hpp"
+#include "tools/bench/BenchJson.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -16,7 +17,6 @@
 #include <iostream>
 #include <memory>
 #include <random>
-#include <sstream>
 
 namespace arcomp {
 
@@ -30,12 +30,10 @@ struct Options {
     unsigned seed = 1;
 };
 
-std::string jsonList(const std::vector<std::size_t>& v) {
-    std::ostringstream s;
-    s << '[';
-    for (std::size_t i = 0; i < v.size(); ++i) s << (i ? "," : "") << v[i];
-    s << ']';
-    return s.str();
+void writeList(BenchJson& j, std::string_view key, const std::vector<std::size_t>& v) {
+    j.beginArray(key);
+    for (const std::size_t n : v) j.value(n);
+    j.end();
 }
 
 int run(const Options& o) {
@@ -101,18 +99,19 @@ int run(const Options& o) {
     const double reductionMean = reductionSum / double(reduced.size());
     const bool pass = worst.differingFarFromOutline == 0 && reductionMean >= 50.0 &&
                       worstBaseline.differing > 0 && bakeMs <= 2000.0 && skipped == 0 && wrongRange == 0;
-    std::cout << "{\"bench\":\"silhouette\",\"model\":\"" << o.model << "\",\"regions\":" << mesh.regions.size()
-              << ",\"views_per_region\":" << o.views << ",\"mask_size\":" << o.size
-              << ",\"triangles_full\":" << trianglesFull << ",\"triangles_reduced\":" << jsonList(reduced)
-              << ",\"triangles_reduced_mean\":" << meanReduced << ",\"reduction_pct_mean\":" << reductionMean
-              << ",\"mask_pixels_differing_max\":" << worst.differing
-              << ",\"mask_pixels_differing_far_from_outline_max\":" << worst.differingFarFromOutline
-              << ",\"baseline_triangles\":" << jsonList(baselineTris)
-              << ",\"baseline_mask_pixels_differing_max\":" << worstBaseline.differing
-              << ",\"baseline_mask_pixels_differing_far_from_outline_max\":" << worstBaseline.differingFarFromOutline
-              << ",\"bake_ms\":" << bakeMs << ",\"triangles_skipped\":" << skipped
-              << ",\"views_with_wrong_region\":" << wrongRange << ",\"targets_met\":" << (pass ? "true" : "false")
-              << "}" << std::endl;
+    BenchJson j;
+    j.field("bench", "silhouette").field("model", o.model).field("regions", mesh.regions.size())
+        .field("views_per_region", o.views).field("mask_size", o.size).field("triangles_full", trianglesFull);
+    writeList(j, "triangles_reduced", reduced);
+    j.field("triangles_reduced_mean", meanReduced).field("reduction_pct_mean", reductionMean)
+        .field("mask_pixels_differing_max", worst.differing)
+        .field("mask_pixels_differing_far_from_outline_max", worst.differingFarFromOutline);
+    writeList(j, "baseline_triangles", baselineTris);
+    j.field("baseline_mask_pixels_differing_max", worstBaseline.differing)
+        .field("baseline_mask_pixels_differing_far_from_outline_max", worstBaseline.differingFarFromOutline)
+        .field("bake_ms", bakeMs).field("triangles_skipped", skipped).field("views_with_wrong_region", wrongRange)
+        .field("targets_met", pass);
+    std::cout << j.str() << std::endl;
     return kExitOk;
 }
 

@@ -19,6 +19,8 @@
 #include "runtime/ReplayInput.hpp"
 #include "runtime/StationRunner.hpp"
 #include "tools/arcomp/Command.hpp"
+#include "tools/bench/BenchJson.hpp"
+#include "tools/bench/Stats.hpp"
 
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
@@ -33,6 +35,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -63,13 +66,6 @@ int openFds() {
     int n = 0;
     for ([[maybe_unused]] const auto& e : fs::directory_iterator("/proc/self/fd")) ++n;
     return n - 1;  // the iterator's own descriptor
-}
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-    std::nth_element(v.begin(), mid, v.end());
-    return *mid;
 }
 
 // A short clip of moving blobs over a textured background, for machines
@@ -173,8 +169,7 @@ int soak(const SoakOptions& o) {
         double first, last;
     };
     const auto drift = [&](const Window& w) {
-        const auto firstEnd = w.first.begin() + static_cast<std::ptrdiff_t>(w.firstCount);
-        return Drift{median({w.first.begin(), firstEnd}), median(w.last)};
+        return Drift{median(std::span(w.first).first(w.firstCount)), median(w.last)};
     };
     const Drift wall = drift(wallMs), cpu = drift(cpuMs);
     const double driftLimit = std::max(kDriftLimitMs, kDriftLimitRatio * cpu.first);
@@ -182,16 +177,32 @@ int soak(const SoakOptions& o) {
     const bool fdOk = fdEnd <= fdStart;
     const bool driftOk = cpu.last - cpu.first <= driftLimit;
 
-    std::printf("{\"bench\":\"soak\",\"frames\":%ld,\"warmup_frames\":%ld,\"window_frames\":%ld,\"seconds\":%.1f,"
-                "\"input\":\"%s\",\"size\":[%d,%d],"
-                "\"rss_mb\":{\"start\":%.2f,\"end\":%.2f,\"peak\":%.2f,\"growth\":%.2f,\"limit\":%.1f,\"ok\":%s},"
-                "\"fds\":{\"start\":%d,\"end\":%d,\"ok\":%s},"
-                "\"frame_ms\":{\"wall_first_window_median\":%.3f,\"wall_last_window_median\":%.3f,\"wall_drift\":%.3f,"
-                "\"cpu_first_window_median\":%.3f,\"cpu_last_window_median\":%.3f,\"cpu_drift\":%.3f,\"limit\":%.3f,\"ok\":%s}}\n",
-                o.frames, warmup, window, seconds, o.config.empty() ? fs::path(video).filename().c_str() : o.config.c_str(),
-                runner.station().size().x, runner.station().size().y, rssStart, rssEnd, rssPeak, rssEnd - rssStart,
-                kRssGrowthLimitMb, rssOk ? "true" : "false", fdStart, fdEnd, fdOk ? "true" : "false", wall.first, wall.last,
-                wall.last - wall.first, cpu.first, cpu.last, cpu.last - cpu.first, driftLimit, driftOk ? "true" : "false");
+    // Rounded as this bench has always reported them: memory to 10 kB, times to the microsecond.
+    BenchJson j;
+    j.field("bench", "soak").field("frames", o.frames).field("warmup_frames", warmup).field("window_frames", window)
+        .field("seconds", Fixed{seconds, 1})
+        .field("input", o.config.empty() ? fs::path(video).filename().string() : o.config);
+    j.beginArray("size").value(runner.station().size().x).value(runner.station().size().y).end();
+    j.beginObject("rss_mb")
+        .field("start", Fixed{rssStart, 2})
+        .field("end", Fixed{rssEnd, 2})
+        .field("peak", Fixed{rssPeak, 2})
+        .field("growth", Fixed{rssEnd - rssStart, 2})
+        .field("limit", Fixed{kRssGrowthLimitMb, 1})
+        .field("ok", rssOk)
+        .end();
+    j.beginObject("fds").field("start", fdStart).field("end", fdEnd).field("ok", fdOk).end();
+    j.beginObject("frame_ms")
+        .field("wall_first_window_median", Fixed{wall.first, 3})
+        .field("wall_last_window_median", Fixed{wall.last, 3})
+        .field("wall_drift", Fixed{wall.last - wall.first, 3})
+        .field("cpu_first_window_median", Fixed{cpu.first, 3})
+        .field("cpu_last_window_median", Fixed{cpu.last, 3})
+        .field("cpu_drift", Fixed{cpu.last - cpu.first, 3})
+        .field("limit", Fixed{driftLimit, 3})
+        .field("ok", driftOk)
+        .end();
+    std::printf("%s\n", j.str().c_str());
     return kExitOk;
 }
 
