@@ -1,91 +1,52 @@
 #include "graph/io/LodFile.hpp"
 
-#include <bit>
-#include <cmath>
-#include <cstring>
+#include "graph/io/AtomicFile.hpp"
+#include "graph/io/BinaryReader.hpp"
+#include "graph/io/BinaryWriter.hpp"
+
 #include <fstream>
 #include <iterator>
 
 namespace arcomp {
 
-static_assert(std::endian::native == std::endian::little, "the LOD file is written in host order");
-
 namespace {
 
-constexpr char kMagic[8] = {'A', 'R', 'C', 'O', 'M', 'P', 'L', 'D'};
-constexpr std::uint32_t kNormals = 1u, kTexcoords = 2u;
-
-struct Reader {
-    std::span<const unsigned char> bytes;
-    const std::string& name;
-    std::size_t at = 0;
-
-    [[noreturn]] void fail(const std::string& reason) const {
-        throw ModelError(name, "byte " + std::to_string(at), reason);
-    }
-    void need(std::size_t n, const char* what) const {
-        if (bytes.size() - at < n) fail(std::string("file ends inside ") + what);
-    }
-    template <class T> T value(const char* what) {
-        need(sizeof(T), what);
-        T v;
-        std::memcpy(&v, bytes.data() + at, sizeof(T));
-        at += sizeof(T);
-        return v;
-    }
-    float finite(const char* what) {
-        const float v = value<float>(what);
-        if (!std::isfinite(v)) { at -= 4; fail(std::string(what) + " is not a finite number"); }
-        return v;
-    }
-    template <class V> void floats(std::vector<V>& out, std::size_t count, const char* what) {
-        constexpr std::size_t n = sizeof(V) / sizeof(float);
-        need(count * sizeof(V), what);
-        out.resize(count);
-        for (V& v : out)
-            for (std::size_t c = 0; c < n; ++c) v[static_cast<int>(c)] = finite(what);
-    }
-};
-
-template <class T> void put(std::ofstream& out, const T& v) { out.write(reinterpret_cast<const char*>(&v), sizeof(T)); }
-template <class V> void putAll(std::ofstream& out, const std::vector<V>& v) {
-    out.write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(v.size() * sizeof(V)));
-}
+// Names unique to this format, so that a unity build may join this file
+// with the other formats' readers.
+constexpr char kLodMagic[8] = {'A', 'R', 'C', 'O', 'M', 'P', 'L', 'D'};
+constexpr std::uint32_t kLodHasNormals = 1u, kLodHasTexcoords = 2u;
 
 } // namespace
 
 void writeLodFile(const std::filesystem::path& file, const std::vector<LodLevel>& levels) {
-    std::ofstream out(file, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error(file.string() + ": cannot open for writing");
-    out.write(kMagic, sizeof kMagic);
-    put(out, kLodFileVersion);
-    put(out, static_cast<std::uint32_t>(levels.size()));
+    BinaryWriter out;
+    out.raw(kLodMagic);
+    out.u32(kLodFileVersion);
+    out.u32(static_cast<std::uint32_t>(levels.size()));
     for (const LodLevel& l : levels) {
         const Geometry& g = l.geometry;
         const bool normals = g.normals.size() == g.positions.size() && !g.normals.empty();
         const bool texcoords = g.texcoords.size() == g.positions.size() && !g.texcoords.empty();
-        put(out, l.ratio);
-        put(out, l.error);
-        put(out, static_cast<std::uint32_t>(g.positions.size()));
-        put(out, static_cast<std::uint32_t>(g.indices.size()));
-        put(out, (normals ? kNormals : 0u) | (texcoords ? kTexcoords : 0u));
-        putAll(out, g.positions);
-        if (normals) putAll(out, g.normals);
-        if (texcoords) putAll(out, g.texcoords);
-        putAll(out, g.indices);
+        out.f32(l.ratio);
+        out.f32(l.error);
+        out.u32(static_cast<std::uint32_t>(g.positions.size()));
+        out.u32(static_cast<std::uint32_t>(g.indices.size()));
+        out.u32((normals ? kLodHasNormals : 0u) | (texcoords ? kLodHasTexcoords : 0u));
+        out.vec3s(g.positions);
+        if (normals) out.vec3s(g.normals);
+        if (texcoords) out.vec2s(g.texcoords);
+        out.u32s(g.indices);
     }
-    if (!out) throw std::runtime_error(file.string() + ": write failed");
+    writeFileAtomically(file, out.bytes());
 }
 
 std::vector<LodLevel> parseLodFile(std::span<const unsigned char> bytes, const std::string& name) {
-    Reader r{bytes, name};
-    r.need(sizeof kMagic, "the header");
-    if (std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0) r.fail("not an arcomp LOD file (expected \"ARCOMPLD\")");
-    r.at = sizeof kMagic;
-    const auto version = r.value<std::uint32_t>("the header");
+    BinaryReader r(bytes, name);
+    r.magic(kLodMagic, "the header", "not an arcomp LOD file (expected \"ARCOMPLD\")");
+    const auto version = r.u32("the header");
     if (version != kLodFileVersion)
         r.fail("version " + std::to_string(version) + ", expected " + std::to_string(kLodFileVersion));
-    const auto count = r.value<std::uint32_t>("the header");
+    const auto count = r.u32("the header");
     if (count < 1 || count > kMaxLodLevels) r.fail("level count " + std::to_string(count) + ", expected 1 to 8");
 
     std::vector<LodLevel> levels(count);
@@ -96,27 +57,26 @@ std::vector<LodLevel> parseLodFile(std::span<const unsigned char> bytes, const s
         if (!(l.ratio > 0.0f && l.ratio <= 1.0f)) r.fail(where + ": ratio must be in (0, 1]");
         l.error = r.finite("error");
         if (l.error < 0.0f) r.fail(where + ": negative error");
-        const auto vertices = r.value<std::uint32_t>("a level header");
-        const auto indices = r.value<std::uint32_t>("a level header");
-        const auto flags = r.value<std::uint32_t>("a level header");
-        if (flags & ~(kNormals | kTexcoords)) r.fail(where + ": unknown flags " + std::to_string(flags));
+        const auto vertices = r.u32("a level header");
+        const auto indices = r.u32("a level header");
+        const auto flags = r.u32("a level header");
+        if (flags & ~(kLodHasNormals | kLodHasTexcoords)) r.fail(where + ": unknown flags " + std::to_string(flags));
         if (indices % 3 != 0) r.fail(where + ": index count " + std::to_string(indices) + " is not a multiple of 3");
         Geometry& g = l.geometry;
-        r.floats(g.positions, vertices, "positions");
-        if (flags & kNormals) r.floats(g.normals, vertices, "normals");
-        if (flags & kTexcoords) r.floats(g.texcoords, vertices, "texcoords");
-        r.need(std::size_t{indices} * 4, "indices");
+        g.positions = r.vec3s(vertices, "positions");
+        if (flags & kLodHasNormals) g.normals = r.vec3s(vertices, "normals");
+        if (flags & kLodHasTexcoords) g.texcoords = r.vec2s(vertices, "texcoords");
+        r.needItems(indices, 4, "indices");
         g.indices.resize(indices);
         for (std::uint32_t& index : g.indices) {
-            index = r.value<std::uint32_t>("indices");
-            if (index >= vertices) {
-                r.at -= 4;
-                r.fail(where + ": index " + std::to_string(index) + " not below vertex count " + std::to_string(vertices));
-            }
+            index = r.u32("indices");
+            if (index >= vertices)
+                r.failAt(r.position() - 4, where + ": index " + std::to_string(index) + " not below vertex count " +
+                                               std::to_string(vertices));
         }
         g.finalize();
     }
-    if (r.at != bytes.size()) r.fail(std::to_string(bytes.size() - r.at) + " bytes after the last level");
+    if (r.remaining() != 0) r.fail(std::to_string(r.remaining()) + " bytes after the last level");
     return levels;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // The file `arcomp bake lod` writes: a mesh's LOD levels, finest first.
 //
-//   writeLodFile("bunny.lod", levels);
+//   writeLodFile("bunny.lod", levels);                      // replaced in one step (AtomicFile.hpp)
 //   std::vector<LodLevel> back = readLodFile("bunny.lod");   // throws ModelError
 //
 // Layout, little-endian, version 1:
