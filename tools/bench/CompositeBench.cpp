@@ -13,8 +13,9 @@
 //    against the full mesh (the baseline), the camera inside the region.
 //    Target: silhouette cheaper.
 // Stage times are medians over the measured frames (after warm-up); fps is
-// 1000 / mean total. GL stages end with glFinish so each stage carries its
-// own GPU work.
+// 1000 / mean total. GL stages are the station's own GpuStageTimes: timer
+// queries read a frame late on a GPU; on llvmpipe, each stage waited for and
+// timed on the wall clock.
 
 #include "runtime/GlContext.hpp"
 #include "runtime/ReplayInput.hpp"
