@@ -108,13 +108,13 @@ int bakeLod(const std::string& model, const std::string& ratioText, const std::s
     return kExitOk;
 }
 
-const bool registered = registerBake({"lod", "Simplified LOD levels of a model (meshoptimizer)", [](CLI::App& app) {
+const bool registered = registerBake({"lod", "Simplified LOD levels of a model (meshoptimizer)", [](CommandLine& line) {
     auto model = std::make_shared<std::string>();
     auto ratios = std::make_shared<std::string>("1,0.25,0.05");
     auto out = std::make_shared<std::string>();
-    app.add_option("model", *model, "Model file (.obj, .gltf, .glb)")->required();
-    app.add_option("--ratios", *ratios, "Fractions of the triangles per level, finest first")->capture_default_str();
-    app.add_option("--out", *out, "LOD file to write (graph/io/LodFile.hpp)");
+    line.option("model", *model, "Model file (.obj, .gltf, .glb)").required();
+    line.option("--ratios", *ratios, "Fractions of the triangles per level, finest first").showDefault();
+    line.option("--out", *out, "LOD file to write (graph/io/LodFile.hpp)");
     return [=] { return bakeLod(*model, *ratios, *out); };
 }});
 

@@ -123,11 +123,11 @@ int bake(const Options& o) {
 }
 
 const bool registered = registerBake({"silhouette", "Silhouette-preserving reduction per viewpoint region",
-    [](CLI::App& app) {
+    [](CommandLine& line) {
         auto o = std::make_shared<Options>();
-        app.add_option("model", o->model, "OBJ model")->required();
-        app.add_option("--regions", o->regions, "around:N, boxes x0,y0,z0,x1,y1,z1;... or a YAML file");
-        app.add_option("--out", o->out, "baked file to write")->required();
+        line.option("model", o->model, "OBJ model").required();
+        line.option("--regions", o->regions, "around:N, boxes x0,y0,z0,x1,y1,z1;... or a YAML file");
+        line.option("--out", o->out, "baked file to write").required();
         return [o] { return bake(*o); };
     }});
 

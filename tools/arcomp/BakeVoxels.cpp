@@ -46,12 +46,12 @@ int bakeVoxels(const BakeVoxelsOptions& o) {
 }
 
 const bool registered = registerBake({"voxels", "Voxelize a model (glTF or OBJ) into an .arvox point model",
-                                      [](CLI::App& app) {
+                                      [](CommandLine& line) {
                                           auto o = std::make_shared<BakeVoxelsOptions>();
-                                          app.add_option("model", o->model, "glTF or OBJ file")->required();
-                                          app.add_option("--res", o->resolution, "cells along the longest side")
-                                              ->capture_default_str();
-                                          app.add_option("--out", o->out, "voxel file to write")->required();
+                                          line.option("model", o->model, "glTF or OBJ file").required();
+                                          line.option("--res", o->resolution, "cells along the longest side")
+                                              .showDefault();
+                                          line.option("--out", o->out, "voxel file to write").required();
                                           return [o] { return bakeVoxels(*o); };
                                       }});
 

@@ -77,12 +77,12 @@ int capturePlate(const Options& o) {
 
 const bool registered = registerCommand(
     {"capture-plate", "Record the empty place from the config's video source, for matte.background.clean_plate",
-     [](CLI::App& app) {
+     [](CommandLine& line) {
          auto o = std::make_shared<Options>();
-         app.add_option("config", o->config, "Station config (its `video` section is the source)")->required();
-         app.add_option("--out", o->out, "The plate image to write, e.g. plate.png")->required();
-         app.add_option("--frames", o->frames, "Frames averaged")->capture_default_str();
-         app.add_option("--settle", o->settle, "Frames dropped first, while exposure settles")->capture_default_str();
+         line.option("config", o->config, "Station config (its `video` section is the source)").required();
+         line.option("--out", o->out, "The plate image to write, e.g. plate.png").required();
+         line.option("--frames", o->frames, "Frames averaged").showDefault();
+         line.option("--settle", o->settle, "Frames dropped first, while exposure settles").showDefault();
          return [o] { return capturePlate(*o); };
      }});
 

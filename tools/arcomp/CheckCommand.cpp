@@ -34,9 +34,9 @@ int check(const std::string& file) {
 }
 
 const bool registered = registerCommand({"check", "Validate a station config and load its assets without running it",
-                                         [](CLI::App& app) {
+                                         [](CommandLine& line) {
                                              auto file = std::make_shared<std::string>();
-                                             app.add_option("config", *file, "Station config (.yaml)")->required();
+                                             line.option("config", *file, "Station config (.yaml)").required();
                                              return [file] { return check(*file); };
                                          }});
 

@@ -3,9 +3,9 @@
 // file and registers itself at static-initialisation time:
 //
 //   static const bool registered = registerCommand({"inspect", "Print a scene's node tree",
-//       [](CLI::App& app) {
+//       [](CommandLine& line) {
 //           auto path = std::make_shared<std::string>();
-//           app.add_option("scene", *path)->required();
+//           line.option("scene", *path).required();     // tools/arcomp/CommandLine.hpp
 //           return [path] { return inspect(*path); };   // the exit code
 //       }});
 //
@@ -20,7 +20,7 @@
 
 #include "graph/core/BadInput.hpp"
 
-#include <CLI/CLI.hpp>
+#include "tools/arcomp/CommandLine.hpp"
 
 #include <functional>
 #include <string>
@@ -29,7 +29,7 @@
 namespace arcomp {
 
 using CommandAction = std::function<int()>;
-using CommandSetup = std::function<CommandAction(CLI::App&)>;
+using CommandSetup = std::function<CommandAction(CommandLine&)>;
 
 struct Command {
     std::string name;

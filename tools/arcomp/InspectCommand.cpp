@@ -53,9 +53,9 @@ int inspect(const std::string& path) {
     return kExitOk;
 }
 
-const bool registered = registerCommand({"inspect", "Print a scene's node tree with counts and bounds", [](CLI::App& app) {
+const bool registered = registerCommand({"inspect", "Print a scene's node tree with counts and bounds", [](CommandLine& line) {
                                              auto path = std::make_shared<std::string>();
-                                             app.add_option("scene", *path, "Model or station config")->required();
+                                             line.option("scene", *path, "Model or station config").required();
                                              return [path] { return inspect(*path); };
                                          }});
 

@@ -54,11 +54,11 @@ int inspectVideo(const std::string& source) {
 }
 
 const bool registered = registerCommand({"inspect-video", "List a video file's or camera's formats, sizes and rates",
-                                         [](CLI::App& app) {
+                                         [](CommandLine& line) {
                                              auto source = std::make_shared<std::string>();
-                                             app.add_option("source", *source,
+                                             line.option("source", *source,
                                                             "File, /dev/videoN, /dev/v4l/by-id/..., pattern[:WxH@fps] or libcamera")
-                                                 ->required();
+                                                 .required();
                                              return [source] { return inspectVideo(*source); };
                                          }});
 

@@ -76,15 +76,15 @@ int render(const RenderOptions& o) {
 
 const bool registered = registerCommand(
     {"render", "Render one frame of a model (.gltf, .glb, .obj) or a station config (.yaml) to a PNG",
-     [](CLI::App& app) {
+     [](CommandLine& line) {
          auto o = std::make_shared<RenderOptions>();
-         app.add_option("scene", o->scene, "Model or station config")->required();
-         app.add_option("--out", o->out, "PNG file to write")->required();
-         app.add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
-         app.add_option("--eye", o->eye, "Camera position X,Y,Z (default: frames the scene)");
-         app.add_option("--target", o->target, "Point looked at X,Y,Z (default: the scene's centre)");
-         app.add_option("--shading", o->shading, "unlit, flat, gouraud or phong")->capture_default_str();
-         app.add_option("--gl", o->gl, "OpenGL API: auto, gl33 or es3")->capture_default_str();
+         line.option("scene", o->scene, "Model or station config").required();
+         line.option("--out", o->out, "PNG file to write").required();
+         line.option("--size", o->size, "Image size WIDTHxHEIGHT").showDefault();
+         line.option("--eye", o->eye, "Camera position X,Y,Z (default: frames the scene)");
+         line.option("--target", o->target, "Point looked at X,Y,Z (default: the scene's centre)");
+         line.option("--shading", o->shading, "unlit, flat, gouraud or phong").showDefault();
+         line.option("--gl", o->gl, "OpenGL API: auto, gl33 or es3").showDefault();
          return [o] { return render(*o); };
      }});
 

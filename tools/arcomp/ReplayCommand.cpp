@@ -101,17 +101,17 @@ int replay(const ReplayOptions& o) {
 
 const bool registered = registerCommand(
     {"replay", "Composite a station's video file headless, frame by frame, into PNG frames (deterministic)",
-     [](CLI::App& app) {
+     [](CommandLine& line) {
          auto o = std::make_shared<ReplayOptions>();
-         app.add_option("config", o->config, "Station config (.yaml)")->required();
-         app.add_option("--out", o->out, "Folder for frame-NNNNNN.png")->required();
-         app.add_option("--frames", o->frames, "Stop after N frames (default: the whole file)");
-         app.add_option("--video", o->video, "Replay this file instead of the config's video source");
-         app.add_option("--video-out", o->videoOut, "Also write the composited frames to this video file");
-         app.add_option("--gl", o->gl, "OpenGL API: auto, gl33 or es3 (default: the config's render.gl)")
-             ->check(CLI::IsMember({"auto", "gl33", "es3"}));
-         app.add_option("--log-level", o->logLevel, "trace, debug, info, warn, error, critical or off (default: the config's)")
-             ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "critical", "off"}));
+         line.option("config", o->config, "Station config (.yaml)").required();
+         line.option("--out", o->out, "Folder for frame-NNNNNN.png").required();
+         line.option("--frames", o->frames, "Stop after N frames (default: the whole file)");
+         line.option("--video", o->video, "Replay this file instead of the config's video source");
+         line.option("--video-out", o->videoOut, "Also write the composited frames to this video file");
+         line.option("--gl", o->gl, "OpenGL API: auto, gl33 or es3 (default: the config's render.gl)")
+             .oneOf({"auto", "gl33", "es3"});
+         line.option("--log-level", o->logLevel, "trace, debug, info, warn, error, critical or off (default: the config's)")
+             .oneOf({"trace", "debug", "info", "warn", "error", "critical", "off"});
          return [o] { return replay(*o); };
      }});
 

@@ -132,17 +132,17 @@ int run(const RunOptions& o) {
 
 const bool registered = registerCommand(
     {"run", "Run a station live: cameras, scene and compositing in a (full-screen) window",
-     [](CLI::App& app) {
+     [](CommandLine& line) {
          auto o = std::make_shared<RunOptions>();
-         app.add_option("config", o->config, "Station config (.yaml)")->required();
-         app.add_option("--frames", o->frames, "Quit after N frames (default: run until stopped)");
-         app.add_flag("--windowed", o->windowed, "A window instead of full screen");
-         app.add_option("--monitor", o->monitor, "Monitor index for full screen")->capture_default_str();
-         app.add_option("--size", o->size, "Window size WIDTHxHEIGHT when windowed")->capture_default_str();
-         app.add_flag("--overlay", o->overlay, "Show the stats overlay from the start (Tab toggles it)");
-         app.add_option("--screenshot", o->screenshot, "With --frames: save the last frame shown to this PNG");
-         app.add_option("--log-level", o->logLevel, "trace, debug, info, warn, error, critical or off (default: the config's)")
-             ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "critical", "off"}));
+         line.option("config", o->config, "Station config (.yaml)").required();
+         line.option("--frames", o->frames, "Quit after N frames (default: run until stopped)");
+         line.flag("--windowed", o->windowed, "A window instead of full screen");
+         line.option("--monitor", o->monitor, "Monitor index for full screen").showDefault();
+         line.option("--size", o->size, "Window size WIDTHxHEIGHT when windowed").showDefault();
+         line.flag("--overlay", o->overlay, "Show the stats overlay from the start (Tab toggles it)");
+         line.option("--screenshot", o->screenshot, "With --frames: save the last frame shown to this PNG");
+         line.option("--log-level", o->logLevel, "trace, debug, info, warn, error, critical or off (default: the config's)")
+             .oneOf({"trace", "debug", "info", "warn", "error", "critical", "off"});
          return [o] { return run(*o); };
      }});
 

@@ -5,6 +5,8 @@
 #include "graph/core/BadInput.hpp"
 #include "tools/arcomp/Command.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
@@ -18,7 +20,8 @@ void addAll(CLI::App& parent, std::vector<Command>& commands, std::vector<std::p
     std::sort(commands.begin(), commands.end(), [](const Command& a, const Command& b) { return a.name < b.name; });
     for (Command& c : commands) {
         CLI::App* sub = parent.add_subcommand(c.name, c.help);
-        actions.emplace_back(sub, c.setup(*sub));
+        CommandLine line(*sub);
+        actions.emplace_back(sub, c.setup(line));
     }
 }
 

@@ -333,29 +333,29 @@ int run(const Options& o) {
 
 const bool registered = registerBench(
     {"budget", "Uniform frame time: a flight over mountains, unmanaged vs the frame-time controller",
-     [](CLI::App& app) {
+     [](CommandLine& line) {
          auto o = std::make_shared<Options>();
-         app.add_option("--out", o->out, "folder for the CSV, the plots and calibration.yaml")->capture_default_str();
-         app.add_option("--target-ms", o->targetMs,
+         line.option("--out", o->out, "folder for the CSV, the plots and calibration.yaml").showDefault();
+         line.option("--target-ms", o->targetMs,
                         "target frame time; 0: " + std::to_string(kTargetUnderFastest).substr(0, 4) +
                             " of the unmanaged run's fastest frame (not below the floor)")
-             ->capture_default_str();
-         app.add_option("--raster-threads", o->rasterThreads,
+             .showDefault();
+         line.option("--raster-threads", o->rasterThreads,
                         "llvmpipe raster threads (LP_NUM_THREADS); 0: on the drawing thread; -1: the driver's default")
-             ->capture_default_str();
-         app.add_option("--upgrade-margin", o->controller.upgradeMargin,
+             .showDefault();
+         line.option("--upgrade-margin", o->controller.upgradeMargin,
                         "hysteresis: a raise must leave this fraction of the target unused")
-             ->capture_default_str();
-         app.add_option("--hold-frames", o->controller.holdFrames, "hysteresis: frames a lowered object stays down")
-             ->capture_default_str();
-         app.add_option("--frames", o->frames, "frames along the path, per run")->capture_default_str();
-         app.add_option("--mountains", o->mountains, "mountains in the field")->capture_default_str();
-         app.add_option("--size", o->size, "output size WIDTHxHEIGHT")->capture_default_str();
-         app.add_option("--timer", o->timer, kTimerModeHelp)
-             ->capture_default_str();
-         app.add_option("--scene-frames", o->sceneFrames, "whole frames of the flight scene in the calibration")
-             ->capture_default_str();
-         app.add_option("--calibration", o->calibration, "read this calibration instead of measuring one");
+             .showDefault();
+         line.option("--hold-frames", o->controller.holdFrames, "hysteresis: frames a lowered object stays down")
+             .showDefault();
+         line.option("--frames", o->frames, "frames along the path, per run").showDefault();
+         line.option("--mountains", o->mountains, "mountains in the field").showDefault();
+         line.option("--size", o->size, "output size WIDTHxHEIGHT").showDefault();
+         line.option("--timer", o->timer, kTimerModeHelp)
+             .showDefault();
+         line.option("--scene-frames", o->sceneFrames, "whole frames of the flight scene in the calibration")
+             .showDefault();
+         line.option("--calibration", o->calibration, "read this calibration instead of measuring one");
          return [o] { return run(*o); };
      }});
 

@@ -69,13 +69,13 @@ int run(const Options& o) {
 
 const bool registered = registerBench(
     {"calibrate", "Measure the frame-time cost model (A, B per level and shading) and write calibration.yaml",
-     [](CLI::App& app) {
+     [](CommandLine& line) {
          auto o = std::make_shared<Options>();
-         app.add_option("--out", o->out, "folder for calibration.yaml")->capture_default_str();
-         app.add_option("--size", o->size, "output size WIDTHxHEIGHT")->capture_default_str();
-         app.add_option("--timer", o->timer, kTimerModeHelp)
-             ->capture_default_str();
-         app.add_option("--repeats", o->repeats, "frames per sample (median)")->capture_default_str();
+         line.option("--out", o->out, "folder for calibration.yaml").showDefault();
+         line.option("--size", o->size, "output size WIDTHxHEIGHT").showDefault();
+         line.option("--timer", o->timer, kTimerModeHelp)
+             .showDefault();
+         line.option("--repeats", o->repeats, "frames per sample (median)").showDefault();
          return [o] { return run(*o); };
      }});
 

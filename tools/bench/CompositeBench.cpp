@@ -257,12 +257,12 @@ int bench(const CompositeOptions& o) {
 }
 
 const bool registered = registerBench({"composite", "Compositing: per-stage ms, fps at 768x576 and 1080p, silhouette vs full holdout",
-    [](CLI::App& app) {
+    [](CommandLine& line) {
         auto o = std::make_shared<CompositeOptions>();
-        app.add_option("--config", o->config, "station config for the vtest run")->capture_default_str();
-        app.add_option("--model", o->model, "high-polygon occluder model")->capture_default_str();
-        app.add_option("--frames", o->frames, "measured frames per run")->capture_default_str();
-        app.add_option("--warmup", o->warmup, "frames before measuring")->capture_default_str();
+        line.option("--config", o->config, "station config for the vtest run").showDefault();
+        line.option("--model", o->model, "high-polygon occluder model").showDefault();
+        line.option("--frames", o->frames, "measured frames per run").showDefault();
+        line.option("--warmup", o->warmup, "frames before measuring").showDefault();
         return [o] { return bench(*o); };
     }});
 

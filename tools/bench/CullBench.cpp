@@ -143,13 +143,13 @@ int runCullBench(std::uint32_t objects, const std::string& layoutName, int frame
 }
 
 const bool registered = registerBench({"cull", "Select traversal (cull + LOD + draw list) against OpenSceneGraph",
-    [](CLI::App& app) {
+    [](CommandLine& line) {
         auto objects = std::make_shared<std::uint32_t>(100000);
         auto layout = std::make_shared<std::string>("flat");
         auto frames = std::make_shared<int>(200);
-        app.add_option("--objects", *objects, "Number of objects")->capture_default_str();
-        app.add_option("--layout", *layout, "flat or tree")->capture_default_str();
-        app.add_option("--frames", *frames, "Measured frames (after 20 warm-up frames)")->capture_default_str();
+        line.option("--objects", *objects, "Number of objects").showDefault();
+        line.option("--layout", *layout, "flat or tree").showDefault();
+        line.option("--frames", *frames, "Measured frames (after 20 warm-up frames)").showDefault();
         return [=] { return runCullBench(*objects, *layout, *frames); };
     }});
 

@@ -162,11 +162,11 @@ int run(const Options& o) {
 
 const bool registered = registerBench(
     {"grouping", "Grouping tree: build time and depth, select and local rebuild per frame",
-     [](CLI::App& app) {
+     [](CommandLine& line) {
          auto o = std::make_shared<Options>();
-         app.add_option("--objects", o->objects, "Number of objects")->capture_default_str();
-         app.add_option("--frames", o->frames, "Frames of the camera path and of motion")->capture_default_str();
-         app.add_option("--seed", o->seed, "Generator seed")->capture_default_str();
+         line.option("--objects", o->objects, "Number of objects").showDefault();
+         line.option("--frames", o->frames, "Frames of the camera path and of motion").showDefault();
+         line.option("--seed", o->seed, "Generator seed").showDefault();
          return [o] { return run(*o); };
      }});
 

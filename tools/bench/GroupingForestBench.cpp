@@ -153,11 +153,11 @@ int run(const Options& o) {
 
 const bool registered = registerBench(
     {"grouping-forest", "Grouping paper's forest: triangles against Omega_t (CSV, PNG), renders and PSNR",
-     [](CLI::App& app) {
+     [](CommandLine& line) {
          auto o = std::make_shared<Options>();
-         app.add_option("--out", o->out, "Folder for forest.csv, forest.png and the renders")->required();
-         app.add_option("--size", o->size, "Render size WIDTHxHEIGHT")->capture_default_str();
-         app.add_option("--omega-t", o->omegaT, "Omega_t of the renders")->capture_default_str();
+         line.option("--out", o->out, "Folder for forest.csv, forest.png and the renders").required();
+         line.option("--size", o->size, "Render size WIDTHxHEIGHT").showDefault();
+         line.option("--omega-t", o->omegaT, "Omega_t of the renders").showDefault();
          return [o] { return run(*o); };
      }});
 

@@ -244,13 +244,13 @@ int benchLdi(const Options& o) {
 }
 
 const bool registered = registerBench({"ldi", "Translucent point clouds: McMillan order over 1-7 LDIs vs depth sort",
-                                       [](CLI::App& app) {
+                                       [](CommandLine& line) {
                                            auto o = std::make_shared<Options>();
-                                           app.add_option("--out", o->out, "folder for the PNG strips")->capture_default_str();
-                                           app.add_option("--frames", o->frames, "views on the circle")->capture_default_str();
-                                           app.add_option("--res", o->resolution, "voxel grid resolution")->capture_default_str();
-                                           app.add_option("--size", o->size, "output width and height")->capture_default_str();
-                                           app.add_option("--threads", o->threads, "renderer threads")->capture_default_str();
+                                           line.option("--out", o->out, "folder for the PNG strips").showDefault();
+                                           line.option("--frames", o->frames, "views on the circle").showDefault();
+                                           line.option("--res", o->resolution, "voxel grid resolution").showDefault();
+                                           line.option("--size", o->size, "output width and height").showDefault();
+                                           line.option("--threads", o->threads, "renderer threads").showDefault();
                                            return [o] { return benchLdi(*o); };
                                        }});
 

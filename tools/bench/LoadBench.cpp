@@ -54,12 +54,12 @@ int loadBench(const std::string& model, int repeats) {
     return kExitOk;
 }
 
-const bool registered = registerBench({"load", "Time loading a model", [](CLI::App& app) {
+const bool registered = registerBench({"load", "Time loading a model", [](CommandLine& line) {
                                            auto model = std::make_shared<std::string>();
                                            auto repeats = std::make_shared<int>(5);
-                                           app.add_option("--model", *model, "Model file")->required();
-                                           app.add_option("--repeats", *repeats, "Loads to time")
-                                               ->check(CLI::Range(1, 1000))->capture_default_str();
+                                           line.option("--model", *model, "Model file").required();
+                                           line.option("--repeats", *repeats, "Loads to time")
+                                               .range(1, 1000).showDefault();
                                            return [model, repeats] { return loadBench(*model, *repeats); };
                                        }});
 

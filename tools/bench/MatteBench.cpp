@@ -273,15 +273,15 @@ int matteBench(const Options& o) {
 
 const bool registered = registerBench(
     {"matte", "Person mattes on a CDnet sequence: P, R, F, IoU and ms/frame against OpenCV's subtractors",
-     [](CLI::App& app) {
+     [](CommandLine& line) {
          auto o = std::make_shared<Options>();
-         app.add_option("--sequence", o->sequence, "CDnet sequence folder (input/, groundtruth/, temporalROI.txt)")->required();
-         app.add_option("--out", o->out, "folder for the strips and the per-frame F plot");
-         app.add_option("--fps", o->fps, "the sequence's frame rate, for the settings given in seconds")->capture_default_str();
-         app.add_option("--speed-clip", o->speedClip, "clip timed at 768x576 and 1920x1080")->capture_default_str();
-         app.add_option("--speed-frames", o->speedFrames, "timed frames per run")->capture_default_str();
-         app.add_option("--speed-skip", o->speedSkip, "untimed start-up frames before each run")->capture_default_str();
-         app.add_option("--speed-runs", o->speedRuns, "runs at 768x576 (median reported)")->capture_default_str();
+         line.option("--sequence", o->sequence, "CDnet sequence folder (input/, groundtruth/, temporalROI.txt)").required();
+         line.option("--out", o->out, "folder for the strips and the per-frame F plot");
+         line.option("--fps", o->fps, "the sequence's frame rate, for the settings given in seconds").showDefault();
+         line.option("--speed-clip", o->speedClip, "clip timed at 768x576 and 1920x1080").showDefault();
+         line.option("--speed-frames", o->speedFrames, "timed frames per run").showDefault();
+         line.option("--speed-skip", o->speedSkip, "untimed start-up frames before each run").showDefault();
+         line.option("--speed-runs", o->speedRuns, "runs at 768x576 (median reported)").showDefault();
          return [o] { return matteBench(*o); };
      }});
 

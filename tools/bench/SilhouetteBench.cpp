@@ -116,13 +116,13 @@ int run(const Options& o) {
 }
 
 const bool registered = registerBench({"silhouette", "Silhouette-preserving reduction: masks of full vs reduced mesh",
-    [](CLI::App& app) {
+    [](CommandLine& line) {
         auto o = std::make_shared<Options>();
-        app.add_option("--model", o->model, "OBJ model")->required();
-        app.add_option("--regions", o->regions, "number of default boxes around the model");
-        app.add_option("--views", o->views, "random viewpoints per region");
-        app.add_option("--size", o->size, "mask width and height in pixels");
-        app.add_option("--seed", o->seed, "random seed for the viewpoints");
+        line.option("--model", o->model, "OBJ model").required();
+        line.option("--regions", o->regions, "number of default boxes around the model");
+        line.option("--views", o->views, "random viewpoints per region");
+        line.option("--size", o->size, "mask width and height in pixels");
+        line.option("--seed", o->seed, "random seed for the viewpoints");
         return [o] { return run(*o); };
     }});
 

@@ -207,11 +207,11 @@ int soak(const SoakOptions& o) {
 }
 
 const bool registered = registerBench(
-    {"soak", "Loop a video through the whole station: RSS, open fds and frame-time drift", [](CLI::App& app) {
+    {"soak", "Loop a video through the whole station: RSS, open fds and frame-time drift", [](CommandLine& line) {
          auto o = std::make_shared<SoakOptions>();
-         app.add_option("--frames", o->frames, "Frames to run (the issue's figure is 50000)")->capture_default_str();
-         app.add_option("--config", o->config, "Soak this station instead of the demo scene (video looped, outputs off)");
-         app.add_option("--video", o->video, "Clip for the demo scene (generated when absent)")->capture_default_str();
+         line.option("--frames", o->frames, "Frames to run (the issue's figure is 50000)").showDefault();
+         line.option("--config", o->config, "Soak this station instead of the demo scene (video looped, outputs off)");
+         line.option("--video", o->video, "Clip for the demo scene (generated when absent)").showDefault();
          return [o] { return soak(*o); };
      }});
 

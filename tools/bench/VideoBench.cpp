@@ -177,9 +177,9 @@ int videoBench(const std::string& vtest) {
 }
 
 const bool registered = registerBench(
-    {"video", "Decode+convert cost, newest-frame latency and drops", [](CLI::App& app) {
+    {"video", "Decode+convert cost, newest-frame latency and drops", [](CommandLine& line) {
          auto vtest = std::make_shared<std::string>("/usr/share/doc/opencv-doc/examples/data/vtest.avi");
-         app.add_option("--vtest", *vtest, "The 768x576 reference clip")->capture_default_str();
+         line.option("--vtest", *vtest, "The 768x576 reference clip").showDefault();
          return [vtest] { return videoBench(*vtest); };
      }});
 
