@@ -1,5 +1,6 @@
 // Runs the built `arcomp bench matte`; skips when the executable has not been built.
 #include "tests/support/Shell.hpp"
+#include "tests/support/TempDir.hpp"
 
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
@@ -17,10 +18,10 @@ arcomp::test::ShellResult bench(const std::string& args) {
 }
 
 // A tiny CDnet sequence: a grey floor, a dark square crossing it from frame 6,
-// labelled 255, with its border labelled 170 (not counted).
-fs::path writeSequence() {
-    const fs::path dir = fs::path(::testing::TempDir()) / "matte-bench-seq";
-    fs::remove_all(dir);
+// labelled 255, with its border labelled 170 (not counted). In the test's
+// own folder: ctest runs the tests of this file side by side.
+fs::path writeSequence(const arcomp::test::TempDir& folder) {
+    const fs::path dir = folder.path() / "seq";
     fs::create_directories(dir / "input");
     fs::create_directories(dir / "groundtruth");
     for (int i = 1; i <= 20; ++i) {
@@ -45,9 +46,9 @@ fs::path writeSequence() {
 
 TEST(MatteBench, scoresEveryMethodAndItsPeersAsOneJsonLine) {
     if (!fs::exists(ARCOMP_BINARY)) GTEST_SKIP() << "arcomp not built";
-    const fs::path out = fs::path(::testing::TempDir()) / "matte-bench-out";
-    fs::remove_all(out);
-    const auto r = bench("--fps 10 --sequence " + writeSequence().string() + " --out " + out.string());
+    const arcomp::test::TempDir folder;
+    const fs::path out = folder.path() / "out";
+    const auto r = bench("--fps 10 --sequence " + writeSequence(folder).string() + " --out " + out.string());
     ASSERT_EQ(r.code, 0) << r.out;
     const std::string json = arcomp::test::lastLine(r.out);
     EXPECT_EQ(json.rfind("{\"bench\":\"matte\"", 0), 0u) << json;
@@ -70,7 +71,8 @@ TEST(MatteBench, aMissingSequenceOrTemporalRoiIsBadInput) {
     EXPECT_EQ(missing.code, 2) << missing.out;
     EXPECT_NE(missing.out.find("/nonexistent/busStation: not a folder"), std::string::npos) << missing.out;
 
-    const fs::path seq = writeSequence();
+    const arcomp::test::TempDir folder;
+    const fs::path seq = writeSequence(folder);
     fs::remove(seq / "temporalROI.txt");
     const auto noRoi = bench("--sequence " + seq.string());
     EXPECT_EQ(noRoi.code, 2) << noRoi.out;
