@@ -1,4 +1,5 @@
 #include "runtime/HoldoutBake.hpp"
+#include "graph/core/JoinText.hpp"
 
 #include "graph/io/SilhouetteFile.hpp"
 #include "graph/silhouette/SilhouetteMesh.hpp"
@@ -59,7 +60,7 @@ HoldoutBake bakeHoldouts(World& world, const View& view, const CompositorConfig&
             ++bake.loaded;
         } else {
             ++bake.baked;
-            spdlog::info("holdout of '{}': {}", scene.name(n), s.note);
+            spdlog::info(joinText("holdout of '", scene.name(n), "': ", s.note));
         }
     }
     return bake;

@@ -1,4 +1,5 @@
 #include "runtime/SceneFile.hpp"
+#include "graph/core/JoinText.hpp"
 
 #include "graph/io/LodFile.hpp"
 #include "graph/lod/LodLevels.hpp"
@@ -57,7 +58,7 @@ BakeTally buildScene(const StationConfig& cfg, World& world, std::vector<std::st
                 LoadedOrSimplified l = loadOrSimplifyLevels(bakeCache / bakeCacheFileName(cfg.file, o.name, part.geometry, ".lod"),
                                                             scene.geometry(part.geometry), o.lodRatios);
                 ++(l.loaded ? levels.loaded : levels.baked);
-                if (!l.loaded) spdlog::info("levels of '{}': {}", o.name, l.note);
+                if (!l.loaded) spdlog::info(joinText("levels of '", o.name, "': ", l.note));
                 addLodLevels(scene, lodTable, parent, part, std::move(l.levels), lodSettings(o));
             };
         if (!o.model.empty()) {

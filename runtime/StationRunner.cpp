@@ -1,4 +1,5 @@
 #include "runtime/StationRunner.hpp"
+#include "graph/core/JoinText.hpp"
 
 #include "runtime/ConfigError.hpp"
 #include "runtime/ShutdownSignals.hpp"
@@ -47,16 +48,16 @@ void StationRunner::startStatusServer() {
     if (!cfg_.operation.statusEnabled) return;
     try {
         server_ = std::make_unique<StatusServer>(metrics_, cfg_.operation.status);
-        spdlog::info("status: http://{}:{}/status and /metrics", cfg_.operation.status.bind, server_->port());
+        spdlog::info(joinText("status: http://", cfg_.operation.status.bind, ":", server_->port(), "/status and /metrics"));
     } catch (const std::exception& e) {
-        spdlog::error("{}; running without a status endpoint", e.what());
+        spdlog::error(joinText(e.what(), "; running without a status endpoint"));
         metrics_.recordError(e.what());
     }
 }
 
 void StationRunner::reportWarnings() {
     for (const std::string& w : station_->warnings()) {
-        spdlog::warn("{}", w);
+        spdlog::warn(w);
         metrics_.recordError(w);
     }
 }
@@ -82,19 +83,19 @@ void StationRunner::reportOutputFailure() {
     metrics_.recordError("output: " + station_->lastOutputError());
     // The first failure, then one line per 100, so a full disk does not also fill the log.
     if (outputFailures_ == 1 || outputFailures_ % 100 == 0)
-        spdlog::error("{} (output failures so far: {}; the station goes on compositing)", station_->lastOutputError(),
-                      outputFailures_);
+        spdlog::error(joinText(station_->lastOutputError(), " (output failures so far: ", outputFailures_,
+                              "; the station goes on compositing)"));
 }
 
 void StationRunner::reload() {
-    spdlog::info("reloading {}", cfg_.file.string());
+    spdlog::info("reloading " + cfg_.file.string());
     StationConfig next;
     try {
         next = loadStationConfig(cfg_.file);
         if (override_) override_(next);
         Station::preflight(next);
     } catch (const std::exception& e) {
-        spdlog::error("reload refused, keeping the running config: {}", e.what());
+        spdlog::error(joinText("reload refused, keeping the running config: ", e.what()));
         metrics_.recordError(std::string("reload refused: ") + e.what());
         return;
     }
@@ -112,7 +113,7 @@ void StationRunner::reload() {
     try {
         restart(next, keepInput ? std::move(input) : openInput_(next));
     } catch (const std::exception& e) {
-        spdlog::error("reload failed: {}", e.what());
+        spdlog::error(joinText("reload failed: ", e.what()));
         metrics_.recordError(std::string("reload failed: ") + e.what());
         if (cfg_.compositing.video && cfg_.compositing.video->kind == SourceKind::File && !cfg_.compositing.video->loop) {
             // A replay cannot go back to where it was without repeating frames.
@@ -126,13 +127,13 @@ void StationRunner::reload() {
         try {
             restart(previous, openInput_(previous));
         } catch (const std::exception& again) {
-            spdlog::error("the previous config cannot start either ({}); showing the test pattern", again.what());
+            spdlog::error(joinText("the previous config cannot start either (", again.what(), "); showing the test pattern"));
             previous.compositing.video = SourceSpec{};
             restart(previous, openInput_(previous));
         }
         return;
     }
-    spdlog::info("reloaded {} ({} objects, input {})", cfg_.file.string(), cfg_.objects.size(), keepInput ? "kept" : "reopened");
+    spdlog::info(joinText("reloaded ", cfg_.file.string(), " (", cfg_.objects.size(), " objects, input ", keepInput ? "kept" : "reopened", ")"));
 }
 
 void StationRunner::restart(StationConfig cfg, StationInput input) {

@@ -1,4 +1,5 @@
 #include "video/CaptureThread.hpp"
+#include "graph/core/JoinText.hpp"
 
 #include <spdlog/spdlog.h>
 
@@ -31,8 +32,8 @@ void CaptureThread::setState(SourceState state) {
     std::lock_guard lock(stateMutex_);
     if (state.status != state_.status || state.reason != state_.reason) {
         if (state.status != SourceStatus::Streaming)
-            spdlog::info("video source {}: {}{}{}", name_, sourceStatusName(state.status),
-                         state.reason.empty() ? "" : ": ", state.reason);
+            spdlog::info(joinText("video source ", name_, ": ", sourceStatusName(state.status),
+                                 state.reason.empty() ? "" : ": ", state.reason));
     }
     state_ = std::move(state);
 }

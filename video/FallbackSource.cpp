@@ -1,10 +1,10 @@
 #include "video/FallbackSource.hpp"
+#include "graph/core/JoinText.hpp"
 
 #include "video/VideoError.hpp"
 
 #include <spdlog/spdlog.h>
 
-#include <fmt/format.h>
 
 namespace arcomp {
 
@@ -25,7 +25,7 @@ FallbackSource::FallbackSource(std::unique_ptr<FrameSource> primary, FallbackKin
     const bool needsSource = kind_ == FallbackKind::File || kind_ == FallbackKind::Pattern;
     if (!primary_ || (needsSource && !fallback_) || (kind_ == FallbackKind::Image && still_.empty()))
         throw VideoError(primary_ ? primary_->name() : "fallback", "fallback",
-                         fmt::format("{} fallback needs its source or image", fallbackKindName(kind_)));
+                         joinText(fallbackKindName(kind_), " fallback needs its source or image"));
 }
 
 FallbackSource::~FallbackSource() { close(); }
@@ -42,11 +42,11 @@ void FallbackSource::switchTo(bool fallback, const std::string& reason) {
     ++switches_;
     lastSwitchReason_ = reason;
     if (fallback) {
-        spdlog::warn("{}: showing {} fallback: {}", primary_->name(), fallbackKindName(kind_), reason);
+        spdlog::warn(joinText(primary_->name(), ": showing ", fallbackKindName(kind_), " fallback: ", reason));
         stillPending_ = true;
         if (fallback_) fallback_->open();
     } else {
-        spdlog::info("{}: back from {} fallback: {}", primary_->name(), fallbackKindName(kind_), reason);
+        spdlog::info(joinText(primary_->name(), ": back from ", fallbackKindName(kind_), " fallback: ", reason));
         if (fallback_) fallback_->close();
     }
 }
@@ -74,14 +74,14 @@ std::optional<Frame> FallbackSource::fallbackFrame() {
 std::optional<Frame> FallbackSource::newest() {
     std::optional<Frame> f = primary_->newest();
     if (f) {
-        if (showingFallback_) switchTo(false, fmt::format("primary delivers frames again (frame {})", f->sequence));
+        if (showingFallback_) switchTo(false, joinText("primary delivers frames again (frame ", f->sequence, ")"));
         if (kind_ == FallbackKind::LastGoodFrame) lastGood_ = f;
         return f;
     }
     if (!showingFallback_) {
         const SourceState s = primary_->state();
         if (kind_ == FallbackKind::None || !isLost(s.status)) return std::nullopt;
-        switchTo(true, fmt::format("primary {}: {}", sourceStatusName(s.status), s.reason));
+        switchTo(true, joinText("primary ", sourceStatusName(s.status), ": ", s.reason));
     }
     return fallbackFrame();
 }

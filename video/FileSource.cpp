@@ -1,10 +1,10 @@
 #include "video/FileSource.hpp"
+#include "graph/core/JoinText.hpp"
 
 #include "video/VideoError.hpp"
 
 #include <spdlog/spdlog.h>
 
-#include <fmt/format.h>
 
 #include <cmath>
 #include <filesystem>
@@ -38,12 +38,12 @@ FileSource::FileSource(FileOptions options) : options_(std::move(options)) {
     info_.frameCount = static_cast<std::int64_t>(capture_.get(cv::CAP_PROP_FRAME_COUNT));
     info_.codec = fourccString(static_cast<std::uint32_t>(capture_.get(cv::CAP_PROP_FOURCC)));
     if (!(info_.fps > 0.0 && info_.fps < 1000.0)) {
-        spdlog::warn("{}: container gives no usable frame rate ({}); assuming 30 fps", path, info_.fps);
+        spdlog::warn(joinText(path, ": container gives no usable frame rate (", info_.fps, "); assuming 30 fps"));
         info_.fps = 30.0;
     }
     if (!capture_.read(pending_) || pending_.empty())
         throw VideoError(path, "frame 0",
-                         fmt::format("codec '{}' decoded no image: unsupported codec or damaged start", info_.codec));
+                         joinText("codec '", info_.codec, "' decoded no image: unsupported codec or damaged start"));
     if (info_.width <= 0 || info_.height <= 0) {
         info_.width = pending_.cols;
         info_.height = pending_.rows;
@@ -56,8 +56,8 @@ std::chrono::nanoseconds FileSource::timestampOf(std::int64_t index) const {
 
 void FileSource::seek(std::int64_t frameIndex) {
     if (frameIndex < 0 || (info_.frameCount > 0 && frameIndex >= info_.frameCount))
-        throw VideoError(options_.path, fmt::format("seek to frame {}", frameIndex),
-                         fmt::format("expected 0..{}", info_.frameCount - 1));
+        throw VideoError(options_.path, joinText("seek to frame ", frameIndex),
+                         joinText("expected 0..", info_.frameCount - 1));
     pending_.release();
     capture_.set(cv::CAP_PROP_POS_FRAMES, static_cast<double>(frameIndex));
     index_ = frameIndex;
@@ -77,10 +77,10 @@ std::optional<cv::Mat> FileSource::decode() {
         // No image before the container's frame count: the file is cut short
         // or damaged here. Past the count, it simply ended.
         if (info_.frameCount <= 0 || index_ >= info_.frameCount) return std::nullopt;
-        const std::string where = fmt::format("frame {} of {}", index_, info_.frameCount);
+        const std::string where = joinText("frame ", index_, " of ", info_.frameCount);
         if (options_.onDamage == OnDamage::Stop)
             throw VideoError(options_.path, where, "decoder returned no image (truncated or damaged file)");
-        spdlog::warn("{}: {}: decoder returned no image; skipping (on-damage: skip)", options_.path, where);
+        spdlog::warn(joinText(options_.path, ": ", where, ": decoder returned no image; skipping (on-damage: skip)"));
         ++skipped_;
         ++index_;
         if (index_ >= info_.frameCount) return std::nullopt;
@@ -115,8 +115,8 @@ GrabResult FileSource::grab() {
         return {std::nullopt, {SourceStatus::Error, e.what()}};
     }
     if (!f) {
-        std::string reason = fmt::format("{}: end after {} frames", options_.path, sequence_);
-        if (skipped_ > 0) reason += fmt::format(" ({} damaged frames skipped)", skipped_);
+        std::string reason = joinText(options_.path, ": end after ", sequence_, " frames");
+        if (skipped_ > 0) reason += joinText(" (", skipped_, " damaged frames skipped)");
         return {std::nullopt, {SourceStatus::Ended, reason}};
     }
     if (options_.paced) f->captured = pacer_.release(f->timestamp);

@@ -1,4 +1,5 @@
 #include "video/LibcameraSource.hpp"
+#include "graph/core/JoinText.hpp"
 
 #include "video/VideoError.hpp"
 
@@ -6,7 +7,6 @@
 #include <opencv2/imgcodecs.hpp>
 #include <spdlog/spdlog.h>
 
-#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -103,8 +103,8 @@ std::string LibcameraSource::Impl::connect() {
     const auto cams = manager->cameras();
     if (cams.empty()) return "libcamera lists no camera";
     camera = options.cameraId.empty() ? cams.front() : manager->get(options.cameraId);
-    if (!camera) return fmt::format("libcamera has no camera '{}'", options.cameraId);
-    if (camera->acquire() != 0) return fmt::format("camera '{}' is in use", camera->id());
+    if (!camera) return joinText("libcamera has no camera '", options.cameraId, "'");
+    if (camera->acquire() != 0) return joinText("camera '", camera->id(), "' is in use");
     acquired = true;
     removed = false;
 
@@ -124,7 +124,7 @@ std::string LibcameraSource::Impl::connect() {
     if (sc.pixelFormat == libcamera::formats::YUYV) format = PixelFormat::Yuyv;
     else if (sc.pixelFormat == libcamera::formats::NV12) format = PixelFormat::Nv12;
     else if (sc.pixelFormat == libcamera::formats::MJPEG) format = PixelFormat::Mjpeg;
-    else return fmt::format("camera settled on {}, which arcomp cannot convert", sc.pixelFormat.toString());
+    else return joinText("camera settled on ", sc.pixelFormat.toString(), ", which arcomp cannot convert");
     width = static_cast<int>(sc.size.width);
     height = static_cast<int>(sc.size.height);
     stride = static_cast<int>(sc.stride);
@@ -150,7 +150,7 @@ std::string LibcameraSource::Impl::connect() {
     started = true;
     for (auto& r : requests)
         if (camera->queueRequest(r.get()) != 0) return "Camera::queueRequest failed";
-    spdlog::info("libcamera {}: streaming {} {}x{}", camera->id(), pixelFormatName(format), width, height);
+    spdlog::info(joinText("libcamera ", camera->id(), ": streaming ", pixelFormatName(format), " ", width, "x", height));
     return {};
 }
 
@@ -244,10 +244,10 @@ GrabResult LibcameraSource::grab() {
             const std::string id = s.camera ? s.camera->id() : std::string("camera");
             s.teardown();
             s.waitBeforeConnect = true;
-            return {std::nullopt, {SourceStatus::Disconnected, fmt::format("libcamera removed {}", id)}};
+            return {std::nullopt, {SourceStatus::Disconnected, joinText("libcamera removed ", id)}};
         }
         if (s.completed.empty())
-            return {std::nullopt, {SourceStatus::Stalled, fmt::format("no frame for {} ms", timeout.count())}};
+            return {std::nullopt, {SourceStatus::Stalled, joinText("no frame for ", timeout.count(), " ms")}};
         request = s.completed.front();
         s.completed.pop_front();
     }

@@ -1,4 +1,5 @@
 #include "video/OpenSource.hpp"
+#include "graph/core/JoinText.hpp"
 
 #include "video/CaptureThread.hpp"
 #include "video/FallbackSource.hpp"
@@ -10,7 +11,6 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include <fmt/format.h>
 
 namespace arcomp {
 
@@ -19,7 +19,7 @@ namespace {
 std::unique_ptr<FrameSource> openPrimary(const SourceSpec& spec) {
     if (spec.width <= 0 || spec.height <= 0 || !(spec.fps > 0.0))
         throw VideoError(spec.path.empty() ? "source" : spec.path, "spec",
-                         fmt::format("size {}x{} at {} fps: expected positive values", spec.width, spec.height, spec.fps));
+                         joinText("size ", spec.width, "x", spec.height, " at ", spec.fps, " fps: expected positive values"));
     CaptureThread::GrabberFactory factory;
     std::string name = spec.path;
     switch (spec.kind) {

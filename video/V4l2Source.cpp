@@ -1,11 +1,11 @@
 #include "video/V4l2Source.hpp"
+#include "graph/core/JoinText.hpp"
 
 #include "video/VideoError.hpp"
 
 #include <opencv2/imgcodecs.hpp>
 #include <spdlog/spdlog.h>
 
-#include <fmt/format.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -51,13 +51,13 @@ V4l2Source::V4l2Source(V4l2Options options, std::shared_ptr<V4l2Device> device)
 V4l2Source::~V4l2Source() { teardown(); }
 
 std::string V4l2Source::errnoText(const char* call) const {
-    return fmt::format("{} ({}): {}", call, node_, std::strerror(errno));
+    return joinText(call, " (", node_, "): ", std::strerror(errno));
 }
 
 std::string V4l2Source::connect(bool& permanent) {
     permanent = false;
     node_ = device_->resolve(options_.device);
-    if (node_.empty()) return fmt::format("{} is not present", options_.device);
+    if (node_.empty()) return joinText(options_.device, " is not present");
     fd_ = device_->open(node_);
     if (fd_ < 0) return errnoText("open");
 
@@ -66,7 +66,7 @@ std::string V4l2Source::connect(bool& permanent) {
     const std::uint32_t caps = (cap.capabilities & V4L2_CAP_DEVICE_CAPS) ? cap.device_caps : cap.capabilities;
     if (!(caps & V4L2_CAP_VIDEO_CAPTURE) || !(caps & V4L2_CAP_STREAMING)) {
         permanent = true;
-        return fmt::format("{} is not a streaming video capture device (capabilities {:#x})", node_, caps);
+        return joinText(node_, " is not a streaming video capture device (capabilities 0x", std::hex, caps, ")");
     }
 
     const std::vector<std::uint32_t> offered = offeredFourccs(*device_, fd_);
@@ -80,7 +80,7 @@ std::string V4l2Source::connect(bool& permanent) {
         permanent = true;
         std::string asked;
         for (PixelFormat p : options_.preference) asked += (asked.empty() ? "" : ", ") + std::string(pixelFormatName(p));
-        return fmt::format("{} offers {}; the config asks for {}", node_, joinFourccs(offered), asked);
+        return joinText(node_, " offers ", joinFourccs(offered), "; the config asks for ", asked);
     }
 
     v4l2_format fmt{};
@@ -94,28 +94,28 @@ std::string V4l2Source::connect(bool& permanent) {
     format_ = pixelFormatFromFourcc(fmt.fmt.pix.pixelformat);
     if (!format_) {
         permanent = true;
-        return fmt::format("{} switched to unsupported format {}", node_, fourccString(fmt.fmt.pix.pixelformat));
+        return joinText(node_, " switched to unsupported format ", fourccString(fmt.fmt.pix.pixelformat));
     }
     width_ = static_cast<int>(fmt.fmt.pix.width);
     height_ = static_cast<int>(fmt.fmt.pix.height);
     stride_ = fmt.fmt.pix.bytesperline ? static_cast<int>(fmt.fmt.pix.bytesperline)
                                        : (*format_ == PixelFormat::Yuyv ? width_ * 2 : width_);
     if (width_ != options_.width || height_ != options_.height)
-        spdlog::warn("{}: asked for {}x{}, device gives {}x{}", node_, options_.width, options_.height, width_, height_);
+        spdlog::warn(joinText(node_, ": asked for ", options_.width, "x", options_.height, ", device gives ", width_, "x", height_));
     encoding_ = options_.encoding.value_or(defaultYuvEncoding(*format_, height_));
 
     v4l2_streamparm parm{};
     parm.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
     parm.parm.capture.timeperframe = {1000, static_cast<std::uint32_t>(std::lround(options_.fps * 1000.0))};
     if (device_->ioctl(fd_, VIDIOC_S_PARM, &parm) != 0)
-        spdlog::debug("{}: VIDIOC_S_PARM refused; keeping the device's rate", node_);
+        spdlog::debug(joinText(node_, ": VIDIOC_S_PARM refused; keeping the device's rate"));
 
     v4l2_requestbuffers req{};
     req.count = static_cast<std::uint32_t>(options_.bufferCount);
     req.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
     req.memory = V4L2_MEMORY_MMAP;
     if (device_->ioctl(fd_, VIDIOC_REQBUFS, &req) != 0) return errnoText("VIDIOC_REQBUFS");
-    if (req.count < 2) return fmt::format("{} granted {} buffers, need 2", node_, req.count);
+    if (req.count < 2) return joinText(node_, " granted ", req.count, " buffers, need 2");
     for (std::uint32_t i = 0; i < req.count; ++i) {
         v4l2_buffer b{};
         b.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
@@ -129,7 +129,7 @@ std::string V4l2Source::connect(bool& permanent) {
     }
     int type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
     if (device_->ioctl(fd_, VIDIOC_STREAMON, &type) != 0) return errnoText("VIDIOC_STREAMON");
-    spdlog::info("{}: streaming {} {}x{} from {}", options_.device, pixelFormatName(*format_), width_, height_, node_);
+    spdlog::info(joinText(options_.device, ": streaming ", pixelFormatName(*format_), " ", width_, "x", height_, " from ", node_));
     return {};
 }
 
@@ -203,9 +203,9 @@ GrabResult V4l2Source::grab() {
     if (n < 0 && errno == EINTR) return {std::nullopt, {SourceStatus::Streaming, {}}};
     if (n < 0) return disconnect(errnoText("poll"));
     if (n == 0)
-        return {std::nullopt, {SourceStatus::Stalled, fmt::format("{}: no frame for {} ms", node_, timeoutMs)}};
+        return {std::nullopt, {SourceStatus::Stalled, joinText(node_, ": no frame for ", timeoutMs, " ms")}};
     if (revents & (POLLERR | POLLHUP | POLLNVAL))
-        return disconnect(fmt::format("{}: poll reports the device gone (revents {:#x})", node_, revents));
+        return disconnect(joinText(node_, ": poll reports the device gone (revents 0x", std::hex, revents, ")"));
 
     v4l2_buffer b{};
     b.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
@@ -228,8 +228,8 @@ GrabResult V4l2Source::grab() {
     if (device_->ioctl(fd_, VIDIOC_QBUF, &b) != 0) return disconnect(errnoText("VIDIOC_QBUF"));
     if (!img) {
         ++errorFrames_;
-        spdlog::debug("{}: skipped buffer {} ({})", node_, bufferSequence,
-                      flaggedError ? "V4L2_BUF_FLAG_ERROR" : "undecodable");
+        spdlog::debug(joinText(node_, ": skipped buffer ", bufferSequence, " (",
+                              flaggedError ? "V4L2_BUF_FLAG_ERROR" : "undecodable", ")"));
         return {std::nullopt, {SourceStatus::Streaming, {}}};
     }
     f.image = std::move(*img);

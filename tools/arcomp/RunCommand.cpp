@@ -8,6 +8,7 @@
 // reloads the config (as SIGHUP does), Esc or Q quits.
 
 #include "runtime/ShutdownSignals.hpp"
+#include "graph/core/JoinText.hpp"
 #include "runtime/StationLog.hpp"
 #include "runtime/StationRunner.hpp"
 #include "runtime/StatsOverlay.hpp"
@@ -50,7 +51,7 @@ std::unique_ptr<StationRunner> startStation(const StationConfig& cfg) {
     try {
         return std::make_unique<StationRunner>(cfg, nullptr, openLive);
     } catch (const std::exception& e) {
-        spdlog::error("{}; showing the test pattern instead", e.what());
+        spdlog::error(joinText(e.what(), "; showing the test pattern instead"));
         StationConfig plain = cfg;
         plain.compositing.video = SourceSpec{};
         plain.compositing.matte = {};
@@ -115,9 +116,9 @@ int run(const RunOptions& o) {
             const std::string file = finalFrame && !o.screenshot.empty() ? o.screenshot : "screenshot-" + std::to_string(done) + ".png";
             try {
                 writePng(file, presenter.screenshot(size));
-                spdlog::info("screenshot {}", file);
+                spdlog::info(joinText("screenshot ", file));
             } catch (const std::exception& e) {
-                spdlog::error("screenshot not saved: {}", e.what());
+                spdlog::error(joinText("screenshot not saved: ", e.what()));
                 runner->metrics().recordError(e.what());
             }
             takeScreenshot = false;
@@ -126,7 +127,7 @@ int run(const RunOptions& o) {
         window->poll();
     }
     runner->finish();
-    spdlog::info("station stopped after {} frames", done);
+    spdlog::info(joinText("station stopped after ", done, " frames"));
     return kExitOk;
 }
 
