@@ -8,10 +8,10 @@
 //   const std::filesystem::path folder = bakeCacheFolder(cfg.compositing.compositor);
 //   const std::filesystem::path file = folder / bakeCacheFileName(cfg.file, "tree", node, ".lod");
 
-#include "graph/core/Scene.hpp"
 #include "runtime/CompositingConfig.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 

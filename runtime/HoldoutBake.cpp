@@ -20,7 +20,7 @@ bool moves(const World& world, NodeId n) {
 } // namespace
 
 HoldoutBake bakeHoldouts(World& world, const View& view, const CompositorConfig& config,
-                         const std::filesystem::path& configFile) {
+                         const std::filesystem::path& cacheFolder, const std::filesystem::path& configFile) {
     Scene& scene = world.scene;
     // Drawn unlit into the mask, with the CG node's own matrix.
     Material white;
@@ -33,7 +33,7 @@ HoldoutBake bakeHoldouts(World& world, const View& view, const CompositorConfig&
     const bool full = config.holdout == HoldoutMesh::Full;
 
     HoldoutBake bake;
-    bake.folder = bakeCacheFolder(config);
+    bake.folder = cacheFolder;
     std::vector<NodeId> meshes;
     for (const NodeId n : scene.order())
         if (scene.kind(n) == NodeKind::Mesh) meshes.push_back(n);

@@ -6,7 +6,7 @@
 // the next start when it still matches the mesh and the region, so a
 // station that restarts does not bake again what it baked yesterday.
 //
-//   const HoldoutBake bake = bakeHoldouts(world, view, cfg.compositing.compositor, cfg.file);
+//   const HoldoutBake bake = bakeHoldouts(world, view, cfg.compositing.compositor, folder, cfg.file);   // folder: runtime/BakeCache.hpp
 //   // world.holdouts now has an entry per mesh node; bake.loaded + bake.baked of them
 
 #include "graph/core/View.hpp"
@@ -24,8 +24,9 @@ struct HoldoutBake : BakeTally {
 
 // Adds the holdouts to world.holdouts. A mover leaves the region it was
 // baked for, so its holdout is its full mesh; so is every holdout with
-// `holdout: full`. `configFile` names the cache files.
+// `holdout: full`. Cached in `cacheFolder` (empty: none); `configFile`
+// names the cache files.
 HoldoutBake bakeHoldouts(World& world, const View& view, const CompositorConfig& config,
-                         const std::filesystem::path& configFile);
+                         const std::filesystem::path& cacheFolder, const std::filesystem::path& configFile);
 
 } // namespace arcomp

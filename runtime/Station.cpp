@@ -41,7 +41,8 @@ Station::Station(const StationConfig& cfg, StationInput input)
     : cfg_(cfg), capture_(std::move(input)), matte_(cfg_.compositing.matte),
       holdout_(cfg_.compositing.compositor.personPlaneMetres),
       outputs_(cfg_.compositing.output, capture_.fps(), capture_.size()) {
-    lodBake_ = buildScene(cfg_, world_, warnings_, bakeCacheFolder(cfg_.compositing.compositor));
+    const std::filesystem::path cache = bakeCacheFolder(cfg_.compositing.compositor);
+    lodBake_ = buildScene(cfg_, world_, warnings_, cache);
     world_.scene.update();
     // The CG camera is the video camera: its pose and field of view from the
     // config, its image size the video's.
@@ -51,7 +52,7 @@ Station::Station(const StationConfig& cfg, StationInput input)
                               : View::framing(world_.scene.bound().empty() ? Sphere{glm::vec3(0.0f), 1.0f} : world_.scene.bound(),
                                               camera.fovyDegrees, camera.size);
     gaze_ = makeGazeSource(cfg_.gaze, view_);
-    holdoutBake_ = bakeHoldouts(world_, view_, cfg_.compositing.compositor, cfg_.file);
+    holdoutBake_ = bakeHoldouts(world_, view_, cfg_.compositing.compositor, cache, cfg_.file);
     bakeImpostors(world_.scene, world_.grouping, view_.eye);
     if (cfg_.budget.enabled) budget_.emplace(cfg_.budget);
 
