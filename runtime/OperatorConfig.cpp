@@ -1,5 +1,7 @@
 #include "runtime/OperatorConfig.hpp"
 
+#include "graph/core/BadInput.hpp"
+#include "runtime/StatusAccess.hpp"
 #include "runtime/YamlMap.hpp"
 
 #include <arpa/inet.h>
@@ -12,9 +14,23 @@ void readOperatorConfig(YamlMap& root, OperatorConfig& out) {
         out.statusEnabled = true;
         status.integer("port", out.status.port, 1, 65535, Required::Yes);
         status.text("bind", out.status.bind);
-        in_addr address{};
-        if (inet_pton(AF_INET, out.status.bind.c_str(), &address) != 1)
-            status.report().add(status.mark(), "status.bind: expected an IPv4 address such as 127.0.0.1 (loopback) or 0.0.0.0 (every interface)");
+        status.path("token_file", out.status.tokenFile, true);
+        if (!isLoopbackAddress(out.status.bind)) {
+            in_addr address{};
+            if (inet_pton(AF_INET, out.status.bind.c_str(), &address) != 1)
+                status.report().add(status.mark(), "status.bind: expected an IPv4 address such as 127.0.0.1 (loopback) or 0.0.0.0 (every interface)");
+            else if (out.status.tokenFile.empty())
+                status.report().add(status.mark(), "status.bind: " + out.status.bind +
+                                                       " is beyond loopback, so the endpoint needs status.token_file: a file "
+                                                       "holding the bearer token that scrapers must send");
+        }
+        if (!out.status.tokenFile.empty() && std::filesystem::exists(out.status.tokenFile)) {
+            try {
+                readBearerToken(out.status.tokenFile);
+            } catch (const BadInput& e) {
+                status.report().add(status.mark(), "status.token_file: " + std::string(e.what()));
+            }
+        }
         status.finish();
     }
     YamlMap log = root.map("log");

@@ -4,6 +4,7 @@
 // `log` section the station logs to stderr at info level.
 //
 //   status: {port: 9464}                         # bind defaults to 127.0.0.1
+//   status: {port: 9464, bind: 0.0.0.0, token_file: /etc/arcomp/status-token}   # beyond loopback: a token
 //   log: {level: debug, file: logs/station.log}  # relative to the config
 
 #include "runtime/StationLog.hpp"

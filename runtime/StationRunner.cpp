@@ -141,9 +141,9 @@ void StationRunner::restart(StationConfig cfg, StationInput input) {
     fresh->setFirstOutputIndex(frames_);
     fresh->setClockStart(started_);
     station_ = std::move(fresh);
+    // A reload reads the token file again, so a rotated token takes effect.
     const bool statusChanged = cfg.operation.statusEnabled != cfg_.operation.statusEnabled ||
-                               cfg.operation.status.port != cfg_.operation.status.port ||
-                               cfg.operation.status.bind != cfg_.operation.status.bind;
+                               cfg.operation.status != cfg_.operation.status || !cfg.operation.status.tokenFile.empty();
     cfg_ = std::move(cfg);
     if (statusChanged) startStatusServer();
     reportWarnings();

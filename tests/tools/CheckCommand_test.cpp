@@ -60,8 +60,29 @@ INSTANTIATE_TEST_SUITE_P(
         ConfigErrorCase{"missingFilePlace", "scene:\n  objects:\n    - model: statue.glb\n",
                         "station.yaml:3:14: scene.objects[0].model: file '"},
         ConfigErrorCase{"numberOutOfRange", "scene:\n  objects:\n    - shape: box\nstatus:\n  port: 99999\n",
-                        "station.yaml:5:9: status.port: 99999 is out of range; expected 1 to 65535"}),
+                        "station.yaml:5:9: status.port: 99999 is out of range; expected 1 to 65535"},
+        ConfigErrorCase{"statusBeyondLoopbackWithoutAToken", "status:\n  port: 9464\n  bind: 0.0.0.0\n",
+                        "station.yaml:2:3: status.bind: 0.0.0.0 is beyond loopback, so the endpoint needs status.token_file"},
+        ConfigErrorCase{"statusTokenFileMissing", "status:\n  port: 9464\n  bind: 0.0.0.0\n  token_file: token.txt\n",
+                        "status.token_file: file '"}),
     [](const auto& info) { return std::string(info.param.name); });
+
+TEST(CheckCommand, aStatusEndpointBeyondLoopbackNeedsAUsableTokenFile) {
+    TempDir dir;
+    const auto config = dir.write(
+        "station.yaml", "scene:\n  objects:\n    - shape: box\nstatus:\n  port: 9464\n  bind: 0.0.0.0\n  token_file: token.txt\n");
+    dir.write("token.txt", "hunter2\n");
+    auto r = check(config);
+    EXPECT_EQ(r.code, 2) << r.out;
+    EXPECT_NE(r.out.find("status.token_file: " + (dir.path() / "token.txt").string() + ": line 1: the status token is 7 characters"),
+              std::string::npos)
+        << r.out;
+    dir.write("token.txt", "9f86d081884c7d659a2feaa0c55ad015\n");
+    r = check(config);
+    EXPECT_EQ(r.code, 0) << r.out;
+    // The token never appears in what check prints.
+    EXPECT_EQ(r.out.find("9f86d081884c7d659a2feaa0c55ad015"), std::string::npos) << r.out;
+}
 
 TEST(CheckCommand, everyErrorIsListedAtOnce) {
     TempDir dir;
