@@ -1,4 +1,4 @@
-// Writes small valid inputs for the binary and CSV fuzz targets into
+// Writes small valid inputs for the binary, CSV and HTTP fuzz targets into
 // <out>/<target>/, from the project's own writers, so that each fuzzer
 // starts from a file its parser accepts and mutates inward from there.
 //
@@ -40,7 +40,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     const fs::path out = argv[1];
-    for (const char* t : {"lod", "silhouette", "voxel", "calibration", "gaze", "obj"}) fs::create_directories(out / t);
+    for (const char* t : {"lod", "silhouette", "voxel", "calibration", "gaze", "obj", "http"}) fs::create_directories(out / t);
 
     const Geometry g = tetrahedron();
     std::vector<LodLevel> levels(2);
@@ -75,6 +75,9 @@ int main(int argc, char** argv) {
     model.set(0, Shading::Phong, {3.2e-6, 0.5});
     model.set(1, Shading::Flat, {2.0e-6, 0.4});
     writeCalibration(out / "calibration/calib.yaml", model, {"gl33: fuzz seed", {1280, 720}});
+
+    writeText(out / "http/scrape.txt", "GET /metrics HTTP/1.1\r\nHost: 127.0.0.1:9464\r\nAccept: text/plain\r\n\r\n");
+    writeText(out / "http/token.txt", "GET /status?x=1 HTTP/1.0\nAuthorization: Bearer 0123456789abcdef\n\n");
 
     writeText(out / "gaze/track.csv",
               "time,eye_x,eye_y,eye_z,gaze_x,gaze_y,gaze_z\n"
