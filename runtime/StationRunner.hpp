@@ -52,6 +52,7 @@ public:
     const StationConfig& config() const { return cfg_; }
     StationMetrics& metrics() { return metrics_; }
     int statusPort() const { return server_ ? server_->port() : -1; }
+    StatusServerCounters statusCounters() const { return server_ ? server_->counters() : StatusServerCounters{}; }
     std::uint64_t frames() const { return frames_; }
     std::uint64_t reloads() const { return reloads_; }
     // Frames whose file output failed (disk full, ...): each is logged

@@ -8,6 +8,7 @@
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <poll.h>
+#include <pthread.h>
 #include <sys/eventfd.h>
 #include <sys/socket.h>
 
@@ -111,9 +112,11 @@ void StatusServer::Impl::run() {
 }
 
 void StatusServer::Impl::acceptWaiting(Clock::time_point now) {
-    // A bounded batch, so that a flood of connects cannot starve the
-    // connections already open.
-    for (int i = 0; i < 256; ++i) {
+    // A batch of at most half the table, so that a flood of connects can
+    // neither starve the connections already open nor evict, within one
+    // round, a connection accepted in the same round: a scraper's request
+    // is read (just below, or at the next round) before it can be closed.
+    for (int i = 0; i < std::max(1, limits.maxConnections / 2); ++i) {
         sockaddr_in peer{};
         socklen_t length = sizeof peer;
         const int fd = ::accept4(listener.get(), reinterpret_cast<sockaddr*>(&peer), &length, SOCK_NONBLOCK | SOCK_CLOEXEC);
@@ -153,6 +156,9 @@ void StatusServer::Impl::admit(FileDescriptor socket, std::uint32_t client, Cloc
     c.client = client;
     c.lastHeard = now;
     c.deadline = now + limits.requestTimeout;
+    // A scraper sends its request as soon as it is connected, so it is
+    // often here already: answered now, it is never the idlest.
+    receive(c, now);
 }
 
 bool StatusServer::Impl::evictIdlest(std::optional<std::uint32_t> client) {
@@ -275,7 +281,10 @@ StatusServer::StatusServer(const StationMetrics& metrics, const StatusEndpoint& 
 
     impl_->wake = FileDescriptor(::eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK));
     if (!impl_->wake) throw std::runtime_error("status server: cannot create its eventfd: " + std::string(std::strerror(errno)));
-    impl_->thread = std::thread([impl = impl_.get()] { impl->run(); });
+    impl_->thread = std::thread([impl = impl_.get()] {
+        pthread_setname_np(pthread_self(), "arcomp-status");
+        impl->run();
+    });
 }
 
 StatusServer::~StatusServer() {

@@ -20,10 +20,9 @@
 #include "runtime/StationRunner.hpp"
 #include "tools/arcomp/Command.hpp"
 #include "tools/bench/BenchJson.hpp"
+#include "tools/bench/DemoStation.hpp"
 #include "tools/bench/Stats.hpp"
 
-#include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
 
 #include <time.h>
 #include <unistd.h>
@@ -48,7 +47,7 @@ using Clock = std::chrono::steady_clock;
 struct SoakOptions {
     long frames = 50000;
     std::string config;
-    std::string video = "/usr/share/doc/opencv-doc/examples/data/vtest.avi";
+    std::string video = kDemoVideo;
 };
 
 constexpr double kRssGrowthLimitMb = 2.0;
@@ -68,48 +67,15 @@ int openFds() {
     return n - 1;  // the iterator's own descriptor
 }
 
-// A short clip of moving blobs over a textured background, for machines
-// without vtest.avi: enough for the matte to find "people".
-std::string writeClip(const fs::path& dir) {
-    const std::string file = (dir / "soak-clip.avi").string();
-    cv::VideoWriter out(file, cv::CAP_FFMPEG, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 25.0, {640, 480});
-    if (!out.isOpened()) throw std::runtime_error(file + ": cannot write the generated clip");
-    cv::Mat background(480, 640, CV_8UC3);
-    cv::randu(background, cv::Scalar::all(40), cv::Scalar::all(90));
-    for (int i = 0; i < 100; ++i) {
-        cv::Mat f = background.clone();
-        cv::ellipse(f, {80 + i * 5, 260}, {28, 80}, 0, 0, 360, cv::Scalar(30, 60, 200), cv::FILLED);
-        cv::ellipse(f, {560 - i * 4, 300}, {24, 70}, 0, 0, 360, cv::Scalar(200, 160, 40), cv::FILLED);
-        out.write(f);
-    }
-    return file;
-}
-
-std::string defaultStation(const std::string& video) {
-    return "video:\n  source: file\n  path: \"" + video + "\"\n  loop: true\n"
-           "matte:\n  kind: background\n  background:\n    method: mog2\n    scale: 0.5\n    feather_px: 3\n"
-           "compositor:\n  person_plane_m: 12\n  backdrop: video\n"
-           "scene:\n  objects:\n"
-           "    - {name: pillar, shape: box, size: [0.5, 4.6, 0.5], position: [0.6, -0.6, -7.0]}\n"
-           "    - {name: globe, shape: sphere, radius: 1.4, position: [5.4, -0.3, -16.0]}\n"
-           "    - {name: kiosk, shape: box, size: [2.2, 1.0, 0.8], position: [-4.7, 1.45, -14.0]}\n"
-           "camera:\n  eye: [0, 0, 0]\n  target: [0, 0, -10]\n  fovy_deg: 45\n  size: [768, 576]\n"
-           "render:\n  shading: phong\n";
-}
-
 int soak(const SoakOptions& o) {
     if (o.frames < 100) throw InputError("--frames must be at least 100 (warm-up and two windows)");
     const fs::path dir = fs::temp_directory_path() / ("arcomp-bench-soak-" + std::to_string(::getpid()));
     fs::create_directories(dir);
-    std::string video = o.video;
-    if (o.config.empty() && !fs::exists(video)) {
-        std::fprintf(stderr, "bench soak: %s is absent, generating a clip\n", video.c_str());
-        video = writeClip(dir);
-    }
+    const std::string video = o.config.empty() ? demoVideo(dir, "bench soak", o.video) : o.video;
     fs::path configFile = o.config;
     if (configFile.empty()) {
         configFile = dir / "soak.yaml";
-        std::ofstream(configFile) << defaultStation(video);
+        std::ofstream(configFile) << demoStationYaml(video);
     }
     StationConfig cfg = loadStationConfig(configFile);
     if (!cfg.compositing.video) throw InputError(configFile.string() + ": no `video` section to loop");
