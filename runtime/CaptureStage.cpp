@@ -68,8 +68,14 @@ bool CaptureStage::grab() {
             cv::resize(f->image, frame_, frame_.size(), 0, 0, cv::INTER_AREA);  // a fallback of another size
         else frame_ = f->image;
         if (!frame_.isContinuous()) frame_ = frame_.clone();
+        if (lens_) lens_->apply(frame_);
     }
     return !frame_.empty();
+}
+
+void CaptureStage::undistortWith(LensUndistortion lens) {
+    lens_ = std::move(lens);
+    if (!frame_.empty()) lens_->apply(frame_);
 }
 
 std::string CaptureStage::name() const {

@@ -10,6 +10,7 @@
 
 #include "video/FrameGrabber.hpp"
 #include "video/FrameSource.hpp"
+#include "video/LensUndistortion.hpp"
 
 #include <glm/glm.hpp>
 #include <opencv2/core/mat.hpp>
@@ -17,6 +18,7 @@
 #include <chrono>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace arcomp {
@@ -59,6 +61,9 @@ public:
     std::uint64_t drops() const;
     // Why a replay ended ("end after 795 frames", a decoder error); empty while it runs.
     const std::string& end() const { return end_; }
+    // From now on every frame (the current one included) is undistorted
+    // before anyone sees it: a calibrated lens.
+    void undistortWith(LensUndistortion lens);
     // The input, still open, for the next station after a config reload.
     StationInput release() { return std::move(input_); }
 
@@ -67,6 +72,7 @@ private:
 
     StationInput input_;
     cv::Mat frame_;
+    std::optional<LensUndistortion> lens_;
     bool firstPending_ = false;
     bool newFrame_ = false;
     std::string end_;

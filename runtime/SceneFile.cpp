@@ -16,6 +16,7 @@ namespace arcomp {
 namespace fs = std::filesystem;
 
 View cameraView(const CameraConfig& c) {
+    if (c.calibrated) return c.calibrated->view(c.size, c.near, c.far);
     return View::lookAt(c.eye, c.target, c.up, c.fovyDegrees, c.size, c.near, c.far);
 }
 

@@ -45,9 +45,15 @@ Station::Station(const StationConfig& cfg, StationInput input)
     lodBake_ = buildScene(cfg_, world_, warnings_, cache);
     world_.scene.update();
     // The CG camera is the video camera: its pose and field of view from the
-    // config, its image size the video's.
+    // config or its calibration file, its image size the video's.
     CameraConfig camera = cfg_.camera;
     camera.size = capture_.size();
+    if (camera.calibrated && camera.calibrated->intrinsics.distorted()) {
+        const CameraIntrinsics k = camera.calibrated->intrinsics.scaledTo(camera.size);
+        const auto& d = k.distortion;
+        capture_.undistortWith(LensUndistortion(cv::Matx33d(k.fx, 0, k.cx, 0, k.fy, k.cy, 0, 0, 1),
+                                                cv::Vec<double, 5>(d[0], d[1], d[2], d[3], d[4]), {camera.size.x, camera.size.y}));
+    }
     view_ = cfg_.camera.given ? cameraView(camera)
                               : View::framing(world_.scene.bound().empty() ? Sphere{glm::vec3(0.0f), 1.0f} : world_.scene.bound(),
                                               camera.fovyDegrees, camera.size);

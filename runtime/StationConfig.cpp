@@ -1,5 +1,7 @@
 #include "runtime/StationConfig.hpp"
 
+#include "graph/core/BadInput.hpp"
+#include "runtime/CameraFile.hpp"
 #include "runtime/YamlMap.hpp"
 
 #include <limits>
@@ -102,15 +104,31 @@ StationConfig loadStationConfig(const std::filesystem::path& file) {
     if (root.has("camera")) {
         YamlMap camera = root.map("camera");
         cfg.camera.given = true;
-        camera.vec3("eye", cfg.camera.eye, Required::Yes);
-        camera.vec3("target", cfg.camera.target, Required::Yes);
+        camera.path("calibration", cfg.camera.calibration, true);
+        if (!cfg.camera.calibration.empty()) {
+            for (const char* key : {"eye", "target", "up", "fovy_deg"})
+                if (camera.has(key))
+                    camera.report().add(camera.mark(), std::string("camera.") + key +
+                                                           ": not used with camera.calibration, which gives the real camera's pose and field of view");
+            if (std::filesystem::exists(cfg.camera.calibration)) {
+                try {
+                    cfg.camera.calibrated = readCameraFile(cfg.camera.calibration);
+                } catch (const BadInput& e) {
+                    camera.report().add(camera.mark(), std::string("camera.calibration: ") + e.what());
+                }
+            }
+        }
+        const Required pose = cfg.camera.calibration.empty() ? Required::Yes : Required::No;
+        camera.vec3("eye", cfg.camera.eye, pose);
+        camera.vec3("target", cfg.camera.target, pose);
         camera.vec3("up", cfg.camera.up);
         camera.number("fovy_deg", cfg.camera.fovyDegrees, 1.0, 179.0);
         camera.vec2i("size", cfg.camera.size, 1, 16384);
+        if (cfg.camera.calibrated && !camera.has("size")) cfg.camera.size = cfg.camera.calibrated->intrinsics.imageSize;
         camera.number("near", cfg.camera.near, 1e-6, kLarge);
         camera.number("far", cfg.camera.far, 1e-6, kLarge);
         if (cfg.camera.far <= cfg.camera.near) camera.report().add(camera.mark(), "camera: far must be larger than near");
-        if (glm::length(cfg.camera.eye - cfg.camera.target) <= 0.0f)
+        if (cfg.camera.calibration.empty() && glm::length(cfg.camera.eye - cfg.camera.target) <= 0.0f)
             camera.report().add(camera.mark(), "camera: eye and target must differ");
         camera.finish();
     }

@@ -5,6 +5,7 @@
 //
 //   StationConfig cfg = loadStationConfig("configs/demo-replay.yaml");
 
+#include "graph/camera/CalibratedCamera.hpp"
 #include "graph/lod/Lod.hpp"
 #include "graph/core/Shading.hpp"
 #include "runtime/CompositingConfig.hpp"
@@ -17,6 +18,7 @@
 #include <glm/glm.hpp>
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,6 +50,10 @@ struct ObjectConfig {
 
 struct CameraConfig {
     bool given = false;
+    // With `calibration`, the real camera's pose and intrinsics
+    // (runtime/CameraFile.hpp) replace eye, target, up and fovy_deg.
+    std::filesystem::path calibration;
+    std::optional<CalibratedCamera> calibrated;
     glm::vec3 eye{0.0f, 1.6f, 5.0f};
     glm::vec3 target{0.0f, 1.0f, 0.0f};
     glm::vec3 up{0.0f, 1.0f, 0.0f};

@@ -63,6 +63,11 @@ INSTANTIATE_TEST_SUITE_P(
                         "station.yaml:5:9: status.port: 99999 is out of range; expected 1 to 65535"},
         ConfigErrorCase{"statusBeyondLoopbackWithoutAToken", "status:\n  port: 9464\n  bind: 0.0.0.0\n",
                         "station.yaml:2:3: status.bind: 0.0.0.0 is beyond loopback, so the endpoint needs status.token_file"},
+        ConfigErrorCase{"cameraCalibrationMissing", "scene:\n  objects:\n    - shape: box\ncamera:\n  calibration: cam.yaml\n",
+                        "camera.calibration: file '"},
+        ConfigErrorCase{"cameraCalibrationAndEye",
+                        "scene:\n  objects:\n    - shape: box\ncamera:\n  calibration: station.yaml\n  eye: [0, 1, 5]\n",
+                        "camera.eye: not used with camera.calibration"},
         ConfigErrorCase{"statusTokenFileMissing", "status:\n  port: 9464\n  bind: 0.0.0.0\n  token_file: token.txt\n",
                         "status.token_file: file '"}),
     [](const auto& info) { return std::string(info.param.name); });

@@ -17,6 +17,16 @@ std::vector<Command>& registeredBakes() {
     return bakes;
 }
 
+std::vector<Command>& registeredCalibrations() {
+    static std::vector<Command> calibrations;
+    return calibrations;
+}
+
+bool registerCalibration(Command command) {
+    registeredCalibrations().push_back(std::move(command));
+    return true;
+}
+
 bool registerBake(Command command) {
     registeredBakes().push_back(std::move(command));
     return true;

@@ -11,7 +11,8 @@
 //
 // `arcomp bench <name>` works the same way through registerBench (a
 // benchmark prints exactly one JSON object as the last line of stdout), and
-// `arcomp bake <name>` through registerBake.
+// `arcomp bake <name>` through registerBake, and `arcomp calibrate <name>`
+// through registerCalibration.
 //
 // Exit codes: 0 ok, 1 runtime failure, 2 bad input or usage. Throwing a
 // BadInput (graph/core/BadInput.hpp: InputError below, ModelError,
@@ -40,9 +41,11 @@ struct Command {
 bool registerCommand(Command command);
 bool registerBench(Command command);
 bool registerBake(Command command);
+bool registerCalibration(Command command);
 std::vector<Command>& registeredCommands();
 std::vector<Command>& registeredBenches();
 std::vector<Command>& registeredBakes();
+std::vector<Command>& registeredCalibrations();
 
 // Bad input from the user: a missing file, a value out of range. The
 // one-message form is the reason alone (no source, no where), so what() is

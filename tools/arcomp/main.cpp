@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <tuple>
 
 using namespace arcomp;
 
@@ -35,12 +36,16 @@ int main(int argc, char** argv) {
 
     std::vector<std::pair<CLI::App*, CommandAction>> actions;
     addAll(app, registeredCommands(), actions);
-    CLI::App* bench = app.add_subcommand("bench", "Benchmarks; each prints one JSON object as its last line");
-    bench->require_subcommand(1);
-    addAll(*bench, registeredBenches(), actions);
-    CLI::App* bake = app.add_subcommand("bake", "Precompute assets: LOD levels, silhouette meshes, voxels");
-    bake->require_subcommand(1);
-    addAll(*bake, registeredBakes(), actions);
+    const std::tuple<const char*, const char*, std::vector<Command>&> groups[] = {
+        {"bench", "Benchmarks; each prints one JSON object as its last line", registeredBenches()},
+        {"bake", "Precompute assets: LOD levels, silhouette meshes, voxels", registeredBakes()},
+        {"calibrate", "Measure the real camera: its lens, and where it stands over the floor", registeredCalibrations()},
+    };
+    for (const auto& [name, help, commands] : groups) {
+        CLI::App* group = app.add_subcommand(name, help);
+        group->require_subcommand(1);
+        addAll(*group, commands, actions);
+    }
 
     try {
         app.parse(argc, argv);

@@ -1,0 +1,110 @@
+// arcomp calibrate floor: a known camera's view of floor marks gives back
+// that camera; too few, collinear or malformed points, or no lens, are
+// refused with exit 2 and say what is wrong.
+#include "../support/TempDir.hpp"
+#include "runtime/CameraFile.hpp"
+#include "tests/support/Shell.hpp"
+
+#include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include <cstdio>
+
+using arcomp::test::TempDir;
+
+namespace arcomp {
+namespace {
+
+// 4.2 m up at x = 1, z = 12, looking along -z and 25 degrees down; a 60 degree lens.
+CalibratedCamera trueCamera() {
+    CalibratedCamera c;
+    const double f = 0.5 * 480 / std::tan(glm::radians(60.0) / 2.0);
+    c.intrinsics = {.imageSize = {640, 480}, .fx = f, .fy = f, .cx = 319.5, .cy = 239.5, .distortion = {}};
+    const double tilt = glm::radians(25.0);
+    const glm::dvec3 forward(0.0, -std::sin(tilt), -std::cos(tilt)), right(1.0, 0.0, 0.0);
+    c.rotation = glm::transpose(glm::dmat3(right, glm::cross(forward, right), forward));
+    c.translation = -c.rotation * glm::dvec3(1.0, 4.2, 12.0);
+    return c;
+}
+
+std::string pointsSeenBy(const CalibratedCamera& c, const std::vector<glm::dvec2>& floor) {
+    std::string text;
+    for (const glm::dvec2& xz : floor) {
+        const glm::dvec2 uv = c.project({xz.x, 0.0, xz.y});
+        char item[96];
+        std::snprintf(item, sizeof item, "%s%.3f,%.3f=%g,%g", text.empty() ? "" : ";", uv.x, uv.y, xz.x, xz.y);
+        text += item;
+    }
+    return text;
+}
+
+test::ShellResult calibrate(const std::string& args) { return test::arcompCommand("calibrate floor " + args); }
+
+} // namespace
+
+TEST(CalibrateFloor, sixFloorMarksGiveBackTheCameraThatSawThem) {
+    TempDir dir;
+    const auto image = dir.path() / "plate.png";
+    cv::imwrite(image.string(), cv::Mat(480, 640, CV_8UC3, cv::Scalar(90, 110, 100)));
+    const CalibratedCamera truth = trueCamera();
+    const std::string points = pointsSeenBy(truth, {{-2, 0}, {3, 0}, {-2, 4}, {3, 4}, {0, 7}, {1, 2}});
+    const auto out = dir.path() / "camera.yaml";
+    const auto r = calibrate(image.string() + " --fovy-deg 60 --points \"" + points + "\" --out " + out.string() +
+                             " --preview " + (dir.path() / "preview.png").string());
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_NE(r.out.find("4.20 m above the floor"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("tilted 25.0 degrees down"), std::string::npos) << r.out;
+
+    const CalibratedCamera found = readCameraFile(out);
+    EXPECT_NEAR(found.position().x, 1.0, 0.01);
+    EXPECT_NEAR(found.position().y, 4.2, 0.01);
+    EXPECT_NEAR(found.position().z, 12.0, 0.01);
+    EXPECT_NEAR(found.tiltDegrees(), 25.0, 0.05);
+    const glm::dvec2 far = found.project({-4.0, 0.0, -10.0}), expected = truth.project({-4.0, 0.0, -10.0});
+    EXPECT_NEAR(far.x, expected.x, 0.5);
+    EXPECT_NEAR(far.y, expected.y, 0.5);
+    EXPECT_FALSE(cv::imread((dir.path() / "preview.png").string()).empty());
+}
+
+struct FloorInputCase {
+    const char* name;
+    const char* points;  // for trueCamera's image, or literally when it holds no '@'
+    const char* lens;
+    const char* expected;
+};
+
+class CalibrateFloorRefuses : public ::testing::TestWithParam<FloorInputCase> {};
+
+TEST_P(CalibrateFloorRefuses, withExitTwoAndTheReason) {
+    TempDir dir;
+    const auto image = dir.path() / "plate.png";
+    cv::imwrite(image.string(), cv::Mat(480, 640, CV_8UC3, cv::Scalar::all(0)));
+    const auto r = calibrate(image.string() + " " + GetParam().lens + " --points \"" + GetParam().points + "\" --out " +
+                             (dir.path() / "camera.yaml").string());
+    EXPECT_EQ(r.code, 2) << r.out;
+    EXPECT_NE(r.out.find(GetParam().expected), std::string::npos) << r.out;
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "camera.yaml"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    BadInput, CalibrateFloorRefuses,
+    ::testing::Values(
+        FloorInputCase{"tooFew", "100,400=0,0;500,400=3,0;300,200=1,6", "--fovy-deg 60", "3 given; the floor needs at least 4"},
+        FloorInputCase{"collinear", "100,400=0,0;200,380=1,1;300,360=2,2;400,340=3,3", "--fovy-deg 60", "on one line"},
+        FloorInputCase{"malformed", "100,400=0,0;500,400:3,0;300,200=1,6;320,300=1,3", "--fovy-deg 60",
+                       "item 2 (\"500,400:3,0\") is not u,v=x,z"},
+        FloorInputCase{"outsideTheImage", "100,400=0,0;900,400=3,0;300,200=1,6;320,300=1,3", "--fovy-deg 60",
+                       "outside the 640x480 image"},
+        FloorInputCase{"noLens", "100,400=0,0;500,400=3,0;300,200=1,6;320,300=1,3", "", "give the lens"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST(CalibrateFloor, anImageThatIsNotOneIsRefused) {
+    TempDir dir;
+    const auto r = calibrate(dir.write("plate.png", "not a picture").string() +
+                             " --fovy-deg 60 --points \"1,1=0,0\" --out " + (dir.path() / "c.yaml").string());
+    EXPECT_EQ(r.code, 2) << r.out;
+    EXPECT_NE(r.out.find("neither an image nor a video"), std::string::npos) << r.out;
+}
+
+} // namespace arcomp
