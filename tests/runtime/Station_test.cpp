@@ -5,6 +5,7 @@
 
 #include "graph/core/SelectPass.hpp"
 #include "runtime/CalibrationFile.hpp"
+#include "runtime/CameraFile.hpp"
 #include "runtime/GlContext.hpp"
 #include "runtime/ImageFile.hpp"
 #include "runtime/ReplayInput.hpp"
@@ -397,3 +398,34 @@ TEST(Station, aRestartLoadsWhatItBakedFromTheCache) {
     EXPECT_EQ(uncached.holdoutBake().baked, meshes);
     EXPECT_EQ(uncached.lodBake().baked, 1u);
 }
+
+// A calibrated camera is the CG camera: a small ball on the floor is drawn
+// where the real camera, at the video's (here halved) size, images its centre.
+TEST(Station, aCalibratedCameraDrawsFloorObjectsWhereTheRealCameraSeesThem) {
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    arcomp::test::TempDir dir;
+    CalibratedCamera real;
+    real.intrinsics = {.imageSize = {640, 480}, .fx = 560.0, .fy = 556.0, .cx = 331.0, .cy = 228.5, .distortion = {}};
+    const double tilt = glm::radians(18.0);
+    const glm::dvec3 forward(0.0, -std::sin(tilt), -std::cos(tilt)), right(1.0, 0.0, 0.0);
+    real.rotation = glm::transpose(glm::dmat3(right, glm::cross(forward, right), forward));
+    real.translation = -real.rotation * glm::dvec3(-0.5, 3.0, 9.0);
+    writeCameraFile(dir.path() / "camera.yaml", real, "");
+    const StationConfig cfg = loadStationConfig(dir.write("station.yaml", R"(scene:
+  objects:
+    - {shape: sphere, radius: 0.08, position: [1.5, 0.08, 1.0], color: [1, 1, 1, 1]}
+camera:
+  calibration: camera.yaml
+)"));
+    Station station(cfg, pattern({320, 240}));
+    EXPECT_NEAR(station.view().eye.y, 3.0f, 1e-4f);
+
+    const cv::Mat ball = coverageOf(renderObjects(cfg, {0}, station.view(), Shading::Unlit));
+    const cv::Moments m = cv::moments(ball, true);
+    ASSERT_GT(m.m00, 4.0);
+    const glm::dvec2 full = real.project({1.5, 0.08, 1.0});
+    // Pixel centres at integers: (u + ½) scales with the image.
+    EXPECT_NEAR(m.m10 / m.m00, (full.x + 0.5) / 2.0 - 0.5, 0.5);
+    EXPECT_NEAR(m.m01 / m.m00, (full.y + 0.5) / 2.0 - 0.5, 0.5);
+}
+
