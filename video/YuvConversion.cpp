@@ -1,6 +1,8 @@
 #include "video/YuvConversion.hpp"
 
-#include <opencv2/core/hal/intrin.hpp>
+#define ARCOMP_YUV_KERNEL_NAMESPACE baseline
+#include "video/YuvRowKernel.hpp"
+
 #include <opencv2/core/utility.hpp>
 
 #include <algorithm>
@@ -10,6 +12,9 @@
 namespace arcomp {
 
 namespace {
+
+using yuv::FixedYuvToRgb;
+using yuv::kFracBits;
 
 struct LumaWeights {
     double kr;
@@ -39,23 +44,6 @@ YuvToRgb yuvToRgb(YuvEncoding e) {
     return {limited ? 16.0 : 0.0, ys, rv, bu * kb / kg, rv * kr / kg, bu};
 }
 
-// The same constants sized for 16-bit SIMD lanes, so one vector holds 8 (SSE)
-// or 16 (AVX2) pixels instead of half that in 32-bit lanes. Samples enter as
-// the high byte of a 16-bit word and each product keeps its high 16 bits
-// (one multiply-high instruction); with coefficients in 1/8192 that leaves
-// every term in 1/32 of an output level. The worst sum, bright Y plus
-// BT.709 limited-range blue, stays near 17,500 of int16's 32,767, so no
-// step saturates. Truncated products and rounded coefficients stay within
-// 0.15 of a level of exact arithmetic: the output matches the former 16.16
-// fixed-point code or differs from it by one.
-constexpr int kFracBits = 5;
-
-struct FixedYuvToRgb {
-    std::uint16_t a;             // times Y << 8, unsigned: Y reaches 255
-    std::int16_t bu, gu, gv, rv; // times (C - 128) << 8; green's negated
-    std::int16_t bias;           // -a y0, plus half a level so the final shift rounds
-};
-
 FixedYuvToRgb fixedYuvToRgb(YuvEncoding e) {
     const YuvToRgb k = yuvToRgb(e);
     auto q13 = [](double v) { return static_cast<std::int16_t>(std::lround(v * 8192.0)); };
@@ -67,9 +55,10 @@ FixedYuvToRgb fixedYuvToRgb(YuvEncoding e) {
             static_cast<std::int16_t>(std::lround(scale / 2 - k.a * k.y0 * scale))};
 }
 
-// Scalar twins of the vector steps, bit for bit, for the columns left over
-// after the last full vector: a frame's result must not depend on where its
-// width happens to cut the vectors.
+// Scalar twins of the vector steps (video/YuvRowKernel.hpp), bit for bit, for
+// the columns left over after the last full vector: a frame's result must not
+// depend on where its width happens to cut the vectors, nor on which build of
+// the kernel the CPU runs.
 inline int lumaTerm(const FixedYuvToRgb& k, int y) { return (y << 8) * k.a >> 16; }
 inline int chromaTerm(std::int16_t coefficient, int c) { return ((c - 128) << 8) * coefficient >> 16; }
 
@@ -91,85 +80,25 @@ inline void putBgr(std::uint8_t* out, const FixedYuvToRgb& k, const ChromaTerms&
     out[2] = toLevel(l + c.r);
 }
 
-#if CV_SIMD
-// Vector form of the above for 2 * nlanes pixels: the luma of the even and the
-// odd pixels and the chroma each pair shares, which is how both YUYV and NV12
-// rows deinterleave.
-struct VectorKernel {
-    static constexpr int kPixels = 2 * cv::v_uint8::nlanes;
-
-    explicit VectorKernel(const FixedYuvToRgb& k)
-        : a(cv::vx_setall_u16(k.a)), bu(cv::vx_setall_s16(k.bu)), gu(cv::vx_setall_s16(k.gu)),
-          gv(cv::vx_setall_s16(k.gv)), rv(cv::vx_setall_s16(k.rv)), bias(cv::vx_setall_s16(k.bias)) {}
-
-    // Inlined by force: as a call it spills the coefficient vectors and costs 5%.
-    CV_ALWAYS_INLINE void convert(const cv::v_uint8& yEven, const cv::v_uint8& yOdd, const cv::v_uint8& u,
-                                  const cv::v_uint8& v, std::uint8_t* out) const {
-        cv::v_int16 uLo, uHi, vLo, vHi;
-        centredHigh(u, uLo, uHi);
-        centredHigh(v, vLo, vHi);
-        const cv::v_int16 bLo = bias + cv::v_mul_hi(uLo, bu), bHi = bias + cv::v_mul_hi(uHi, bu);
-        const cv::v_int16 rLo = bias + cv::v_mul_hi(vLo, rv), rHi = bias + cv::v_mul_hi(vHi, rv);
-        const cv::v_int16 gLo = bias + cv::v_mul_hi(uLo, gu) + cv::v_mul_hi(vLo, gv);
-        const cv::v_int16 gHi = bias + cv::v_mul_hi(uHi, gu) + cv::v_mul_hi(vHi, gv);
-        cv::v_int16 eLo, eHi, oLo, oHi;
-        luma(yEven, eLo, eHi);
-        luma(yOdd, oLo, oHi);
-        // A pair's six bytes B G R B G R as three 16-bit words, so that the
-        // final interleave moves words: that costs SSE2, which lacks a byte
-        // shuffle, about half of what interleaving three byte planes does.
-        cv::v_uint8 bg0, bg1, rb0, rb1, gr0, gr1;
-        cv::v_zip(level(eLo, eHi, bLo, bHi), level(eLo, eHi, gLo, gHi), bg0, bg1);
-        cv::v_zip(level(eLo, eHi, rLo, rHi), level(oLo, oHi, bLo, bHi), rb0, rb1);
-        cv::v_zip(level(oLo, oHi, gLo, gHi), level(oLo, oHi, rLo, rHi), gr0, gr1);
-        storeWords(out, bg0, rb0, gr0);
-        storeWords(out + 3 * cv::v_uint8::nlanes, bg1, rb1, gr1);
-    }
-
-private:
-    // (C - 128) << 8 as int16: flipping the top bit recentres the byte, and
-    // zipping it behind a zero byte puts it in the high half of each
-    // (little-endian) word.
-    static void centredHigh(const cv::v_uint8& c, cv::v_int16& lo, cv::v_int16& hi) {
-        cv::v_uint8 l, h;
-        cv::v_zip(cv::vx_setzero_u8(), c ^ cv::vx_setall_u8(128), l, h);
-        lo = cv::v_reinterpret_as_s16(l);
-        hi = cv::v_reinterpret_as_s16(h);
-    }
-
-    void luma(const cv::v_uint8& y, cv::v_int16& lo, cv::v_int16& hi) const {
-        cv::v_uint8 l, h;
-        cv::v_zip(cv::vx_setzero_u8(), y, l, h);
-        lo = cv::v_reinterpret_as_s16(cv::v_mul_hi(cv::v_reinterpret_as_u16(l), a));
-        hi = cv::v_reinterpret_as_s16(cv::v_mul_hi(cv::v_reinterpret_as_u16(h), a));
-    }
-
-    static void storeWords(std::uint8_t* out, const cv::v_uint8& a, const cv::v_uint8& b, const cv::v_uint8& c) {
-        cv::v_store_interleave(reinterpret_cast<std::uint16_t*>(out), cv::v_reinterpret_as_u16(a),
-                               cv::v_reinterpret_as_u16(b), cv::v_reinterpret_as_u16(c));
-    }
-
-    // The saturating pack is the clamp to 0..255.
-    static cv::v_uint8 level(const cv::v_int16& lLo, const cv::v_int16& lHi, const cv::v_int16& cLo,
-                             const cv::v_int16& cHi) {
-        return cv::v_pack_u((lLo + cLo) >> kFracBits, (lHi + cHi) >> kFracBits);
-    }
-
-    cv::v_uint16 a;
-    cv::v_int16 bu, gu, gv, rv, bias;
-};
+// The build of the vector kernel for the widest instructions this CPU has,
+// chosen once. The library targets SSE2, but cvtColor, which the bench holds
+// us to, picks AVX2 at run time: twice the pixels per instruction.
+yuv::RowKernels widestRowKernels() {
+#if defined(__x86_64__)
+    __builtin_cpu_init(); // a conversion might run from a static initialiser, before libgcc's has
+    if (__builtin_cpu_supports("avx2")) return yuv::avx2RowKernels();
 #endif
+    return yuv::baseline::rowKernels();
+}
 
-void yuyvRowToBgr(const std::uint8_t* in, std::uint8_t* out, int width, const FixedYuvToRgb& k) {
-    int x = 0;
-#if CV_SIMD
-    const VectorKernel kernel(k);
-    for (; x + VectorKernel::kPixels <= width; x += VectorKernel::kPixels) {
-        cv::v_uint8 y0, u, y1, v;
-        cv::v_load_deinterleave(in + 2 * x, y0, u, y1, v);
-        kernel.convert(y0, y1, u, v, out + 3 * x);
-    }
-#endif
+const yuv::RowKernels& rowKernels() {
+    static const yuv::RowKernels kernels = widestRowKernels();
+    return kernels;
+}
+
+void yuyvRowToBgr(const std::uint8_t* in, std::uint8_t* out, int width, const FixedYuvToRgb& k,
+                  yuv::YuyvRowVectors vectors) {
+    int x = vectors(in, out, width, k);
     // An odd last column has no V of its own and is left as it always was.
     for (; x + 1 < width; x += 2) {
         const std::uint8_t* p = in + 2 * x;
@@ -180,17 +109,8 @@ void yuyvRowToBgr(const std::uint8_t* in, std::uint8_t* out, int width, const Fi
 }
 
 void nv12RowToBgr(const std::uint8_t* y, const std::uint8_t* uv, std::uint8_t* out, int width,
-                  const FixedYuvToRgb& k) {
-    int x = 0;
-#if CV_SIMD
-    const VectorKernel kernel(k);
-    for (; x + VectorKernel::kPixels <= width; x += VectorKernel::kPixels) {
-        cv::v_uint8 yEven, yOdd, u, v;
-        cv::v_load_deinterleave(y + x, yEven, yOdd);
-        cv::v_load_deinterleave(uv + x, u, v);
-        kernel.convert(yEven, yOdd, u, v, out + 3 * x);
-    }
-#endif
+                  const FixedYuvToRgb& k, yuv::Nv12RowVectors vectors) {
+    int x = vectors(y, uv, out, width, k);
     for (; x < width; ++x) putBgr(out + 3 * x, k, chromaTerms(k, uv[x & ~1], uv[(x & ~1) + 1]), y[x]);
 }
 
@@ -228,12 +148,14 @@ YuvEncoding defaultYuvEncoding(PixelFormat format, int height) {
 
 cv::Mat yuyvToBgr(const std::uint8_t* data, int width, int height, int stride, YuvEncoding encoding) {
     const FixedYuvToRgb k = fixedYuvToRgb(encoding);
+    const yuv::YuyvRowVectors vectors = rowKernels().yuyv;
     cv::Mat out(height, width, CV_8UC3);
     cv::parallel_for_(
         cv::Range(0, height),
         [&](const cv::Range& rows) {
             for (int row = rows.start; row < rows.end; ++row)
-                yuyvRowToBgr(data + static_cast<std::ptrdiff_t>(row) * stride, out.ptr<std::uint8_t>(row), width, k);
+                yuyvRowToBgr(data + static_cast<std::ptrdiff_t>(row) * stride, out.ptr<std::uint8_t>(row), width, k,
+                             vectors);
         },
         stripes(width, height));
     return out;
@@ -242,6 +164,7 @@ cv::Mat yuyvToBgr(const std::uint8_t* data, int width, int height, int stride, Y
 cv::Mat nv12ToBgr(const std::uint8_t* y, int yStride, const std::uint8_t* uv, int uvStride, int width, int height,
                   YuvEncoding encoding) {
     const FixedYuvToRgb k = fixedYuvToRgb(encoding);
+    const yuv::Nv12RowVectors vectors = rowKernels().nv12;
     cv::Mat out(height, width, CV_8UC3);
     cv::parallel_for_(
         cv::Range(0, height),
@@ -249,7 +172,7 @@ cv::Mat nv12ToBgr(const std::uint8_t* y, int yStride, const std::uint8_t* uv, in
             for (int row = rows.start; row < rows.end; ++row)
                 nv12RowToBgr(y + static_cast<std::ptrdiff_t>(row) * yStride,
                              uv + static_cast<std::ptrdiff_t>(row / 2) * uvStride, out.ptr<std::uint8_t>(row), width,
-                             k);
+                             k, vectors);
         },
         stripes(width, height));
     return out;
