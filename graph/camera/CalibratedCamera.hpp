@@ -16,6 +16,7 @@
 #include <glm/glm.hpp>
 
 #include <array>
+#include <optional>
 
 namespace arcomp {
 
@@ -43,6 +44,13 @@ struct CalibratedCamera {
     // Pixel where a floor-frame point appears, without distortion; z <= 0
     // (behind the lens) gives NaN.
     glm::dvec2 project(const glm::dvec3& floorPoint) const;
+    // The floor point (y = 0) imaged at `pixel` (undistorted, at
+    // intrinsics.imageSize): where a person whose feet are at that pixel
+    // stands. None when the pixel's ray misses the floor (at or above the horizon).
+    std::optional<glm::dvec3> floorPointAt(const glm::dvec2& pixel) const;
+    // Distance of a floor-frame point along the optical axis: the depth the
+    // CG is compared with.
+    double depthOf(const glm::dvec3& floorPoint) const;
     // The CG view: the real camera's pose, and a projection from its
     // intrinsics scaled to `viewport`.
     View view(glm::ivec2 viewport, float near, float far) const;

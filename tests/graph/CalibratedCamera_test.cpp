@@ -79,4 +79,20 @@ TEST(CalibratedCamera, distortionIsNoticed) {
     EXPECT_TRUE(k.distorted());
 }
 
+TEST(CalibratedCamera, aFootPixelGivesBackTheFloorPointAndItsDepth) {
+    const CalibratedCamera c = kioskCamera();
+    for (const glm::dvec3 floor : {glm::dvec3(0, 0, 0), glm::dvec3(2.5, 0, 1), glm::dvec3(-3, 0, -4)}) {
+        const std::optional<glm::dvec3> found = c.floorPointAt(c.project(floor));
+        ASSERT_TRUE(found);
+        EXPECT_NEAR(glm::distance(*found, floor), 0.0, 1e-9);
+        // Depth is along the optical axis, not the straight-line distance.
+        EXPECT_NEAR(c.depthOf(floor), (c.rotation * floor + c.translation).z, 1e-12);
+        EXPECT_LT(c.depthOf(floor), glm::distance(c.position(), floor));
+    }
+    // The top row looks above the horizon (the camera is tilted 20 degrees
+    // down with a vertical half-angle of about 23): no floor there.
+    EXPECT_FALSE(c.floorPointAt({384.0, 0.0}));
+}
+
 } // namespace arcomp
+
