@@ -35,7 +35,7 @@ YAML::Node loadYamlFile(ConfigReport& report) {
     try {
         YAML::Node root = YAML::Load(text.str());
         if (!root.IsMap()) {
-            report.add(root.Mark(), "expected a mapping of sections (scene:, camera:, ...) at the top level");
+            report.add(root.Mark(), "expected a YAML mapping (key: value lines) at the top level");
             return absent();
         }
         return root;

@@ -56,6 +56,7 @@ std::vector<FloorPoint> parseFloorPoints(const std::string& text) {
 }
 
 cv::Mat firstImage(const std::string& file) {
+    if (!std::filesystem::is_regular_file(file)) throw BadInput(file, "", "no such file");
     cv::Mat image = cv::imread(file, cv::IMREAD_COLOR);
     if (image.empty()) {
         cv::VideoCapture video(file);
@@ -88,8 +89,12 @@ int calibrateFloor(const FloorCalibrationOptions& o) {
         throw InputError("--points: " + std::to_string(points.size()) + " given; the floor needs at least 4 (u,v=x,z;...)");
     for (const FloorPoint& p : points)
         if (p.pixel.x < 0 || p.pixel.y < 0 || p.pixel.x > size.x - 1 || p.pixel.y > size.y - 1)
-            throw InputError("--points: pixel " + std::to_string(p.pixel.x) + "," + std::to_string(p.pixel.y) + " is outside the " +
-                             std::to_string(size.x) + "x" + std::to_string(size.y) + " image");
+        {
+            char where[64];
+            std::snprintf(where, sizeof where, "%g,%g", p.pixel.x, p.pixel.y);
+            throw InputError(std::string("--points: pixel ") + where + " is outside the " + std::to_string(size.x) + "x" +
+                             std::to_string(size.y) + " image");
+        }
     requireSpread(points);
 
     CalibratedCamera camera;

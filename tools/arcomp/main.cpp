@@ -58,13 +58,16 @@ int main(int argc, char** argv) {
 
     for (auto& [sub, action] : actions) {
         if (!sub->parsed()) continue;
+        // "calibrate floor", not "floor": what the user typed.
+        const CLI::App* group = sub->get_parent();
+        const std::string name = group && group != &app ? group->get_name() + " " + sub->get_name() : sub->get_name();
         try {
             return action();
         } catch (const BadInput& e) {
-            std::cerr << "arcomp " << sub->get_name() << ": " << e.what() << "\n";
+            std::cerr << "arcomp " << name << ": " << e.what() << "\n";
             return kExitBadInput;
         } catch (const std::exception& e) {
-            std::cerr << "arcomp " << sub->get_name() << ": " << e.what() << "\n";
+            std::cerr << "arcomp " << name << ": " << e.what() << "\n";
             return kExitFailure;
         }
     }

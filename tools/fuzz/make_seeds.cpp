@@ -9,6 +9,7 @@
 #include "graph/io/SilhouetteFile.hpp"
 #include "graph/io/VoxelFile.hpp"
 #include "runtime/CalibrationFile.hpp"
+#include "runtime/CameraFile.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -40,7 +41,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     const fs::path out = argv[1];
-    for (const char* t : {"lod", "silhouette", "voxel", "calibration", "gaze", "obj", "http"}) fs::create_directories(out / t);
+    for (const char* t : {"lod", "silhouette", "voxel", "calibration", "camera", "gaze", "obj", "http"}) fs::create_directories(out / t);
 
     const Geometry g = tetrahedron();
     std::vector<LodLevel> levels(2);
@@ -75,6 +76,11 @@ int main(int argc, char** argv) {
     model.set(0, Shading::Phong, {3.2e-6, 0.5});
     model.set(1, Shading::Flat, {2.0e-6, 0.4});
     writeCalibration(out / "calibration/calib.yaml", model, {"gl33: fuzz seed", {1280, 720}});
+
+    CalibratedCamera camera;
+    camera.intrinsics = {.imageSize = {640, 480}, .fx = 500.0, .fy = 500.0, .cx = 319.5, .cy = 239.5, .distortion = {-0.1, 0.01, 0.0, 0.0, 0.0}};
+    camera.translation = {0.0, -3.0, 8.0};
+    writeCameraFile(out / "camera/camera.yaml", camera, "fuzz seed");
 
     writeText(out / "http/scrape.txt", "GET /metrics HTTP/1.1\r\nHost: 127.0.0.1:9464\r\nAccept: text/plain\r\n\r\n");
     writeText(out / "http/token.txt", "GET /status?x=1 HTTP/1.0\nAuthorization: Bearer 0123456789abcdef\n\n");
