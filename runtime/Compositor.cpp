@@ -3,7 +3,10 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
+#include <array>
 #include <stdexcept>
+#include <string>
 
 namespace arcomp {
 
@@ -11,9 +14,10 @@ using namespace gl;
 
 namespace {
 
-// The person layer on the occupied tiles. Output and video share one pixel
-// grid, so the fragment fetches its own texel; video rows arrive top first,
-// framebuffer rows count from the bottom.
+// The person layer on the occupied tiles, each pixel at its person's depth
+// (the depth test keeps it behind a nearer holdout). Output and video share
+// one pixel grid, so the fragment fetches its own texel; video rows arrive
+// top first, framebuffer rows count from the bottom.
 const char* const kPersonShader = R"(
 #ifdef VERTEX
 layout(location = 0) in vec2 aPosition;
@@ -21,22 +25,39 @@ void main() { gl_Position = vec4(aPosition, 0.0, 1.0); }
 #else
 out vec4 fragColor;
 uniform sampler2D uPerson;
+uniform highp usampler2D uSlots;
+uniform int uSlotScale;   // 0: no slot image, every pixel is slot 0
 uniform int uHeight;
+uniform float uDepth[PEOPLE];
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
-    fragColor = texelFetch(uPerson, ivec2(p.x, uHeight - 1 - p.y), 0).bgra;   // uploaded as BGRA bytes
+    ivec2 texel = ivec2(p.x, uHeight - 1 - p.y);
+    int slot = uSlotScale > 0 ? int(texelFetch(uSlots, texel / uSlotScale, 0).r) : 0;
+    gl_FragDepth = uDepth[slot];
+    fragColor = texelFetch(uPerson, texel, 0).bgra;   // uploaded as BGRA bytes
 }
 #endif
 )";
 
+// Window depth of a point `metres` along the view axis, as the holdout's
+// rasterized depth has it (default depth range).
+float windowDepth(const glm::mat4& projection, float metres) {
+    const glm::vec4 clip = projection * glm::vec4(0.0f, 0.0f, -metres, 1.0f);
+    if (!(clip.w > 0.0f)) return 0.0f;  // at or behind the eye: in front of everything
+    return std::clamp(0.5f * clip.z / clip.w + 0.5f, 0.0f, 1.0f);
+}
+
 } // namespace
 
 Compositor::PersonProgram::PersonProgram()
-    : program(kPersonShader), person(program.requiredLocation("uPerson")), height(program.requiredLocation("uHeight")) {}
+    : program(kPersonShader, "#define PEOPLE " + std::to_string(PersonDepths::kMaxPeople + 1) + "\n"),
+      person(program.requiredLocation("uPerson")), slots(program.requiredLocation("uSlots")),
+      slotScale(program.requiredLocation("uSlotScale")), height(program.requiredLocation("uHeight")),
+      depth(program.requiredLocation("uDepth")) {}
 
 Compositor::Compositor(glm::ivec2 size)
     : size_(size), output_(size), personTexture_(GlTexture::generate()), tileVao_(GlVertexArray::generate()),
-      tileBuffer_(GlBuffer::generate()) {
+      tileBuffer_(GlBuffer::generate()), slotTexture_(GlTexture::generate()) {
     glBindTexture(GL_TEXTURE_2D, personTexture_.get());
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, size.x, size.y, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -80,21 +101,14 @@ void Compositor::begin(const cv::Mat& frame, const CompositeSettings& settings) 
 void Compositor::beginHoldout() {
     output_.bind();
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    // Depth the holdout may write is never read again: the person layer is
-    // drawn without the depth test.
-    glEnable(GL_STENCIL_TEST);
+    // The CG's own depth is done with: from here the depth buffer holds the
+    // holdout alone, which lies on (not in front of) its CG surface.
+    glDepthMask(GL_TRUE);
     glStencilMask(0xFF);
-    glStencilFunc(GL_ALWAYS, 1, 0xFF);
-    // Marked whether or not the depth test passes: the silhouette mesh lies
-    // on (not in front of) its own object's CG surface.
-    glStencilOp(GL_REPLACE, GL_REPLACE, GL_REPLACE);
+    glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 }
 
-void Compositor::endHoldout() {
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    glDisable(GL_STENCIL_TEST);
-}
+void Compositor::endHoldout() { glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE); }
 
 void Compositor::findTiles(const cv::Mat& person) {
     const int tx = (size_.x + kTile - 1) / kTile, ty = (size_.y + kTile - 1) / kTile;
@@ -122,7 +136,25 @@ void Compositor::findTiles(const cv::Mat& person) {
         }
 }
 
-void Compositor::person(const cv::Mat& person) {
+void Compositor::uploadSlots(const PersonDepths& depths) {
+    const cv::Mat& s = depths.slots;
+    if (s.empty()) return;
+    const glm::ivec2 expected = (size_ + depths.slotScale - 1) / depths.slotScale;
+    if (s.type() != CV_8UC1 || !s.isContinuous() || s.cols != expected.x || s.rows != expected.y)
+        throw std::invalid_argument("Compositor::person: the slot image does not match the output size and its scale");
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glBindTexture(GL_TEXTURE_2D, slotTexture_.get());
+    if (slotSize_ != expected) {
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_R8UI, s.cols, s.rows, 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, s.data);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        slotSize_ = expected;
+    } else {
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, s.cols, s.rows, GL_RED_INTEGER, GL_UNSIGNED_BYTE, s.data);
+    }
+}
+
+void Compositor::person(const cv::Mat& person, const PersonDepths& depths, const glm::mat4& projection) {
     if (person.cols != size_.x || person.rows != size_.y || person.type() != CV_8UC4 || !person.isContinuous())
         throw std::invalid_argument("Compositor::person: expected continuous premultiplied BGRA of the output size");
     findTiles(person);
@@ -130,27 +162,35 @@ void Compositor::person(const cv::Mat& person) {
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glBindTexture(GL_TEXTURE_2D, personTexture_.get());
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size_.x, size_.y, GL_RGBA, GL_UNSIGNED_BYTE, person.data);
+    uploadSlots(depths);
+    std::array<float, PersonDepths::kMaxPeople + 1> window{};
+    for (std::size_t i = 0; i < window.size(); ++i) window[i] = windowDepth(projection, depths.metres[i]);
 
     output_.bind();
-    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);  // in front of the holdout, or where there is none
+    glDepthMask(GL_FALSE);
     glDisable(GL_CULL_FACE);
-    glEnable(GL_STENCIL_TEST);
-    glStencilFunc(GL_EQUAL, 0, 0xFF);  // not where the holdout marked
-    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied "over"
     program_.program.use();
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, personTexture_.get());
     glUniform1i(program_.person, 0);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, slotTexture_.get());
+    glUniform1i(program_.slots, 1);
+    glUniform1i(program_.slotScale, depths.slots.empty() ? 0 : depths.slotScale);
     glUniform1i(program_.height, size_.y);
+    glUniform1fv(program_.depth, static_cast<GLsizei>(window.size()), window.data());
     glBindVertexArray(tileVao_.get());
     glBindBuffer(GL_ARRAY_BUFFER, tileBuffer_.get());
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(tiles_.size() * sizeof(float)), tiles_.data(), GL_STREAM_DRAW);
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(tiles_.size() / 2));
     glBindVertexArray(0);
+    glActiveTexture(GL_TEXTURE0);
     glDisable(GL_BLEND);
-    glDisable(GL_STENCIL_TEST);
+    glDepthMask(GL_TRUE);
 }
 
 } // namespace arcomp

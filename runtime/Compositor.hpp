@@ -7,19 +7,20 @@
 //      depth and stencil are cleared.
 //   2. The caller draws all CG into output() (Renderer, no clear): CG is
 //      over the backdrop, nearer CG over farther by depth.
-//   3. beginHoldout() ... endHoldout(): the caller draws the objects in front
-//      of the person plane with their silhouette meshes; they only mark the
-//      stencil (the holdout mask), colour and depth stay as they are.
+//   3. beginHoldout() ... endHoldout(): the caller draws the objects that may
+//      stand in front of someone with their silhouette meshes; they only
+//      write depth (the CG's depth is cleared first), colour stays.
 //   4. person(): the person layer (video x matte, premultiplied) is drawn
-//      "over" everything, except where the stencil holds the holdout, and
-//      only on the tiles where the matte has any alpha.
-// Result: person over CG behind; CG in front wherever it cuts the person.
+//      "over" everything, each pixel at its person's depth, except where
+//      the holdout is nearer; only on the tiles where the matte has any alpha.
+// Result: each person over the CG behind them; CG wherever it is nearer
+// than the person it covers.
 //
 //   Compositor c({768, 576});
 //   c.begin(frame, {});                                 // BGR, video size
 //   renderer.draw(scene, cgList, view, {.clearColor = std::nullopt});
 //   c.beginHoldout(); holdoutRenderer.draw(holdoutScene, frontList, view, {.clearColor = std::nullopt}); c.endHoldout();
-//   c.person(personBgra);                               // premultiplied BGRA
+//   c.person(personBgra, depths, view.projection);      // premultiplied BGRA
 //   Image img = c.output().read();                      // or sample c.output().colorTexture() in a window
 //
 // Colour: everything is blended as premultiplied RGBA in the sRGB-encoded
@@ -30,6 +31,7 @@
 // very different colours.
 
 #include "runtime/GlHandle.hpp"
+#include "runtime/PersonDepths.hpp"
 #include "runtime/RenderTarget.hpp"
 #include "runtime/ShaderProgram.hpp"
 
@@ -58,8 +60,9 @@ public:
     void begin(const cv::Mat& frame, const CompositeSettings& settings);
     void beginHoldout();
     void endHoldout();
-    // `person`: CV_8UC4 premultiplied BGRA at size().
-    void person(const cv::Mat& person);
+    // `person`: CV_8UC4 premultiplied BGRA at size(). `projection`: the
+    // view's, to place each person's depth among the holdout's.
+    void person(const cv::Mat& person, const PersonDepths& depths, const glm::mat4& projection);
 
     // The composited frame: a texture a window can sample or blit from.
     const RenderTarget& output() const { return output_; }
@@ -69,11 +72,12 @@ public:
 
 private:
     void findTiles(const cv::Mat& person);
+    void uploadSlots(const PersonDepths& depths);
 
     struct PersonProgram {
         PersonProgram();
         ShaderProgram program;
-        GLint person, height;  // uniform locations
+        GLint person, slots, slotScale, height, depth;  // uniform locations
     };
 
     glm::ivec2 size_;
@@ -84,6 +88,8 @@ private:
     GlBuffer tileBuffer_;
     std::vector<float> tiles_;  // two triangles per occupied tile, NDC x, y
     std::size_t tileCount_ = 0;
+    GlTexture slotTexture_;
+    glm::ivec2 slotSize_{0};
     PersonProgram program_;
 };
 

@@ -17,6 +17,7 @@ struct FrameStats {
     std::uint64_t frame = 0;   // frames composited so far, this one included
     double captureMs = 0;      // CPU: wait for / decode the frame
     double matteMs = 0;        // CPU: person layer
+    double trackMs = 0;        // CPU: people tracked and their depths (0 without a calibrated camera)
     double updateMs = 0;       // CPU: transforms and bounds
     double selectMs = 0;       // CPU: culling, LOD, grouping cut, silhouette region, bins
     double budgetMs = 0;       // CPU: the frame-time controller (0 when it is off)
@@ -31,6 +32,7 @@ struct FrameStats {
     std::size_t objectsInFront = 0;
     std::size_t objectsBehind = 0;
     std::size_t personTiles = 0;  // 32x32 tiles where the matte had any alpha
+    std::size_t people = 0;       // tracked people with a depth of their own
     // The controller's view of the CG render stage, when it is on: its target
     // (the frame target less what the other stages took last frame), its
     // prediction, and the area-weighted quality it kept (1 = finest).

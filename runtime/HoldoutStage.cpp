@@ -2,23 +2,22 @@
 
 namespace arcomp {
 
-void HoldoutStage::cut(const World& world, const DrawList& cg, const View& view, Renderer& renderer,
-                       Compositor& compositor, FrameStats& stats) {
-    // One plane stands for every person for now: an object's centre nearer
-    // than it is in front of them all.
+void HoldoutStage::cut(const World& world, const DrawList& cg, const View& view, float farthestPersonMetres,
+                       Renderer& renderer, Compositor& compositor, FrameStats& stats) {
     list_.clear();
     stats.objectsInFront = stats.objectsBehind = 0;
     for (const HoldoutItem& h : cg.holdouts) {
-        if (h.depth >= personPlane_) {
+        const DrawItem& item = cg.items[h.cgItem];
+        if (h.depth - world.scene.worldBound(item.node).radius >= farthestPersonMetres) {
             ++stats.objectsBehind;
             continue;
         }
         ++stats.objectsInFront;
-        if (const std::optional<DrawItem> item = world.holdouts.itemFor(world.scene, cg.items[h.cgItem], view))
-            list_.items.push_back(*item);
+        if (const std::optional<DrawItem> holdout = world.holdouts.itemFor(world.scene, item, view))
+            list_.items.push_back(*holdout);
     }
     compositor.beginHoldout();
-    renderer.draw(world.scene, list_, view, {.clearColor = std::nullopt});
+    renderer.draw(world.scene, list_, view, {.clearColor = std::nullopt, .depthOnly = true});
     compositor.endHoldout();
     stats.holdoutTriangles = renderer.trianglesDrawn();
 }

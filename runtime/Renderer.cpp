@@ -172,7 +172,7 @@ GLuint Renderer::texture(const Scene& scene, int image) {
 
 void Renderer::drawItem(const Scene& scene, const DrawItem& item, const View& view, const RenderSettings& settings) {
     const Material& m = scene.material(item.part.material);
-    const Shading shading = m.unlit ? Shading::Unlit : item.shading;
+    const Shading shading = m.unlit || settings.depthOnly ? Shading::Unlit : item.shading;
     const MeshProgram& p = *programs_[static_cast<std::size_t>(shading)];
     p.program.use();
     const glm::mat4& model = item.model ? *item.model : scene.world(item.node);
@@ -225,7 +225,8 @@ void Renderer::draw(const Scene& scene, const DrawList& list, const View& view, 
     // front; a level fading in or out of an LOD cross-fade is blended.
     std::vector<const DrawItem*> opaque, blended;
     for (const DrawItem& item : list.items) {
-        const bool blend = item.fade < 1.0f || scene.material(item.part.material).alphaMode == AlphaMode::Blend;
+        const bool blend = !settings.depthOnly &&
+                           (item.fade < 1.0f || scene.material(item.part.material).alphaMode == AlphaMode::Blend);
         (blend ? blended : opaque).push_back(&item);
     }
     std::sort(opaque.begin(), opaque.end(), [](auto* a, auto* b) { return a->viewDistance < b->viewDistance; });

@@ -39,7 +39,7 @@ void Station::preflight(const StationConfig& cfg) {
 
 Station::Station(const StationConfig& cfg, StationInput input)
     : cfg_(cfg), capture_(std::move(input)), matte_(cfg_.compositing.matte),
-      holdout_(cfg_.compositing.compositor.personPlaneMetres),
+      personDepths_(cfg_.camera.calibrated, cfg_.compositing.compositor.personPlaneMetres, capture_.size()),
       outputs_(cfg_.compositing.output, capture_.fps(), capture_.size()) {
     const std::filesystem::path cache = bakeCacheFolder(cfg_.compositing.compositor);
     lodBake_ = buildScene(cfg_, world_, warnings_, cache);
@@ -77,6 +77,9 @@ bool Station::frame() {
     stats_.captureMs = clock.lap();
     matte_.run(capture_.image(), capture_.newFrame());
     stats_.matteMs = clock.lap();
+    personDepths_.run(matte_.person(), capture_.newFrame());
+    stats_.people = static_cast<std::size_t>(personDepths_.depths().people);
+    stats_.trackMs = clock.lap();
 
     const double seconds = capture_.seconds();
     moveObjects(world_, seconds);
@@ -102,8 +105,10 @@ bool Station::frame() {
     clock.lap();
     if (cloudLayer_) cloudLayer_->draw(world_.scene, world_.pointClouds, drawList_.pointClouds, view_);
     stats_.pointCloudMs = clock.lap();
-    gpuTimes_->time(kGpuHoldout, [&] { holdout_.cut(world_, drawList_, view_, *renderer_, *compositor_, stats_); });
-    gpuTimes_->time(kGpuPerson, [&] { compositor_->person(matte_.person()); });
+    const PersonDepths& people = personDepths_.depths();
+    gpuTimes_->time(kGpuHoldout,
+                    [&] { holdout_.cut(world_, drawList_, view_, people.farthest(), *renderer_, *compositor_, stats_); });
+    gpuTimes_->time(kGpuPerson, [&] { compositor_->person(matte_.person(), people, view_.projection); });
     gpuTimes_->endFrame();
     stats_.personTiles = compositor_->personTiles();
     ++stats_.frame;

@@ -1,10 +1,11 @@
 #pragma once
 // One compositing station's frame, in one place. Station::frame() is the
 // pipeline, each stage a class of its own:
-//   capture -> matte -> update -> select -> budget -> render -> holdout
-//   -> composite -> output
-// (CaptureStage, MatteStage, moveObjects, select, BudgetStage, Renderer and
-// PointCloudLayer, HoldoutStage, Compositor, OutputStage), and it records
+//   capture -> matte -> people's depths -> update -> select -> budget
+//   -> render -> holdout -> composite -> output
+// (CaptureStage, MatteStage, PersonDepthStage, moveObjects, select,
+// BudgetStage, Renderer and PointCloudLayer, HoldoutStage, Compositor,
+// OutputStage), and it records
 // each stage's milliseconds in stats() (runtime/FrameStats.hpp).
 //
 //   auto ctx = HeadlessContext::create(GlRequest::Auto);   // or a window's context
@@ -34,6 +35,7 @@
 #include "runtime/HoldoutStage.hpp"
 #include "runtime/MatteStage.hpp"
 #include "runtime/OutputStage.hpp"
+#include "runtime/PersonDepthStage.hpp"
 #include "runtime/Renderer.hpp"
 #include "runtime/StationConfig.hpp"
 
@@ -98,6 +100,8 @@ public:
     Image readHoldout();
     // The last matte output (premultiplied BGRA, video size).
     const cv::Mat& personLayer() const { return matte_.person(); }
+    // Where the last frame's people stood (all on the person plane without a calibrated camera).
+    const PersonDepths& personDepths() const { return personDepths_.depths(); }
     // Overrides the camera (tests move it along a path); keeps the intrinsics.
     void setCamera(const glm::vec3& eye, const glm::vec3& target);
     std::size_t silhouetteTrianglesTotal() const { return world_.holdouts.triangles(); }
@@ -121,6 +125,7 @@ private:
     StationConfig cfg_;
     CaptureStage capture_;
     MatteStage matte_;
+    PersonDepthStage personDepths_;
     World world_;
     View view_;
     std::unique_ptr<GazeSource> gaze_;

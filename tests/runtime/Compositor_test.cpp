@@ -4,6 +4,8 @@
 #include "runtime/Compositor.hpp"
 #include "runtime/GlContext.hpp"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <gtest/gtest.h>
 
 using namespace arcomp;
@@ -17,19 +19,33 @@ cv::Vec4b at(const Image& img, int x, int y) {
 }
 
 // Clears a rectangle (x, y from the top) of the bound target's colour, or
-// its stencil to 1: stands in for drawing CG or a holdout mesh there.
-void paint(glm::ivec2 size, cv::Rect r, std::optional<glm::vec4> colour) {
+// its depth: stands in for drawing CG or a holdout mesh there.
+void paint(glm::ivec2 size, cv::Rect r, glm::vec4 colour) {
     glEnable(GL_SCISSOR_TEST);
     glScissor(r.x, size.y - r.y - r.height, r.width, r.height);
-    if (colour) {
-        glClearColor(colour->r, colour->g, colour->b, colour->a);
-        glClear(GL_COLOR_BUFFER_BIT);
-    } else {
-        glClearStencil(1);
-        glClear(GL_STENCIL_BUFFER_BIT);
-        glClearStencil(0);
-    }
+    glClearColor(colour.r, colour.g, colour.b, colour.a);
+    glClear(GL_COLOR_BUFFER_BIT);
     glDisable(GL_SCISSOR_TEST);
+}
+
+const glm::mat4 kProjection = glm::perspective(1.0f, 4.0f / 3.0f, 0.5f, 100.0f);
+
+// A holdout `metres` along the view axis over the rectangle.
+void holdOut(glm::ivec2 size, cv::Rect r, float metres) {
+    const glm::vec4 clip = kProjection * glm::vec4(0.0f, 0.0f, -metres, 1.0f);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(r.x, size.y - r.y - r.height, r.width, r.height);
+    glClearDepthf(0.5f * clip.z / clip.w + 0.5f);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glClearDepthf(1.0f);
+    glDisable(GL_SCISSOR_TEST);
+}
+
+// Everyone on one plane, 5 m away.
+PersonDepths onePlane(float metres = 5.0f) {
+    PersonDepths d;
+    d.metres.fill(metres);
+    return d;
 }
 
 class CompositorOnEachApi : public ::testing::TestWithParam<GlRequest> {};
@@ -44,15 +60,51 @@ TEST_P(CompositorOnEachApi, layersPersonOverCgOverVideoExceptWhereHeldOut) {
     c.begin(frame, {});
     paint(size, {0, 0, 128, 48}, glm::vec4(0, 0, 1, 1));  // blue CG, top half
     c.beginHoldout();
-    paint(size, {0, 0, 64, 48}, std::nullopt);  // the CG top-left is in front of the person
+    holdOut(size, {0, 0, 64, 48}, 3.0f);  // the CG top-left is in front of the person
     c.endHoldout();
-    c.person(person);
+    c.person(person, onePlane(), kProjection);
     const Image out = c.output().read();
     EXPECT_EQ(at(out, 10, 10), cv::Vec4b(0, 0, 255, 255));    // held out: the CG in front
     EXPECT_EQ(at(out, 10, 80), cv::Vec4b(200, 0, 0, 255));    // person over the video
     EXPECT_EQ(at(out, 100, 10), cv::Vec4b(0, 0, 255, 255));   // CG over the video
     EXPECT_EQ(at(out, 100, 80), cv::Vec4b(90, 90, 90, 255));  // the video alone
     EXPECT_EQ(c.personTiles(), 2u * 3u);                      // 64x96 of 32-pixel tiles
+}
+
+// Two people in slots of their own, on a slot image at half size, and a
+// stray matte pixel in no slot: each is cut only by a holdout nearer than
+// themselves.
+TEST_P(CompositorOnEachApi, eachPersonIsCutOnlyByHoldoutsNearerThanThem) {
+    auto ctx = HeadlessContext::create(GetParam());
+    const glm::ivec2 size{128, 96};
+    Compositor c(size);
+    cv::Mat frame(size.y, size.x, CV_8UC3, cv::Scalar(90, 90, 90));
+    cv::Mat person(size.y, size.x, CV_8UC4, cv::Scalar(0, 0, 0, 0));
+    person(cv::Rect(0, 0, 40, 96)).setTo(cv::Scalar(0, 0, 200, 255));    // near, left
+    person(cv::Rect(80, 0, 48, 96)).setTo(cv::Scalar(0, 200, 0, 255));   // far, right
+    person(cv::Rect(50, 90, 4, 4)).setTo(cv::Scalar(200, 0, 0, 255));    // untracked, on the plane
+    PersonDepths depths = onePlane(20.0f);
+    depths.slotScale = 2;
+    depths.slots = cv::Mat(48, 64, CV_8UC1, cv::Scalar(0));
+    depths.slots(cv::Rect(0, 0, 20, 48)).setTo(1);
+    depths.slots(cv::Rect(40, 0, 24, 48)).setTo(2);
+    depths.people = 2;
+    depths.metres[1] = 3.0f;
+    depths.metres[2] = 9.0f;
+    EXPECT_FLOAT_EQ(depths.farthest(), 20.0f);
+    c.begin(frame, {});
+    paint(size, {0, 0, 128, 48}, glm::vec4(0, 0, 1, 1));  // blue CG across the top
+    c.beginHoldout();
+    holdOut(size, {0, 0, 128, 48}, 6.0f);  // 6 m away: behind the left person, in front of the right one
+    holdOut(size, {0, 48, 128, 48}, 15.0f);  // the bottom: 15 m, behind both, in front of the plane
+    c.endHoldout();
+    c.person(person, depths, kProjection);
+    const Image out = c.output().read();
+    EXPECT_EQ(at(out, 10, 10), cv::Vec4b(200, 0, 0, 255));   // near person over the CG
+    EXPECT_EQ(at(out, 100, 10), cv::Vec4b(0, 0, 255, 255));  // far person behind it
+    EXPECT_EQ(at(out, 10, 80), cv::Vec4b(200, 0, 0, 255));
+    EXPECT_EQ(at(out, 100, 80), cv::Vec4b(0, 200, 0, 255));
+    EXPECT_EQ(at(out, 51, 91), cv::Vec4b(90, 90, 90, 255));  // the plane's pixel is behind the 15 m holdout
 }
 
 INSTANTIATE_TEST_SUITE_P(Gl, CompositorOnEachApi, ::testing::Values(GlRequest::Gl33, GlRequest::Es3),
@@ -69,7 +121,7 @@ TEST(Compositor, personCoversCgBehindWhereNotHeldOut) {
     paint(size, {0, 0, 40, 40}, glm::vec4(0, 1, 0, 1));
     c.beginHoldout();
     c.endHoldout();
-    c.person(person);
+    c.person(person, onePlane(), kProjection);
     const Image out = c.output().read();
     EXPECT_EQ(at(out, 37, 5), cv::Vec4b(30, 20, 10, 255));
     EXPECT_EQ(at(out, 36, 5), cv::Vec4b(0, 255, 0, 255));
@@ -85,7 +137,7 @@ TEST(Compositor, halfTransparentPersonBlendsPremultiplied) {
     paint(size, {0, 0, 16, 16}, glm::vec4(0, 0, 1, 1));
     c.beginHoldout();
     c.endHoldout();
-    c.person(person);
+    c.person(person, onePlane(), kProjection);
     const cv::Vec4b p = at(c.output().read(), 8, 8);
     EXPECT_EQ(p[1], 100);
     EXPECT_NEAR(p[2], 127, 1);  // blue * (1 - 128/255)
@@ -99,7 +151,7 @@ TEST(Compositor, colourBackdropReplacesTheVideo) {
     cv::Mat frame(size.y, size.x, CV_8UC3, cv::Scalar(0, 255, 0));  // a green backing
     cv::Mat person(size.y, size.x, CV_8UC4, cv::Scalar(0, 0, 0, 0));
     c.begin(frame, {.backdropVideo = false, .backdropColor = {0.2f, 0.2f, 0.2f, 1.0f}});
-    c.person(person);
+    c.person(person, onePlane(), kProjection);
     EXPECT_EQ(at(c.output().read(), 3, 3), cv::Vec4b(51, 51, 51, 255));
     EXPECT_EQ(c.personTiles(), 0u);
 }
@@ -111,7 +163,7 @@ TEST(Compositor, videoRowsKeepTheirOrder) {
     cv::Mat frame(size.y, size.x, CV_8UC3, cv::Scalar(0, 0, 0));
     frame.row(0).setTo(cv::Scalar(255, 0, 0));  // top row blue
     c.begin(frame, {});
-    c.person(cv::Mat(size.y, size.x, CV_8UC4, cv::Scalar::all(0)));
+    c.person(cv::Mat(size.y, size.x, CV_8UC4, cv::Scalar::all(0)), onePlane(), kProjection);
     const Image out = c.output().read();
     EXPECT_EQ(at(out, 4, 0), cv::Vec4b(0, 0, 255, 255));
     EXPECT_EQ(at(out, 4, 5), cv::Vec4b(0, 0, 0, 255));

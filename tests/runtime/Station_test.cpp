@@ -429,3 +429,89 @@ camera:
     EXPECT_NEAR(m.m01 / m.m00, (full.y + 0.5) / 2.0 - 0.5, 0.5);
 }
 
+
+namespace {
+
+// A studio-green floor scene with two people painted as flat cards standing
+// on it, through a real camera: what the matte and the tracker see.
+class TwoPeopleCamera : public FrameGrabber {
+public:
+    TwoPeopleCamera(const CalibratedCamera& camera, std::vector<cv::Rect> people, std::vector<cv::Scalar> colours)
+        : size_(camera.intrinsics.imageSize), people_(std::move(people)), colours_(std::move(colours)) {}
+    GrabResult grab() override {
+        cv::Mat frame(size_.y, size_.x, CV_8UC3, cv::Scalar(64, 177, 0));
+        for (std::size_t i = 0; i < people_.size(); ++i) cv::rectangle(frame, people_[i], colours_[i], cv::FILLED);
+        return {Frame{frame}, {SourceStatus::Streaming, ""}};
+    }
+    std::string name() const override { return "two people"; }
+
+private:
+    glm::ivec2 size_;
+    std::vector<cv::Rect> people_;
+    std::vector<cv::Scalar> colours_;
+};
+
+// The card of a person 1.7 m tall and 0.5 m wide whose feet are at `floor`.
+cv::Rect personCard(const CalibratedCamera& c, const glm::dvec3& floor) {
+    const glm::dvec2 feet = c.project(floor), head = c.project(floor + glm::dvec3(0.0, 1.7, 0.0));
+    const glm::dvec2 side = c.project(floor + glm::dvec3(0.25, 0.0, 0.0));
+    const double halfWidth = side.x - feet.x;
+    return cv::Rect(cv::Point(static_cast<int>(feet.x - halfWidth), static_cast<int>(head.y)),
+                    cv::Point(static_cast<int>(feet.x + halfWidth), static_cast<int>(feet.y) + 1));
+}
+
+} // namespace
+
+// With a calibrated camera each person stands at their own depth, from
+// where their feet meet the floor: a box between a near and a far person
+// cuts the far one and is covered by the near one.
+TEST(Station, eachPersonIsInFrontOfOrBehindTheCgByTheirOwnDepth) {
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    arcomp::test::TempDir dir;
+    CalibratedCamera real;
+    real.intrinsics = {.imageSize = {640, 480}, .fx = 560.0, .fy = 560.0, .cx = 320.0, .cy = 240.0, .distortion = {}};
+    const double tilt = glm::radians(18.0);
+    const glm::dvec3 forward(0.0, -std::sin(tilt), -std::cos(tilt)), right(1.0, 0.0, 0.0);
+    real.rotation = glm::transpose(glm::dmat3(right, glm::cross(forward, right), forward));
+    real.translation = -real.rotation * glm::dvec3(0.0, 3.0, 9.0);
+    writeCameraFile(dir.path() / "camera.yaml", real, "");
+    const glm::dvec3 nearFeet(-0.3, 0.0, 2.0), farFeet(0.4, 0.0, -4.0);
+    const cv::Rect nearCard = personCard(real, nearFeet), farCard = personCard(real, farFeet);
+    const StationConfig cfg = loadStationConfig(dir.write("station.yaml", R"(matte:
+  kind: chroma
+compositor:
+  person_plane_m: 30
+scene:
+  objects:
+    - {name: box, shape: box, size: [1.6, 1.2, 0.4], position: [0, 0.6, 0], color: [0.2, 0.3, 0.9, 1]}
+camera:
+  calibration: camera.yaml
+)"));
+    Station station(cfg, StationInput::fromReplay(std::make_unique<TwoPeopleCamera>(
+                                                      real, std::vector{nearCard, farCard},
+                                                      std::vector{cv::Scalar(0, 0, 230), cv::Scalar(230, 0, 230)}),
+                                                  30.0));
+    for (int i = 0; i < 3; ++i) ASSERT_TRUE(station.frame());
+
+    const PersonDepths& depths = station.personDepths();
+    ASSERT_EQ(depths.people, 2);
+    std::vector<float> metres{depths.metres[1], depths.metres[2]};
+    std::sort(metres.begin(), metres.end());
+    EXPECT_NEAR(metres[0], real.depthOf(nearFeet), 0.05 * real.depthOf(nearFeet));
+    EXPECT_NEAR(metres[1], real.depthOf(farFeet), 0.05 * real.depthOf(farFeet));
+    EXPECT_EQ(station.stats().objectsInFront, 1u);
+
+    // The box's front face, where each card overlaps it.
+    const glm::dvec2 boxNear = real.project({-0.3, 0.7, 0.2}), boxFar = real.project({0.4, 1.1, 0.2});
+    ASSERT_TRUE(nearCard.contains(cv::Point(static_cast<int>(boxNear.x), static_cast<int>(boxNear.y))));
+    ASSERT_TRUE(farCard.contains(cv::Point(static_cast<int>(boxFar.x), static_cast<int>(boxFar.y))));
+    const Image out = station.compositedFrame().read();
+    auto rgb = [&](const glm::dvec2& p) {
+        const std::size_t i = (static_cast<std::size_t>(p.y) * 640 + static_cast<std::size_t>(p.x)) * 4;
+        return cv::Vec3b(out.rgba[i], out.rgba[i + 1], out.rgba[i + 2]);
+    };
+    EXPECT_EQ(rgb(boxNear), cv::Vec3b(230, 0, 0));   // the near person over the box
+    const cv::Vec3b cut = rgb(boxFar);                // the box over the far person: blue, not magenta
+    EXPECT_GT(cut[2], cut[0]) << cut;
+    EXPECT_LT(cut[0], 150) << cut;
+}

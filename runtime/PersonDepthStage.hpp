@@ -1,0 +1,53 @@
+#pragma once
+// Each person's distance, from where their feet meet the floor. With a
+// calibrated camera, the matte's blobs are tracked (video/PersonTracker.hpp)
+// and each foot point's ray is met with the floor (graph/camera/
+// CalibratedCamera.hpp); the point's depth along the view axis is that
+// person's. Without one, everyone stands on the config's person plane.
+//
+//   PersonDepthStage depths(cfg.camera.calibrated, personPlaneMetres, videoSize);
+//   depths.run(matte.person(), newFrame);
+//   compositor.person(matte.person(), depths.depths(), view.projection);
+//
+// A person whose feet are out of the picture, or whose foot ray misses the
+// floor, keeps the last depth measured for their track; a track that never
+// had one, and a matte blob too small to track, stands on the plane.
+// Tracking runs on the matte at most 960 pixels wide (1080p at half size):
+// a foot point to two pixels is plenty, and the cost quarters.
+
+#include "graph/camera/CalibratedCamera.hpp"
+#include "runtime/PersonDepths.hpp"
+#include "video/PersonTracker.hpp"
+
+#include <glm/glm.hpp>
+
+#include <optional>
+#include <unordered_map>
+
+namespace arcomp {
+
+class PersonDepthStage {
+public:
+    PersonDepthStage(const std::optional<CalibratedCamera>& camera, float personPlaneMetres, glm::ivec2 size);
+
+    // `person`: the matte's premultiplied BGRA at the video's size. A frame
+    // that did not change keeps the last depths.
+    void run(const cv::Mat& person, bool newFrame);
+    const PersonDepths& depths() const { return depths_; }
+    // The tracks behind the depths, in tracking pixels (frame pixels / scale()).
+    const std::vector<TrackedPerson>& people() const { return tracker_.people(); }
+    int scale() const { return scale_; }
+
+private:
+    void assignSlots();
+
+    std::optional<CalibratedCamera> camera_;  // intrinsics at the video's size
+    float plane_;
+    int scale_ = 1;
+    PersonTracker tracker_;
+    cv::Mat alpha_;
+    std::unordered_map<int, float> lastDepth_;  // by track id
+    PersonDepths depths_;
+};
+
+} // namespace arcomp
