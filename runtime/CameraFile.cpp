@@ -25,25 +25,41 @@ std::string list(const Values& values) {
     return text + "]";
 }
 
-} // namespace
-
-void writeCameraFile(const std::filesystem::path& file, const CalibratedCamera& camera, const std::string& note) {
-    const CameraIntrinsics& k = camera.intrinsics;
-    std::vector<double> rotation;
-    for (int row = 0; row < 3; ++row)
-        for (int column = 0; column < 3; ++column) rotation.push_back(camera.rotation[column][row]);
-    const std::vector<double> translation{camera.translation.x, camera.translation.y, camera.translation.z};
-    std::string text = "# arcomp camera calibration: pinhole intrinsics in pixels (OpenCV's axes:\n"
-                       "# x right, y down, z forward) and the pose, floor frame to camera, in metres.\n";
+// The lens, the part a camera file and a lens file share, after `header`.
+std::string lensText(const char* header, const CameraIntrinsics& k, const std::string& note) {
+    std::string text = header;
     if (!note.empty()) text += "# " + note + "\n";
     text += "image_size: [" + std::to_string(k.imageSize.x) + ", " + std::to_string(k.imageSize.y) + "]\n";
     text += "fx: " + number(k.fx) + "\nfy: " + number(k.fy) + "\ncx: " + number(k.cx) + "\ncy: " + number(k.cy) + "\n";
     text += "distortion: " + list(k.distortion) + "   # k1, k2, p1, p2, k3\n";
+    return text;
+}
+
+void write(const std::filesystem::path& file, const std::string& text) {
+    writeFileAtomically(file, std::as_bytes(std::span(text.data(), text.size())));
+}
+
+} // namespace
+
+void writeCameraFile(const std::filesystem::path& file, const CalibratedCamera& camera, const std::string& note) {
+    std::vector<double> rotation;
+    for (int row = 0; row < 3; ++row)
+        for (int column = 0; column < 3; ++column) rotation.push_back(camera.rotation[column][row]);
+    const std::vector<double> translation{camera.translation.x, camera.translation.y, camera.translation.z};
+    std::string text = lensText("# arcomp camera calibration: pinhole intrinsics in pixels (OpenCV's axes:\n"
+                                "# x right, y down, z forward) and the pose, floor frame to camera, in metres.\n",
+                                camera.intrinsics, note);
     text += "rotation: " + list(rotation) + "\ntranslation: " + list(translation) + "\n";
     text += "# camera at " + list(std::vector<double>{camera.position().x, camera.position().y, camera.position().z}) +
             " m in the floor frame, " + number(camera.heightMetres()) + " m above the floor, tilted " +
             number(camera.tiltDegrees()) + " degrees down\n";
-    writeFileAtomically(file, std::as_bytes(std::span(text.data(), text.size())));
+    write(file, text);
+}
+
+void writeLensFile(const std::filesystem::path& file, const CameraIntrinsics& intrinsics, const std::string& note) {
+    write(file, lensText("# arcomp lens calibration: pinhole intrinsics in pixels (OpenCV's axes: x right,\n"
+                         "# y down, z forward), no pose; `arcomp calibrate floor --intrinsics` adds it.\n",
+                         intrinsics, note));
 }
 
 CalibratedCamera readCameraFile(const std::filesystem::path& file) {

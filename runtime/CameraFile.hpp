@@ -15,7 +15,10 @@
 //   CalibratedCamera camera = readCameraFile("camera.yaml");   // throws ConfigError with line:column
 //
 // Without rotation and translation the camera stands at the floor frame's
-// origin looking along +z (intrinsics only, before `calibrate floor`).
+// origin looking along +z: a lens file, what `arcomp calibrate intrinsics`
+// writes and `calibrate floor --intrinsics` reads.
+//
+//   writeLensFile("lens.yaml", intrinsics, "chessboard, 24 views, 0.31 px RMS");
 
 #include "graph/camera/CalibratedCamera.hpp"
 
@@ -27,6 +30,9 @@ namespace arcomp {
 // `note` becomes a comment at the top (how the calibration was made).
 // Replaces the file atomically; throws std::runtime_error when it cannot.
 void writeCameraFile(const std::filesystem::path& file, const CalibratedCamera& camera, const std::string& note);
+// The lens alone (no rotation, no translation): a pose written with it
+// would claim the camera stands on the floor.
+void writeLensFile(const std::filesystem::path& file, const CameraIntrinsics& intrinsics, const std::string& note);
 CalibratedCamera readCameraFile(const std::filesystem::path& file);
 
 } // namespace arcomp

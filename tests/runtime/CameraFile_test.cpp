@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <fstream>
+#include <iterator>
+
 namespace arcomp {
 
 TEST(CameraFile, aWrittenCameraReadsBackTheSame) {
@@ -34,6 +37,26 @@ TEST(CameraFile, intrinsicsAloneStandTheCameraAtTheOrigin) {
         readCameraFile(dir.write("lens.yaml", "image_size: [640, 480]\nfx: 500\nfy: 500\ncx: 319.5\ncy: 239.5\n"));
     EXPECT_EQ(c.position(), glm::dvec3(0.0));
     EXPECT_FALSE(c.intrinsics.distorted());
+}
+
+TEST(CameraFile, aLensFileHoldsNoPoseAndReadsBackAsTheLens) {
+    test::TempDir dir;
+    const CameraIntrinsics lens{.imageSize = {640, 480}, .fx = 612.5, .fy = 598.25, .cx = 322.5, .cy = 236.75,
+                                .distortion = {-0.08, 0.01, 0.0, 0.0, 0.0}};
+    writeLensFile(dir.path() / "lens.yaml", lens, "chessboard, 12 views");
+    std::ifstream in(dir.path() / "lens.yaml");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(text.find("rotation"), std::string::npos) << text;
+    EXPECT_EQ(text.find("translation"), std::string::npos) << text;
+    EXPECT_NE(text.find("# chessboard, 12 views"), std::string::npos) << text;
+    const CalibratedCamera read = readCameraFile(dir.path() / "lens.yaml");
+    EXPECT_EQ(read.intrinsics.imageSize, lens.imageSize);
+    EXPECT_DOUBLE_EQ(read.intrinsics.fx, 612.5);
+    EXPECT_DOUBLE_EQ(read.intrinsics.fy, 598.25);
+    EXPECT_DOUBLE_EQ(read.intrinsics.cx, 322.5);
+    EXPECT_DOUBLE_EQ(read.intrinsics.cy, 236.75);
+    EXPECT_NEAR(read.intrinsics.distortion[0], -0.08, 1e-7);
+    EXPECT_EQ(read.position(), glm::dvec3(0.0));
 }
 
 TEST(CameraFile, aMatrixThatIsNoRotationOrAHalfPoseIsRefusedWithItsPlace) {

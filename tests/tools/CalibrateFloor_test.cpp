@@ -1,9 +1,11 @@
 // arcomp calibrate floor: a known camera's view of floor marks gives back
-// that camera; too few, collinear or malformed points, or no lens, are
-// refused with exit 2 and say what is wrong.
+// that camera, whether the marks are given by hand or are an ArUco marker's
+// corners; too few, collinear or malformed points, a marker not in view, or
+// no lens, are refused with exit 2 and say what is wrong.
 #include "../support/TempDir.hpp"
 #include "runtime/CameraFile.hpp"
 #include "tests/support/Shell.hpp"
+#include "tests/support/SyntheticCamera.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -40,6 +42,19 @@ std::string pointsSeenBy(const CalibratedCamera& c, const std::vector<glm::dvec2
 }
 
 test::ShellResult calibrate(const std::string& args) { return test::arcompCommand("calibrate floor " + args); }
+
+// A 50 degree lens 3 m above the floor at x = 0.4, looking along -z and 40
+// degrees down at the floor's origin, where marker 7 (0.5 m) lies; marker 3
+// lies 1 m to its right and 0.6 m nearer.
+constexpr double kHeight = 3.0, kTilt = 40.0, kX = 0.4;
+const double kZ = kHeight / std::tan(kTilt * CV_PI / 180.0);
+
+cv::Mat floorPhoto(const std::vector<test::FloorMarkerSpec>& markers, double size = 0.5) {
+    const double f = 0.5 * 480 / std::tan(25.0 * CV_PI / 180.0);
+    const test::SyntheticCamera camera({.size = {640, 480}, .fx = f, .fy = f, .cx = 319.5, .cy = 239.5, .distortion = {}});
+    const cv::Mat floor = test::floorWithMarkers(cv::aruco::getPredefinedDictionary(cv::aruco::DICT_4X4_50), markers, size, 3.0, 400);
+    return camera.photograph(floor, 1.0 / 400, {-1.5, -1.5}, test::floorToCamera(kX, kHeight, kZ, kTilt));
+}
 
 } // namespace
 
@@ -106,5 +121,68 @@ TEST(CalibrateFloor, anImageThatIsNotOneIsRefused) {
     EXPECT_EQ(r.code, 2) << r.out;
     EXPECT_NE(r.out.find("neither an image nor a video"), std::string::npos) << r.out;
 }
+
+TEST(CalibrateFloor, aMarkerOnTheFloorIsItsOriginAndGivesTheCameraOverIt) {
+    TempDir dir;
+    const auto image = dir.path() / "plate.png";
+    ASSERT_TRUE(cv::imwrite(image.string(), floorPhoto({{7, 0.0, 0.0}, {3, 1.0, 0.6}})));
+    const auto out = dir.path() / "camera.yaml";
+    const auto r = calibrate(image.string() + " --fovy-deg 50 --marker 7 --marker-size 0.5 --out " + out.string());
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_NE(r.out.find("floor: the corners of DICT_4X4_50 marker 7 (0.5 m)"), std::string::npos) << r.out;
+
+    const CalibratedCamera found = readCameraFile(out);
+    EXPECT_NEAR(found.heightMetres(), kHeight, 0.03 * kHeight);
+    EXPECT_NEAR(found.tiltDegrees(), kTilt, 1.5);
+    // Where the camera stands says where the marker put the origin and
+    // which way it turned x and z.
+    EXPECT_NEAR(found.position().x, kX, 0.1);
+    EXPECT_NEAR(found.position().z, kZ, 0.1);
+    EXPECT_EQ(r.out.find("warning"), std::string::npos) << r.out;
+}
+
+TEST(CalibrateFloor, aMarkerTooSmallInThePictureToPlaceTheCameraWellIsWarnedAbout) {
+    TempDir dir;
+    const auto image = dir.path() / "plate.png";
+    ASSERT_TRUE(cv::imwrite(image.string(), floorPhoto({{7, 0.0, 0.0}}, 0.2)));
+    const auto r = calibrate(image.string() + " --fovy-deg 50 --marker 7 --marker-size 0.2 --out " + (dir.path() / "c.yaml").string());
+    EXPECT_EQ(r.code, 0) << r.out;
+    EXPECT_NE(r.out.find("warning: marker 7 spans only"), std::string::npos) << r.out;
+}
+
+struct MarkerInputCase {
+    const char* name;
+    const char* args;
+    const char* expected;
+};
+
+class CalibrateFloorByMarkerRefuses : public ::testing::TestWithParam<MarkerInputCase> {};
+
+// The photo shows markers 3 and 12, not 7.
+TEST_P(CalibrateFloorByMarkerRefuses, withExitTwoAndTheReason) {
+    TempDir dir;
+    const auto image = dir.path() / "plate.png";
+    ASSERT_TRUE(cv::imwrite(image.string(), floorPhoto({{3, 0.0, 0.0}, {12, 1.0, 0.6}})));
+    const auto r = calibrate(image.string() + " --fovy-deg 50 " + GetParam().args + " --out " + (dir.path() / "camera.yaml").string());
+    EXPECT_EQ(r.code, 2) << r.out;
+    EXPECT_NE(r.out.find(std::string("arcomp calibrate floor: ") + GetParam().expected), std::string::npos) << r.out;
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "camera.yaml"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    BadInput, CalibrateFloorByMarkerRefuses,
+    ::testing::Values(
+        MarkerInputCase{"notInView", "--marker 7 --marker-size 0.5",
+                        "--marker 7: not in the image; it shows DICT_4X4_50 markers 3, 12"},
+        MarkerInputCase{"notInTheDictionary", "--marker 60 --marker-size 0.5", "--marker 60: DICT_4X4_50 has IDs 0 to 49"},
+        MarkerInputCase{"otherDictionary", "--marker 3 --marker-size 0.5 --dictionary DICT_6X6_250",
+                        "--marker 3: not in the image; it shows no DICT_6X6_250 markers at all"},
+        MarkerInputCase{"unknownDictionary", "--marker 3 --marker-size 0.5 --dictionary DICT_9X9_7",
+                        "--dictionary DICT_9X9_7: not an OpenCV ArUco dictionary"},
+        MarkerInputCase{"noSize", "--marker 3", "--marker 3: give its --marker-size"},
+        MarkerInputCase{"markerAndPoints", "--marker 3 --marker-size 0.5 --points \"1,1=0,0;2,2=1,0;3,1=1,1;1,3=0,1\"",
+                        "give the floor marks by --points or by --marker, not both"},
+        MarkerInputCase{"neither", "", "give the floor marks: --points"}),
+    [](const auto& info) { return std::string(info.param.name); });
 
 } // namespace arcomp
