@@ -123,6 +123,23 @@ void readCompositor(YamlMap& root, CompositorConfig& out) {
     c.choice("backdrop", backdrop, {"video", "color"});
     out.backdropVideo = backdrop == "video";
     c.vec4("backdrop_color", out.backdropColor);
+    if (c.has("shadow")) {
+        YamlMap sh = c.map("shadow");
+        bool enabled = true;
+        if (sh.has("enabled")) {
+            sh.boolean("enabled", enabled);
+            out.shadow.enabled = enabled;
+        }
+        glm::vec3 light = out.shadow.light;
+        sh.vec3("light", light);
+        // Below about 6 degrees the shadows would reach to the horizon.
+        if (const float length = glm::length(light); !(length > 0.0f) || !(light.y / length > 0.1f))
+            sh.report().add(sh.mark(), sh.where() + ".light: expected a direction towards a light above the floor, "
+                                                    "[x, y, z] with y well above 0 (e.g. [-0.4, 0.8, 0.45])");
+        else out.shadow.light = light / length;
+        sh.number("strength", out.shadow.strength, 0.0, 1.0);
+        sh.finish();
+    }
     c.finish();
 }
 

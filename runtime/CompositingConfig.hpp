@@ -24,6 +24,14 @@ class YamlMap;
 // full mesh (the reference).
 enum class HoldoutMesh { Silhouette, Full };
 
+// Contact shadows: CG objects darken the video's floor (y = 0) where they
+// shade it from the light.
+struct ShadowConfig {
+    std::optional<bool> enabled;  // unset: on with a calibrated camera (the floor is known), off without
+    glm::vec3 light = glm::normalize(glm::vec3(-0.4f, 0.8f, 0.45f));  // towards the light, floor frame, unit length
+    float strength = 0.45f;  // the full shadow keeps 1 - strength of the video's light
+};
+
 struct CompositorConfig {
     // The person layer stands on a plane this far along the camera's view
     // axis; CG objects whose centre is nearer are in front of the person.
@@ -41,6 +49,7 @@ struct CompositorConfig {
     // (studio chroma key, where the backing must not show).
     bool backdropVideo = true;
     glm::vec4 backdropColor{0.0f, 0.0f, 0.0f, 1.0f};
+    ShadowConfig shadow;
 };
 
 struct OutputConfig {

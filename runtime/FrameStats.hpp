@@ -21,6 +21,7 @@ struct FrameStats {
     double updateMs = 0;       // CPU: transforms and bounds
     double selectMs = 0;       // CPU: culling, LOD, grouping cut, silhouette region, bins
     double budgetMs = 0;       // CPU: the frame-time controller (0 when it is off)
+    double shadowMs = 0;       // GL: contact shadows on the video's floor (0 without)
     double renderMs = 0;       // GL: CG, all objects, shaded (what the controller observes)
     double pointCloudMs = 0;   // CPU: point clouds splatted and laid over the CG (0 without)
     double holdoutMs = 0;      // GL: holdout mask from the front objects' silhouette meshes

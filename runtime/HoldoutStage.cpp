@@ -17,7 +17,7 @@ void HoldoutStage::cut(const World& world, const DrawList& cg, const View& view,
             list_.items.push_back(*holdout);
     }
     compositor.beginHoldout();
-    renderer.draw(world.scene, list_, view, {.clearColor = std::nullopt, .depthOnly = true});
+    renderer.draw(world.scene, list_, view, {.clearColor = std::nullopt, .coverageOnly = true});
     compositor.endHoldout();
     stats.holdoutTriangles = renderer.trianglesDrawn();
 }

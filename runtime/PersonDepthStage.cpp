@@ -78,7 +78,7 @@ void PersonDepthStage::assignSlots() {
     }
     // Tracking takes alpha above half; the matte's soft edge around a blob
     // belongs to the same person, not to the plane.
-    if (depths_.people > 0) cv::dilate(depths_.slots, depths_.slots, cv::getStructuringElement(cv::MORPH_RECT, {5, 5}));
+    if (depths_.people > 0) cv::dilate(depths_.slots, depths_.slots, cv::getStructuringElement(cv::MORPH_RECT, {9, 9}));
 }
 
 } // namespace arcomp

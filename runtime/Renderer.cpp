@@ -172,7 +172,7 @@ GLuint Renderer::texture(const Scene& scene, int image) {
 
 void Renderer::drawItem(const Scene& scene, const DrawItem& item, const View& view, const RenderSettings& settings) {
     const Material& m = scene.material(item.part.material);
-    const Shading shading = m.unlit || settings.depthOnly ? Shading::Unlit : item.shading;
+    const Shading shading = m.unlit || settings.coverageOnly ? Shading::Unlit : item.shading;
     const MeshProgram& p = *programs_[static_cast<std::size_t>(shading)];
     p.program.use();
     const glm::mat4& model = item.model ? *item.model : scene.world(item.node);
@@ -225,7 +225,7 @@ void Renderer::draw(const Scene& scene, const DrawList& list, const View& view, 
     // front; a level fading in or out of an LOD cross-fade is blended.
     std::vector<const DrawItem*> opaque, blended;
     for (const DrawItem& item : list.items) {
-        const bool blend = !settings.depthOnly &&
+        const bool blend = !settings.coverageOnly &&
                            (item.fade < 1.0f || scene.material(item.part.material).alphaMode == AlphaMode::Blend);
         (blend ? blended : opaque).push_back(&item);
     }

@@ -26,9 +26,10 @@ namespace arcomp {
 struct RenderSettings {
     std::optional<glm::vec4> clearColor = glm::vec4(0.0f);  // nullopt: draw over what is there
     glm::vec3 lightDirection = glm::normalize(glm::vec3(-0.4f, 0.8f, 0.45f));  // towards the light, world space
-    // Every item as opaque, unlit: for depth-only passes (holdouts), where a
-    // blended or fading item must still write its depth.
-    bool depthOnly = false;
+    // Every item opaque and unlit: for passes that need where items are, not
+    // how they look (the holdout's depth, a shadow mask), where a blended or
+    // fading item must still count.
+    bool coverageOnly = false;
 };
 
 class Renderer {

@@ -6,13 +6,14 @@
 #include "runtime/ImpostorBaker.hpp"
 #include "runtime/PointCloudLayer.hpp"
 #include "runtime/SceneFile.hpp"
+#include "runtime/ShadowCatcher.hpp"
 
 namespace arcomp {
 
 namespace {
 
 // The frame's GL stages, timed on the GPU (runtime/GpuStageTimes.hpp).
-enum GpuStage { kGpuBackdrop, kGpuRender, kGpuHoldout, kGpuPerson, kGpuStageCount };
+enum GpuStage { kGpuBackdrop, kGpuShadow, kGpuRender, kGpuHoldout, kGpuPerson, kGpuStageCount };
 
 // Milliseconds of each CPU stage, one lap after another.
 class StageClock {
@@ -66,6 +67,9 @@ Station::Station(const StationConfig& cfg, StationInput input)
     gpuTimes_ = std::make_unique<GpuStageTimes>(kGpuStageCount);
     if (world_.pointClouds.size()) cloudLayer_ = std::make_unique<PointCloudLayer>();
     compositor_ = std::make_unique<Compositor>(camera.size);
+    // The floor is only known for a calibrated camera: shadows are on there unless the config says otherwise.
+    if (cfg_.compositing.compositor.shadow.enabled.value_or(cfg_.camera.calibrated.has_value()))
+        shadows_ = std::make_unique<ShadowCatcher>(camera.size);
 }
 
 Station::~Station() { finish(); }
@@ -100,7 +104,13 @@ bool Station::frame() {
     gpuTimes_->time(kGpuBackdrop, [&] {
         compositor_->begin(capture_.image(), {.backdropVideo = comp.backdropVideo, .backdropColor = comp.backdropColor});
     });
-    gpuTimes_->time(kGpuRender, [&] { renderer_->draw(world_.scene, drawList_, view_, {.clearColor = std::nullopt}); });
+    if (shadows_)
+        gpuTimes_->time(kGpuShadow, [&] {
+            shadows_->cast(world_.scene, drawList_, view_, comp.shadow, *renderer_, compositor_->output());
+        });
+    gpuTimes_->time(kGpuRender, [&] {
+        renderer_->draw(world_.scene, drawList_, view_, {.clearColor = std::nullopt, .lightDirection = comp.shadow.light});
+    });
     stats_.cgTriangles = renderer_->trianglesDrawn();
     clock.lap();
     if (cloudLayer_) cloudLayer_->draw(world_.scene, world_.pointClouds, drawList_.pointClouds, view_);
@@ -125,6 +135,7 @@ void Station::collectGpuTimes() {
     stats_.renderMs = gpuTimes_->ms(kGpuRender);
     stats_.holdoutMs = gpuTimes_->ms(kGpuHoldout);
     stats_.compositeMs = gpuTimes_->ms(kGpuBackdrop) + gpuTimes_->ms(kGpuPerson);
+    stats_.shadowMs = gpuTimes_->ms(kGpuShadow);
 }
 
 glm::vec3 Station::gazeAt(double seconds) {

@@ -2,10 +2,10 @@
 // One compositing station's frame, in one place. Station::frame() is the
 // pipeline, each stage a class of its own:
 //   capture -> matte -> people's depths -> update -> select -> budget
-//   -> render -> holdout -> composite -> output
+//   -> backdrop -> contact shadows -> render -> holdout -> composite -> output
 // (CaptureStage, MatteStage, PersonDepthStage, moveObjects, select,
-// BudgetStage, Renderer and PointCloudLayer, HoldoutStage, Compositor,
-// OutputStage), and it records
+// BudgetStage, Compositor, ShadowCatcher, Renderer and PointCloudLayer,
+// HoldoutStage, Compositor, OutputStage), and it records
 // each stage's milliseconds in stats() (runtime/FrameStats.hpp).
 //
 //   auto ctx = HeadlessContext::create(GlRequest::Auto);   // or a window's context
@@ -49,6 +49,7 @@
 namespace arcomp {
 
 class PointCloudLayer;
+class ShadowCatcher;
 
 class Station {
 public:
@@ -135,6 +136,7 @@ private:
     std::optional<BudgetStage> budget_;
     std::unique_ptr<Renderer> renderer_;  // CG and holdouts: one scene, one set of GPU buffers
     std::unique_ptr<PointCloudLayer> cloudLayer_;  // only with point clouds
+    std::unique_ptr<ShadowCatcher> shadows_;       // only with contact shadows on
     HoldoutStage holdout_;
     std::unique_ptr<Compositor> compositor_;
     std::unique_ptr<RenderTarget> holdoutMask_;  // only for readHoldout()

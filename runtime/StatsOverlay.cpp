@@ -55,7 +55,10 @@ void StatsOverlay::draw(const FrameStats& stats, const DrawList& drawn, const Ca
 
     int row = 5;
     text(image_, format("frame %.1f ms, target %.1f ms", frameMs_.back(), targetMs), row++);
-    text(image_, format("capture %.1f  matte %.1f  render %.1f", stats.captureMs, stats.matteMs, stats.renderMs) +
+    text(image_, format("capture %.1f  matte %.1f  track %.1f", stats.captureMs, stats.matteMs, stats.trackMs) + " (" +
+                     std::to_string(stats.people) + " people)",
+         row++);
+    text(image_, format("render %.1f", stats.renderMs) +
                      format("  holdout %.1f  comp. %.1f", stats.holdoutMs, stats.compositeMs),
          row++);
     if (stats.budget)

@@ -1,0 +1,61 @@
+#pragma once
+// Contact shadows on the video (a "shadow catcher"): the CG's objects
+// darken the real floor where they keep the light from it, so that they
+// stand on the place rather than float over it. Each object is flattened
+// onto the floor (y = 0) along the light into a half-size coverage mask;
+// the video is then multiplied by 1 - strength x the mask, blurred a few
+// pixels, and only inside the shadows' rectangle on screen (llvmpipe pays
+// about 10 ms for a full-screen pass at 1080p).
+//
+//   ShadowCatcher shadows(videoSize);
+//   compositor.begin(frame, {});
+//   shadows.cast(scene, cgList, view, cfg.compositor.shadow, renderer, compositor.output());
+//   renderer.draw(scene, cgList, view, {.clearColor = std::nullopt});   // the CG over its shadow
+//
+// Only the floor catches shadows: a shadow reaching a wall or a person in
+// the video is drawn where the floor behind them would be.
+
+#include "graph/core/DrawList.hpp"
+#include "graph/core/Scene.hpp"
+#include "graph/core/View.hpp"
+#include "runtime/CompositingConfig.hpp"
+#include "runtime/RenderTarget.hpp"
+#include "runtime/Renderer.hpp"
+#include "runtime/ShaderProgram.hpp"
+
+#include <vector>
+
+namespace arcomp {
+
+class ShadowCatcher {
+public:
+    explicit ShadowCatcher(glm::ivec2 size);
+    ShadowCatcher(const ShadowCatcher&) = delete;
+    ShadowCatcher& operator=(const ShadowCatcher&) = delete;
+
+    // Darkens `output` (the video backdrop) under the shadows of `cg`'s items.
+    void cast(const Scene& scene, const DrawList& cg, const View& view, const ShadowConfig& shadow, Renderer& renderer,
+              const RenderTarget& output);
+    // Pixels of the output the last cast() darkened at most (its rectangle).
+    std::size_t pixelsCovered() const { return pixels_; }
+
+private:
+    struct ApplyProgram {
+        ApplyProgram();
+        ShaderProgram program;
+        GLint mask, texel, outputSize, strength;  // uniform locations
+    };
+
+    RenderTarget mask_;
+    DrawList flattened_;
+    std::vector<glm::mat4> models_;
+    GlVertexArray emptyVao_;
+    ApplyProgram apply_;
+    std::size_t pixels_ = 0;
+};
+
+// The projection of every point onto the floor (y = 0) along `light`
+// (towards the light, y > 0): where its shadow falls.
+glm::mat4 floorShadowMatrix(const glm::vec3& light);
+
+} // namespace arcomp

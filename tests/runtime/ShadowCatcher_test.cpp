@@ -1,0 +1,108 @@
+// Contact shadows on the video: where a box's shadow falls on the floor for
+// a given light, how dark it is, that its edge is soft, and that nothing
+// else in the picture changes.
+#include "runtime/ShadowCatcher.hpp"
+
+#include "graph/core/SelectPass.hpp"
+#include "runtime/Compositor.hpp"
+#include "runtime/GlContext.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
+
+#include <set>
+
+using namespace arcomp;
+
+namespace {
+
+TEST(ShadowCatcher, floorShadowMatrixDropsEachPointAlongTheLight) {
+    const glm::vec4 p(1.0f, 2.0f, 3.0f, 1.0f);
+    const glm::vec4 straightDown = floorShadowMatrix({0.0f, 1.0f, 0.0f}) * p;
+    EXPECT_FLOAT_EQ(straightDown.x, 1.0f);
+    EXPECT_FLOAT_EQ(straightDown.y, 0.0f);
+    EXPECT_FLOAT_EQ(straightDown.z, 3.0f);
+    // A light 45 degrees up in +x: the shadow falls 2 m towards -x.
+    const glm::vec4 slanted = floorShadowMatrix(glm::normalize(glm::vec3(1.0f, 1.0f, 0.0f))) * p;
+    EXPECT_NEAR(slanted.x, -1.0f, 1e-5f);
+    EXPECT_NEAR(slanted.y, 0.0f, 1e-6f);
+    EXPECT_NEAR(slanted.z, 3.0f, 1e-5f);
+}
+
+struct Shadowed {
+    cv::Mat grey;  // the output's luminance, rows top first
+    View view;
+    std::size_t pixels = 0;
+};
+
+// A 1 m cube standing on the floor at the origin, over a uniform grey video,
+// seen from 6 m up and 6 m back; only the shadow is drawn, not the cube.
+Shadowed castOnGrey(const glm::vec3& light, float strength) {
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    const glm::ivec2 size{320, 240};
+    World world;
+    Scene& scene = world.scene;
+    const auto white = scene.addMaterial({.name = "white", .baseColor = {1, 1, 1, 1}});
+    const NodeId cube = scene.addTransform(scene.root(), glm::translate(glm::mat4(1), {0.0f, 0.5f, 0.0f}));
+    scene.addMesh(cube, {scene.addGeometry(makeBox({1.0f, 1.0f, 1.0f})), white});
+    scene.update();
+    Shadowed out;
+    out.view = View::lookAt({0, 6, 6}, {0, 0, 0}, {0, 1, 0}, 50, size);
+    DrawList list;
+    select(world, out.view, {}, list);
+    Compositor compositor(size);
+    compositor.begin(cv::Mat(size.y, size.x, CV_8UC3, cv::Scalar(200, 200, 200)), {});
+    Renderer renderer;
+    ShadowCatcher shadows(size);
+    shadows.cast(scene, list, out.view, {.enabled = true, .light = glm::normalize(light), .strength = strength}, renderer,
+                 compositor.output());
+    out.pixels = shadows.pixelsCovered();
+    const Image img = compositor.output().read();
+    out.grey.create(size.y, size.x, CV_8UC1);
+    for (int y = 0; y < size.y; ++y)
+        for (int x = 0; x < size.x; ++x) out.grey.at<std::uint8_t>(y, x) = img.rgba[(static_cast<std::size_t>(y) * size.x + x) * 4 + 1];
+    return out;
+}
+
+cv::Point2d pixelOf(const View& v, const glm::vec3& p) {
+    const glm::vec4 clip = v.viewProjection() * glm::vec4(p, 1.0f);
+    return {(clip.x / clip.w * 0.5 + 0.5) * v.viewport.x, (0.5 - clip.y / clip.w * 0.5) * v.viewport.y};
+}
+
+TEST(ShadowCatcher, theShadowFallsAwayFromTheLightDarkenedByTheStrength) {
+    const Shadowed s = castOnGrey({1.0f, 1.0f, 0.0f}, 0.5f);
+    // The light is 45 degrees up in +x: the cube's shadow spans x in [-1.5, 0.5] on the floor.
+    const cv::Point2d inside = pixelOf(s.view, {-0.9f, 0.0f, 0.0f}), away = pixelOf(s.view, {1.6f, 0.0f, 0.0f});
+    EXPECT_NEAR(s.grey.at<std::uint8_t>(cv::Point(inside)), 100, 2);
+    EXPECT_EQ(s.grey.at<std::uint8_t>(cv::Point(away)), 200);
+    // Only the shadow changed, and only inside the rectangle the catcher reported.
+    cv::Mat darker = s.grey < 199;
+    const cv::Moments m = cv::moments(darker, true);
+    ASSERT_GT(m.m00, 100.0);
+    EXPECT_LE(m.m00, static_cast<double>(s.pixels));
+    const cv::Point2d centre = pixelOf(s.view, {-0.5f, 0.0f, 0.0f});
+    EXPECT_NEAR(m.m10 / m.m00, centre.x, 3.0);
+    EXPECT_NEAR(m.m01 / m.m00, centre.y, 3.0);
+    // A soft edge: the row through the middle climbs from the shadow to the
+    // video through several grey levels over a few pixels, not in one step.
+    const int row = static_cast<int>(centre.y);
+    std::set<int> levels;
+    for (int x = static_cast<int>(inside.x); x < static_cast<int>(away.x); ++x) {
+        const int g = s.grey.at<std::uint8_t>(row, x);
+        if (g > 102 && g < 198) levels.insert(g);
+    }
+    EXPECT_GE(levels.size(), 3u);
+}
+
+TEST(ShadowCatcher, aLightOnTheOtherSideMovesTheShadowThereAndNoStrengthLeavesTheVideo) {
+    const Shadowed left = castOnGrey({1.0f, 1.0f, 0.0f}, 0.5f), right = castOnGrey({-1.0f, 1.0f, 0.0f}, 0.5f);
+    const cv::Moments l = cv::moments(left.grey < 199, true), r = cv::moments(right.grey < 199, true);
+    ASSERT_GT(l.m00, 100.0);
+    ASSERT_GT(r.m00, 100.0);
+    EXPECT_LT(l.m10 / l.m00 + 20.0, r.m10 / r.m00);
+    const Shadowed none = castOnGrey({1.0f, 1.0f, 0.0f}, 0.0f);
+    EXPECT_EQ(cv::countNonZero(none.grey != 200), 0);
+}
+
+} // namespace
