@@ -66,8 +66,14 @@ void readConsensus(YamlMap& b, ConsensusSpec& c) {
 void readMatte(YamlMap& root, MatteSpec& out, const std::optional<SourceSpec>& video) {
     YamlMap m = root.map("matte");
     std::string kind = "none";
-    m.choice("kind", kind, {"none", "chroma", "background"});
-    out.kind = kind == "chroma" ? MatteKind::Chroma : kind == "background" ? MatteKind::Background : MatteKind::None;
+    m.choice("kind", kind, {"none", "chroma", "background", "masks"});
+    out.kind = kind == "chroma" ? MatteKind::Chroma : kind == "background" ? MatteKind::Background
+             : kind == "masks" ? MatteKind::Masks : MatteKind::None;
+    if (out.kind == MatteKind::Masks || m.has("masks")) {
+        YamlMap k = m.map("masks", out.kind == MatteKind::Masks ? Required::Yes : Required::No);
+        k.path("folder", out.masks.folder, true, Required::Yes);
+        k.finish();
+    }
     if (m.has("chroma")) {
         YamlMap c = m.map("chroma");
         glm::vec3 rgb(out.chroma.keyBgr[2], out.chroma.keyBgr[1], out.chroma.keyBgr[0]);
@@ -111,6 +117,9 @@ void readMatte(YamlMap& root, MatteSpec& out, const std::optional<SourceSpec>& v
 void readCompositor(YamlMap& root, CompositorConfig& out) {
     YamlMap c = root.map("compositor");
     c.number("person_plane_m", out.personPlaneMetres, 1e-3, 1e5);
+    std::string personDepth = "feet";
+    c.choice("person_depth", personDepth, {"feet", "plane"});
+    out.personDepthFromFeet = personDepth == "feet";
     c.number("holdout_region_m", out.holdoutRegionMetres, 1e-3, 1e3);
     std::string holdout = "silhouette";
     c.choice("holdout", holdout, {"silhouette", "full"});

@@ -36,6 +36,10 @@ struct CompositorConfig {
     // The person layer stands on a plane this far along the camera's view
     // axis; CG objects whose centre is nearer are in front of the person.
     float personPlaneMetres = 5.0f;
+    // With a calibrated camera each person stands where their feet meet
+    // the floor; false puts everyone on the plane (a camera that does not
+    // see the floor, or to compare).
+    bool personDepthFromFeet = true;
     // The silhouette meshes are baked for eyes within a box this many metres
     // either side of the camera position, in each axis.
     float holdoutRegionMetres = 0.5f;

@@ -3,12 +3,14 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <map>
 
 namespace arcomp {
 
 namespace {
 
-constexpr int kMaxTrackingWidth = 960;
+constexpr int kMaxTrackingWidth = 480;
+constexpr int kSoftEdgePx = 4;  // how far, in frame pixels, a person's soft edge reaches beyond alpha one half
 
 PersonTracker::Settings trackingAt(int scale) {
     PersonTracker::Settings s;
@@ -63,22 +65,55 @@ void PersonDepthStage::assignSlots() {
     depths_.slots.create(alpha_.size(), CV_8UC1);
     depths_.slots.setTo(0);
     depths_.people = 0;
-    const cv::Mat& labels = tracker_.labels();
+    // The people standing in each blob: one, or several walking merged.
+    struct Member {
+        float footX, halfWidth, metres;
+        std::uint8_t slot;
+    };
+    std::map<int, std::vector<Member>> members;  // by label
+    std::map<int, cv::Rect> boxes;
     for (const TrackedPerson& p : tracker_.people()) {
         if (p.label == 0 || depths_.people == PersonDepths::kMaxPeople) continue;
         const int slot = ++depths_.people;
         const auto d = lastDepth_.find(p.id);
         depths_.metres[static_cast<std::size_t>(slot)] = d != lastDepth_.end() ? d->second : plane_;
-        for (int y = p.box.y; y < p.box.br().y; ++y) {
-            const int* in = labels.ptr<int>(y);
-            std::uint8_t* out = depths_.slots.ptr<std::uint8_t>(y);
-            for (int x = p.box.x; x < p.box.br().x; ++x)
-                if (in[x] == p.label) out[x] = static_cast<std::uint8_t>(slot);
+        members[p.label].push_back({p.merged ? p.predictedFoot().x : p.foot.x, 0.5f * static_cast<float>(p.width),
+                                    depths_.metres[static_cast<std::size_t>(slot)], static_cast<std::uint8_t>(slot)});
+        if (!p.merged) boxes[p.label] = p.box;
+    }
+    const cv::Mat& labels = tracker_.labels();
+    for (auto& [label, people] : members) {
+        const auto box = boxes.find(label);
+        if (box == boxes.end()) continue;  // a merged track always shares a seen one's blob; no pixels otherwise
+        // A merged blob's pixel goes to the nearest person standing over its
+        // column (their own width about their feet), as the nearer person
+        // hides the farther; a pixel over nobody's column goes to the person
+        // whose feet are nearest across.
+        std::sort(people.begin(), people.end(), [](const Member& a, const Member& b) { return a.metres < b.metres; });
+        for (int x = box->second.x; x < box->second.br().x; ++x) {
+            const float column = static_cast<float>(x);
+            const Member* owner = nullptr;
+            for (const Member& m : people)
+                if (std::abs(m.footX - column) <= m.halfWidth) {
+                    owner = &m;
+                    break;
+                }
+            if (!owner) {
+                owner = &people.front();
+                for (const Member& m : people)
+                    if (std::abs(m.footX - column) < std::abs(owner->footX - column)) owner = &m;
+            }
+            for (int y = box->second.y; y < box->second.br().y; ++y)
+                if (labels.at<int>(y, x) == label) depths_.slots.at<std::uint8_t>(y, x) = owner->slot;
         }
     }
     // Tracking takes alpha above half; the matte's soft edge around a blob
-    // belongs to the same person, not to the plane.
-    if (depths_.people > 0) cv::dilate(depths_.slots, depths_.slots, cv::getStructuringElement(cv::MORPH_RECT, {9, 9}));
+    // belongs to the same person, not to the plane (at 2 px, streaks of a
+    // walker's edge still showed over the CG in front of them).
+    if (depths_.people > 0) {
+        const int reach = std::max(1, (kSoftEdgePx + scale_ - 1) / scale_);  // in tracking pixels
+        cv::dilate(depths_.slots, depths_.slots, cv::getStructuringElement(cv::MORPH_RECT, {2 * reach + 1, 2 * reach + 1}));
+    }
 }
 
 } // namespace arcomp

@@ -12,8 +12,10 @@
 // A person whose feet are out of the picture, or whose foot ray misses the
 // floor, keeps the last depth measured for their track; a track that never
 // had one, and a matte blob too small to track, stands on the plane.
-// Tracking runs on the matte at most 960 pixels wide (1080p at half size):
-// a foot point to two pixels is plenty, and the cost quarters.
+// Tracking runs on the matte at most 480 pixels wide (768x576 at half size,
+// 1080p at a quarter): a foot point to a few pixels is plenty (at 10 m,
+// 4 px of a 1080p picture are a few centimetres), and the cost falls with
+// the square of the scale.
 
 #include "graph/camera/CalibratedCamera.hpp"
 #include "runtime/PersonDepths.hpp"

@@ -2,7 +2,7 @@
 // Contact shadows on the video (a "shadow catcher"): the CG's objects
 // darken the real floor where they keep the light from it, so that they
 // stand on the place rather than float over it. Each object is flattened
-// onto the floor (y = 0) along the light into a half-size coverage mask;
+// onto the floor (y = 0) along the light into a quarter-size coverage mask;
 // the video is then multiplied by 1 - strength x the mask, blurred a few
 // pixels, and only inside the shadows' rectangle on screen (llvmpipe pays
 // about 10 ms for a full-screen pass at 1080p).
@@ -38,6 +38,8 @@ public:
               const RenderTarget& output);
     // Pixels of the output the last cast() darkened at most (its rectangle).
     std::size_t pixelsCovered() const { return pixels_; }
+    // Times the mask was drawn; it is kept while the objects and the view stay.
+    std::size_t masksDrawn() const { return masksDrawn_; }
 
 private:
     struct ApplyProgram {
@@ -46,7 +48,18 @@ private:
         GLint mask, texel, outputSize, strength;  // uniform locations
     };
 
+    // What the mask was drawn from.
+    struct MaskKey {
+        std::uint32_t geometry, material, firstIndex, indexCount;
+        float fade;  // a fading item covers less
+        glm::mat4 model;
+        bool operator==(const MaskKey&) const = default;
+    };
+
     RenderTarget mask_;
+    std::vector<MaskKey> maskKey_;
+    glm::mat4 maskViewProjection_{0.0f};
+    std::size_t masksDrawn_ = 0;
     DrawList flattened_;
     std::vector<glm::mat4> models_;
     GlVertexArray emptyVao_;

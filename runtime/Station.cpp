@@ -40,7 +40,8 @@ void Station::preflight(const StationConfig& cfg) {
 
 Station::Station(const StationConfig& cfg, StationInput input)
     : cfg_(cfg), capture_(std::move(input)), matte_(cfg_.compositing.matte),
-      personDepths_(cfg_.camera.calibrated, cfg_.compositing.compositor.personPlaneMetres, capture_.size()),
+      personDepths_(cfg_.compositing.compositor.personDepthFromFeet ? cfg_.camera.calibrated : std::nullopt,
+                    cfg_.compositing.compositor.personPlaneMetres, capture_.size()),
       outputs_(cfg_.compositing.output, capture_.fps(), capture_.size()) {
     const std::filesystem::path cache = bakeCacheFolder(cfg_.compositing.compositor);
     lodBake_ = buildScene(cfg_, world_, warnings_, cache);

@@ -27,6 +27,7 @@ std::unique_ptr<PersonMatte> makeMatte(const MatteSpec& spec) {
     case MatteKind::Background:
         if (spec.background.method == BackgroundMethod::Consensus) return std::make_unique<ConsensusMatte>(spec.background);
         return std::make_unique<BackgroundMatte>(spec.background);
+    case MatteKind::Masks: return std::make_unique<MaskFolderMatte>(spec.masks);
     }
     return std::make_unique<NoMatte>();
 }

@@ -8,6 +8,7 @@
 // MatteKind::None gives a matte with alpha 0 everywhere: no person layer,
 // the video is only the backdrop (plain AR overlay).
 
+#include "video/MaskFolderMatte.hpp"
 #include "video/PersonMatte.hpp"
 
 #include <opencv2/core/types.hpp>
@@ -17,7 +18,7 @@
 
 namespace arcomp {
 
-enum class MatteKind { None, Chroma, Background };
+enum class MatteKind { None, Chroma, Background, Masks };
 
 // Keying on the distance in the CbCr plane from the key colour.
 struct ChromaKeySpec {
@@ -70,6 +71,7 @@ struct MatteSpec {
     MatteKind kind = MatteKind::None;
     ChromaKeySpec chroma;
     BackgroundSpec background;
+    MaskFolderSpec masks;
 };
 
 // Throws VideoError when the spec cannot be built (a clean plate that cannot

@@ -55,6 +55,7 @@ const std::vector<TrackedPerson>& PersonTracker::update(const cv::Mat& alpha) {
     std::vector<Blob> blobs = findBlobs(alpha);
     for (TrackedPerson& p : people_) {
         p.label = 0;
+        p.merged = false;
         ++p.missed;
     }
     // Greedy matching, closest pair first, of each track's predicted foot point to the blobs'.
@@ -64,7 +65,7 @@ const std::vector<TrackedPerson>& PersonTracker::update(const cv::Mat& alpha) {
     };
     std::vector<Pair> pairs;
     for (std::size_t p = 0; p < people_.size(); ++p) {
-        const cv::Point2f predicted = people_[p].foot + people_[p].footVelocity * static_cast<float>(people_[p].missed);
+        const cv::Point2f predicted = people_[p].predictedFoot();
         for (std::size_t b = 0; b < blobs.size(); ++b) {
             const float d = static_cast<float>(cv::norm(blobs[b].foot - predicted));
             if (d <= settings_.maxStepPx * static_cast<float>(people_[p].missed)) pairs.push_back({d, p, b});
@@ -81,7 +82,7 @@ const std::vector<TrackedPerson>& PersonTracker::update(const cv::Mat& alpha) {
         // A blob whose feet are cut off by the frame's edge says nothing about where the feet are.
         if (b.feetVisible) {
             const float k = settings_.smoothing;
-            const cv::Point2f predicted = p.foot + p.footVelocity * static_cast<float>(p.missed);
+            const cv::Point2f predicted = p.predictedFoot();
             p.foot = predicted + k * (b.foot - predicted);
             p.footVelocity = (1.0f - k) * p.footVelocity + k * (p.foot - previous) / static_cast<float>(p.missed);
         }
@@ -91,8 +92,30 @@ const std::vector<TrackedPerson>& PersonTracker::update(const cv::Mat& alpha) {
         p.missed = 0;
     }
     std::erase_if(people_, [this](const TrackedPerson& p) { return p.missed > settings_.keepMissedFrames; });
+    // A missed track heading into a seen person's blob (its feet within the
+    // blob's bounds, or just below them) walks merged with that person.
+    for (TrackedPerson& p : people_) {
+        if (p.missed == 0) continue;
+        const cv::Point2f feet = p.predictedFoot();
+        for (const TrackedPerson& q : people_) {
+            if (q.missed != 0) continue;
+            const int below = q.box.height / 10;
+            if (cv::Rect(q.box.x, q.box.y, q.box.width, q.box.height + below).contains(cv::Point(feet))) {
+                p.label = q.label;
+                p.merged = true;
+                break;
+            }
+        }
+    }
+    for (TrackedPerson& p : people_) {
+        if (p.missed != 0) continue;
+        const bool alone = std::none_of(people_.begin(), people_.end(),
+                                        [&p](const TrackedPerson& q) { return q.merged && q.label == p.label; });
+        if (alone || p.width == 0) p.width = p.box.width;
+    }
     for (std::size_t b = 0; b < blobs.size(); ++b)
-        if (!blobTaken[b]) people_.push_back({nextId_++, blobs[b].box, blobs[b].foot, {0.0f, 0.0f}, blobs[b].feetVisible, 0, blobs[b].label});
+        if (!blobTaken[b]) people_.push_back({nextId_++, blobs[b].box, blobs[b].foot, {0.0f, 0.0f}, blobs[b].feetVisible, 0,
+                                             blobs[b].label, false, blobs[b].box.width});
     // Labels that no track took (none, after the loop above) and small blobs read as background.
     std::vector<int> keep(static_cast<std::size_t>(stats_.rows), 0);
     for (const TrackedPerson& p : people_)

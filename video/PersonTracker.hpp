@@ -12,8 +12,9 @@
 //
 // Two people who touch become one blob: it continues the track whose
 // predicted foot point is nearest, and the other track waits, unmatched,
-// for up to `keepMissedFrames`. When they part, the waiting track takes the
-// blob that appears near where it was heading, or a new id starts.
+// for up to `keepMissedFrames`, marked `merged` with the blob's label while
+// it is heading through that blob. When they part, the waiting track takes
+// the blob that appears near where it was heading, or a new id starts.
 
 #include <opencv2/core.hpp>
 
@@ -28,7 +29,14 @@ struct TrackedPerson {
     cv::Point2f footVelocity;  // pixels a frame
     bool feetVisible = false;  // false when the blob reaches the bottom edge: the feet are out of the picture
     int missed = 0;            // frames since a blob last matched; 0 when seen this frame
-    int label = 0;             // this frame's blob in labels(); 0 while missed
+    int label = 0;             // this frame's blob in labels(); 0 while missed, unless merged
+    // Missed, but where it was heading lies inside a seen person's blob: the
+    // two walk as one blob, and `label` is that blob's. Its foot point is
+    // the prediction, foot + footVelocity * missed.
+    bool merged = false;
+    int width = 0;  // the blob's width, pixels, when last seen alone (not merged with anyone)
+
+    cv::Point2f predictedFoot() const { return foot + footVelocity * static_cast<float>(missed); }
 };
 
 class PersonTracker {

@@ -154,3 +154,38 @@ matte:
     EXPECT_NE(issues.find("matte.background.shadow_darkest"), std::string::npos) << issues;
     EXPECT_NE(issues.find("matte.background.absorb_s"), std::string::npos) << issues;
 }
+
+TEST(CompositingConfig, masksPersonDepthAndShadowAreReadWithTheirDefaults) {
+    TempDir dir;
+    std::filesystem::create_directories(dir.path() / "masks");
+    const StationConfig plain = loadStationConfig(dir.write("plain.yaml", kScene));
+    EXPECT_TRUE(plain.compositing.compositor.personDepthFromFeet);
+    EXPECT_FALSE(plain.compositing.compositor.shadow.enabled.has_value());  // decided by the camera
+    const StationConfig cfg = loadStationConfig(dir.write("s.yaml", std::string(kScene) + R"(matte:
+  kind: masks
+  masks: {folder: masks}
+compositor:
+  person_depth: plane
+  shadow: {enabled: true, light: [0, 2, 0], strength: 0.3}
+)"));
+    EXPECT_EQ(cfg.compositing.matte.kind, MatteKind::Masks);
+    EXPECT_EQ(cfg.compositing.matte.masks.folder, dir.path() / "masks");
+    EXPECT_FALSE(cfg.compositing.compositor.personDepthFromFeet);
+    EXPECT_EQ(cfg.compositing.compositor.shadow.enabled, std::optional<bool>(true));
+    EXPECT_FLOAT_EQ(cfg.compositing.compositor.shadow.light.y, 1.0f);  // made unit length
+    EXPECT_FLOAT_EQ(cfg.compositing.compositor.shadow.strength, 0.3f);
+}
+
+TEST(CompositingConfig, aMasksFolderThatIsNotThereAndALightBelowTheFloorAreRefused) {
+    TempDir dir;
+    const std::string issues = issuesOf(dir.write("s.yaml", std::string(kScene) + R"(matte:
+  kind: masks
+  masks: {folder: nowhere}
+compositor:
+  shadow: {light: [1, 0.05, 0]}
+)"));
+    EXPECT_NE(issues.find("matte.masks.folder"), std::string::npos) << issues;
+    EXPECT_NE(issues.find("compositor.shadow.light"), std::string::npos) << issues;
+    const std::string noFolder = issuesOf(dir.write("t.yaml", std::string(kScene) + "matte:\n  kind: masks\n"));
+    EXPECT_NE(noFolder.find("matte.masks"), std::string::npos) << noFolder;
+}

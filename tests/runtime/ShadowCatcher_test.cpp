@@ -105,4 +105,42 @@ TEST(ShadowCatcher, aLightOnTheOtherSideMovesTheShadowThereAndNoStrengthLeavesTh
     EXPECT_EQ(cv::countNonZero(none.grey != 200), 0);
 }
 
+// A static installation draws its shadow mask once; an object that moves
+// draws it again, and its shadow moves with it.
+TEST(ShadowCatcher, theMaskIsDrawnAgainOnlyWhenAnObjectMoves) {
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    const glm::ivec2 size{160, 120};
+    World world;
+    Scene& scene = world.scene;
+    const auto white = scene.addMaterial({.name = "white", .baseColor = {1, 1, 1, 1}});
+    const NodeId cube = scene.addTransform(scene.root(), glm::translate(glm::mat4(1), {0.0f, 0.5f, 0.0f}));
+    scene.addMesh(cube, {scene.addGeometry(makeBox({1.0f, 1.0f, 1.0f})), white});
+    scene.update();
+    const View view = View::lookAt({0, 6, 6}, {0, 0, 0}, {0, 1, 0}, 50, size);
+    Compositor compositor(size);
+    Renderer renderer;
+    ShadowCatcher shadows(size);
+    const ShadowConfig light{.enabled = true, .light = glm::normalize(glm::vec3(1, 1, 0)), .strength = 0.5f};
+    auto cast = [&] {
+        DrawList list;
+        select(world, view, {}, list);
+        compositor.begin(cv::Mat(size.y, size.x, CV_8UC3, cv::Scalar(200, 200, 200)), {});
+        shadows.cast(scene, list, view, light, renderer, compositor.output());
+        const Image img = compositor.output().read();
+        double darkX = 0, dark = 0;
+        for (int y = 0; y < size.y; ++y)
+            for (int x = 0; x < size.x; ++x)
+                if (img.rgba[(static_cast<std::size_t>(y) * size.x + x) * 4 + 1] < 199) darkX += x, ++dark;
+        return darkX / std::max(dark, 1.0);
+    };
+    const double first = cast(), again = cast();
+    EXPECT_EQ(shadows.masksDrawn(), 1u);
+    EXPECT_DOUBLE_EQ(first, again);
+    scene.setLocal(cube, glm::translate(glm::mat4(1), {1.0f, 0.5f, 0.0f}));
+    scene.update();
+    const double moved = cast();
+    EXPECT_EQ(shadows.masksDrawn(), 2u);
+    EXPECT_GT(moved, first + 5.0);  // a metre to the right is about 14 pixels here
+}
+
 } // namespace

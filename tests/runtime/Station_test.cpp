@@ -107,7 +107,6 @@ TEST(Station, vtestWalkersAreCutOnlyByObjectsNearerThanThemselves) {
     Station station(cfg, StationInput::fromReplay(std::make_unique<FileSource>(FileOptions{.path = kVtest}), 10.0));
     FileSource reference(FileOptions{.path = kVtest});
     const View view = station.view();
-    ASSERT_EQ(station.personDepths().slotScale, 1);
 
     const cv::Mat cg = bgrOf(renderObjects(cfg, {0, 1, 2, 3}, view, cfg.render.shading));
     const cv::Mat k = cv::getStructuringElement(cv::MORPH_RECT, {3, 3});
@@ -149,9 +148,14 @@ TEST(Station, vtestWalkersAreCutOnlyByObjectsNearerThanThemselves) {
         shadowed += static_cast<std::size_t>(cv::countNonZero(brighterThan(video, out) & background & ~anyObject));
 
         // Inside an object's silhouette, each tracked walker by their own depth.
+        cv::Mat slots;  // at the frame's size: pixel (x, y) is slot (x, y) / slotScale
+        if (depths.people > 0) {
+            cv::resize(depths.slots, slots, {}, depths.slotScale, depths.slotScale, cv::INTER_NEAREST);
+            slots = slots(cv::Rect(0, 0, person.cols, person.rows));
+        }
         for (int slot = 1; slot <= depths.people; ++slot) {
             const float metres = depths.metres[static_cast<std::size_t>(slot)];
-            const cv::Mat walker = person & (depths.slots == slot);
+            const cv::Mat walker = person & (slots == slot);
             for (std::size_t i = 0; i < objects.size(); ++i) {
                 const cv::Mat overlap = walker & objects[i].inner;
                 if (cv::countNonZero(overlap) < 30) continue;

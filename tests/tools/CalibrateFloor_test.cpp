@@ -5,7 +5,7 @@
 #include "../support/TempDir.hpp"
 #include "runtime/CameraFile.hpp"
 #include "tests/support/Shell.hpp"
-#include "tests/support/SyntheticCamera.hpp"
+#include "tools/bench/SyntheticCamera.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -49,11 +49,11 @@ test::ShellResult calibrate(const std::string& args) { return test::arcompComman
 constexpr double kHeight = 3.0, kTilt = 40.0, kX = 0.4;
 const double kZ = kHeight / std::tan(kTilt * CV_PI / 180.0);
 
-cv::Mat floorPhoto(const std::vector<test::FloorMarkerSpec>& markers, double size = 0.5) {
+cv::Mat floorPhoto(const std::vector<FloorMarkerSpec>& markers, double size = 0.5) {
     const double f = 0.5 * 480 / std::tan(25.0 * CV_PI / 180.0);
-    const test::SyntheticCamera camera({.size = {640, 480}, .fx = f, .fy = f, .cx = 319.5, .cy = 239.5, .distortion = {}});
-    const cv::Mat floor = test::floorWithMarkers(cv::aruco::getPredefinedDictionary(cv::aruco::DICT_4X4_50), markers, size, 3.0, 400);
-    return camera.photograph(floor, 1.0 / 400, {-1.5, -1.5}, test::floorToCamera(kX, kHeight, kZ, kTilt));
+    const SyntheticCamera camera({.size = {640, 480}, .fx = f, .fy = f, .cx = 319.5, .cy = 239.5, .distortion = {}});
+    const cv::Mat floor = floorWithMarkers(cv::aruco::getPredefinedDictionary(cv::aruco::DICT_4X4_50), markers, size, 3.0, 400);
+    return camera.photograph(floor, 1.0 / 400, {-1.5, -1.5}, floorToCamera(kX, kHeight, kZ, kTilt));
 }
 
 } // namespace

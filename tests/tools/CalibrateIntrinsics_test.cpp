@@ -6,7 +6,7 @@
 #include "../support/TempDir.hpp"
 #include "runtime/CameraFile.hpp"
 #include "tests/support/Shell.hpp"
-#include "tests/support/SyntheticCamera.hpp"
+#include "tools/bench/SyntheticCamera.hpp"
 
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
@@ -21,10 +21,10 @@ namespace {
 
 // The lens the photos are taken with: pixels a little taller than wide,
 // the principal point off centre, barrel distortion.
-const test::SyntheticLens kLens{.size = {640, 480}, .fx = 610, .fy = 600, .cx = 326, .cy = 234, .distortion = {-0.08}};
+const SyntheticLens kLens{.size = {640, 480}, .fx = 610, .fy = 600, .cx = 326, .cy = 234, .distortion = {-0.08}};
 
-const test::SyntheticCamera& camera() {
-    static const test::SyntheticCamera c(kLens);
+const SyntheticCamera& camera() {
+    static const SyntheticCamera c(kLens);
     return c;
 }
 
@@ -74,7 +74,7 @@ cv::Ptr<cv::aruco::CharucoBoard> charucoBoard() {
 // The first `count` views of the chessboard as view00.png, view01.png, ...
 void writeChessboardPhotos(const std::filesystem::path& folder, int count, double farther = 1.0) {
     std::filesystem::create_directories(folder);
-    const cv::Mat board = test::chessboardTexture(kCols, kRows, kTexels);
+    const cv::Mat board = chessboardTexture(kCols, kRows, kTexels);
     for (int i = 0; i < count; ++i) {
         char name[32];
         std::snprintf(name, sizeof name, "view%02d.png", i);
@@ -125,7 +125,7 @@ TEST(CalibrateIntrinsics, charucoVideoGivesBackTheLensFromEvenlySpreadFrames) {
         // Each view twice in a row: 24 frames, of which --max-views 12 searches every other one.
         cv::VideoWriter writer(video.string(), cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 10.0, kLens.size);
         ASSERT_TRUE(writer.isOpened());
-        const cv::Mat board = test::charucoTexture(charucoBoard(), kTexels);
+        const cv::Mat board = charucoTexture(charucoBoard(), kTexels);
         for (const BoardPose& pose : kPoses) {
             const cv::Mat frame = photo(board, pose);
             writer.write(frame);
@@ -155,11 +155,11 @@ TEST(CalibrateIntrinsics, theLensFileIsWhatCalibrateFloorTakesAsItsIntrinsics) {
 
     // 2.5 m up at the floor's origin's x, 45 degrees down; a 0.5 m marker at the origin.
     const double height = 2.5, tilt = 45.0, z = height / std::tan(tilt * CV_PI / 180.0);
-    const cv::Mat floor = test::floorWithMarkers(cv::aruco::getPredefinedDictionary(cv::aruco::DICT_4X4_50), {{5, 0.0, 0.0}}, 0.5,
+    const cv::Mat floor = floorWithMarkers(cv::aruco::getPredefinedDictionary(cv::aruco::DICT_4X4_50), {{5, 0.0, 0.0}}, 0.5,
                                                  3.0, 400);
     const auto plate = dir.path() / "plate.png";
     ASSERT_TRUE(cv::imwrite(plate.string(), camera().photograph(floor, 1.0 / 400, {-1.5, -1.5},
-                                                                test::floorToCamera(0.0, height, z, tilt))));
+                                                                floorToCamera(0.0, height, z, tilt))));
     const auto out = dir.path() / "camera.yaml";
     const auto f = test::arcompCommand("calibrate floor " + plate.string() + " --intrinsics " + lens.string() +
                                        " --marker 5 --marker-size 0.5 --out " + out.string());

@@ -45,6 +45,17 @@ TEST(PersonTracker, twoWalkersWhoCrossKeepTheirIds) {
         int seen = 0;
         for (const TrackedPerson& p : people) seen += p.missed == 0;
         merged += seen == 1;
+        // The one hidden in the merged blob shares its label.
+        if (seen == 1 && people.size() == 2u) {
+            const TrackedPerson& hidden = people[0].missed ? people[0] : people[1];
+            const TrackedPerson& shown = people[0].missed ? people[1] : people[0];
+            EXPECT_TRUE(hidden.merged) << "frame " << frame;
+            EXPECT_EQ(hidden.label, shown.label) << "frame " << frame;
+        }
+        for (const TrackedPerson& p : people)
+            if (p.missed == 0) {
+                EXPECT_FALSE(p.merged);
+            }
         if (frame == 5) {
             ASSERT_EQ(people.size(), 2u);
             for (const TrackedPerson& p : people) firstX[p.id] = p.foot.x;

@@ -1,7 +1,7 @@
 #pragma once
 // Photographs of flat targets (a chessboard, a ChArUco board, a marker on
-// the floor) through a known camera, for the calibrate commands' tests: the
-// calibration has to give back the camera that took them.
+// the floor) through a known camera, for the calibrate commands' tests and
+// `bench ar`: the calibration has to give back the camera that took them.
 //
 //   SyntheticCamera camera({.size = {640, 480}, .fx = 600, .fy = 590, .cx = 322, .cy = 236, .distortion = {-0.08}});
 //   const cv::Mat board = chessboardTexture(9, 6, 40);            // 40 texels a square, one square of white margin
@@ -25,7 +25,7 @@
 #include <cmath>
 #include <vector>
 
-namespace arcomp::test {
+namespace arcomp {
 
 struct SyntheticLens {
     cv::Size size{640, 480};
@@ -79,6 +79,27 @@ public:
         return photo;
     }
 
+    // What this lens makes of a picture taken by the ideal pinhole camera
+    // with the same fx, fy, cx, cy (a rendering): each pixel moved where the
+    // distortion puts it, antialiased like photograph().
+    cv::Mat throughLens(const cv::Mat& pinhole) const {
+        CV_Assert(pinhole.size() == lens_.size);
+        if (pinholeX_.empty()) {
+            pinholeX_.create(rays_.size(), CV_32F);
+            pinholeY_.create(rays_.size(), CV_32F);
+            for (int y = 0; y < rays_.rows; ++y)
+                for (int x = 0; x < rays_.cols; ++x) {
+                    const cv::Point2d r = rays_.at<cv::Point2d>(y, x);
+                    pinholeX_.at<float>(y, x) = static_cast<float>(lens_.fx * r.x + lens_.cx);
+                    pinholeY_.at<float>(y, x) = static_cast<float>(lens_.fy * r.y + lens_.cy);
+                }
+        }
+        cv::Mat big, photo;
+        cv::remap(pinhole, big, pinholeX_, pinholeY_, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+        cv::resize(big, photo, lens_.size, 0, 0, cv::INTER_AREA);
+        return photo;
+    }
+
     const SyntheticLens& lens() const { return lens_; }
 
 private:
@@ -87,6 +108,7 @@ private:
     static cv::Point2d centre(int x, int y) { return {(x + 0.5) / kSuper - 0.5, (y + 0.5) / kSuper - 0.5}; }
     SyntheticLens lens_;
     cv::Mat rays_;
+    mutable cv::Mat pinholeX_, pinholeY_;  // throughLens()'s maps, made at its first call
 };
 
 // A target's plane placed by OpenCV's rvec, tvec (plane frame to camera).
@@ -154,4 +176,4 @@ inline cv::Mat floorWithMarkers(const cv::Ptr<cv::aruco::Dictionary>& dictionary
     return floor;
 }
 
-} // namespace arcomp::test
+} // namespace arcomp
