@@ -45,17 +45,28 @@ void PersonDepthStage::run(const cv::Mat& person, bool newFrame) {
     const std::vector<TrackedPerson>& people = tracker_.update(alpha_);
 
     std::unordered_map<int, float> kept;
+    standing_.clear();
     for (const TrackedPerson& p : people) {
+        // The tracking pixel's centre in frame pixels.
+        const float offset = 0.5f * static_cast<float>(scale_ - 1);
+        const glm::vec2 foot(p.foot.x * static_cast<float>(scale_) + offset, p.foot.y * static_cast<float>(scale_) + offset);
+        bool measured = false;
         if (p.missed == 0 && p.feetVisible) {
-            // The tracking pixel's centre in frame pixels.
-            const float offset = 0.5f * static_cast<float>(scale_ - 1);
-            const glm::dvec2 foot(p.foot.x * static_cast<float>(scale_) + offset, p.foot.y * static_cast<float>(scale_) + offset);
-            if (const std::optional<glm::dvec3> floor = camera_->floorPointAt(foot)) {
+            if (const std::optional<glm::dvec3> floor = camera_->floorPointAt(glm::dvec2(foot))) {
                 const double depth = camera_->depthOf(*floor);
                 if (depth > 0.0) lastDepth_[p.id] = static_cast<float>(depth);
+                measured = depth > 0.0;
             }
         }
-        if (const auto d = lastDepth_.find(p.id); d != lastDepth_.end()) kept.insert(*d);
+        const auto d = lastDepth_.find(p.id);
+        if (d != lastDepth_.end()) kept.insert(*d);
+        if (p.missed == 0)
+            standing_.push_back({.id = p.id,
+                                 .foot = foot,
+                                 .metres = d != lastDepth_.end() ? d->second : plane_,
+                                 .depth = measured                 ? StandingPerson::Depth::Measured
+                                          : d != lastDepth_.end() ? StandingPerson::Depth::Kept
+                                                                  : StandingPerson::Depth::Plane});
     }
     lastDepth_ = std::move(kept);  // tracks that ended forget their depth
     assignSlots();

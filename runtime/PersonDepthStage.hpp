@@ -16,6 +16,8 @@
 // 1080p at a quarter): a foot point to a few pixels is plenty (at 10 m,
 // 4 px of a 1080p picture are a few centimetres), and the cost falls with
 // the square of the scale.
+// standing() says, per person seen this frame, where their feet are and
+// which distance they got, so that an overlay can show it on the video.
 
 #include "graph/camera/CalibratedCamera.hpp"
 #include "runtime/PersonDepths.hpp"
@@ -25,8 +27,18 @@
 
 #include <optional>
 #include <unordered_map>
+#include <vector>
 
 namespace arcomp {
+
+// A tracked person seen this frame and the distance they are drawn at.
+struct StandingPerson {
+    enum class Depth { Measured, Kept, Plane };  // from this frame's feet, an earlier frame's, or the person plane
+    int id = 0;
+    glm::vec2 foot{0.0f};  // frame pixels
+    float metres = 0.0f;
+    Depth depth = Depth::Plane;
+};
 
 class PersonDepthStage {
 public:
@@ -39,6 +51,8 @@ public:
     // The tracks behind the depths, in tracking pixels (frame pixels / scale()).
     const std::vector<TrackedPerson>& people() const { return tracker_.people(); }
     int scale() const { return scale_; }
+    // The tracks seen this frame (in the tracker's order), in frame pixels.
+    const std::vector<StandingPerson>& standing() const { return standing_; }
 
 private:
     void assignSlots();
@@ -50,6 +64,7 @@ private:
     cv::Mat alpha_;
     std::unordered_map<int, float> lastDepth_;  // by track id
     PersonDepths depths_;
+    std::vector<StandingPerson> standing_;
 };
 
 } // namespace arcomp

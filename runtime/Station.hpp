@@ -103,6 +103,7 @@ public:
     const cv::Mat& personLayer() const { return matte_.person(); }
     // Where the last frame's people stood (all on the person plane without a calibrated camera).
     const PersonDepths& personDepths() const { return personDepths_.depths(); }
+    const std::vector<StandingPerson>& standingPeople() const { return personDepths_.standing(); }
     // Overrides the camera (tests move it along a path); keeps the intrinsics.
     void setCamera(const glm::vec3& eye, const glm::vec3& target);
     std::size_t silhouetteTrianglesTotal() const { return world_.holdouts.triangles(); }

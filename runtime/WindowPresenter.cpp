@@ -33,15 +33,39 @@ void main() { fragColor = texture(uImage, vUv); }
 WindowPresenter::OverlayProgram::OverlayProgram()
     : program(kOverlayShader), image(program.requiredLocation("uImage")), rect(program.requiredLocation("uRect")) {}
 
-WindowPresenter::WindowPresenter() : vao_(GlVertexArray::generate()), overlayTexture_(GlTexture::generate()) {
-    glBindTexture(GL_TEXTURE_2D, overlayTexture_.get());
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+WindowPresenter::OverlayTexture::OverlayTexture(GLint filter) : texture(GlTexture::generate()) {
+    glBindTexture(GL_TEXTURE_2D, texture.get());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
-void WindowPresenter::present(const RenderTarget& frame, glm::ivec2 windowSize, const cv::Mat* overlay) {
+void WindowPresenter::OverlayTexture::upload(const cv::Mat& rgba) {
+    CV_Assert(rgba.type() == CV_8UC4 && rgba.isContinuous());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glBindTexture(GL_TEXTURE_2D, texture.get());
+    const glm::ivec2 imageSize(rgba.cols, rgba.rows);
+    if (imageSize != size) {
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, imageSize.x, imageSize.y, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data);
+        size = imageSize;
+    } else {
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, imageSize.x, imageSize.y, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data);
+    }
+}
+
+// The panel is shown pixel for pixel (nearest); the frame overlay is scaled
+// with the frame, where linear filtering keeps its thin lines whole.
+WindowPresenter::WindowPresenter() : vao_(GlVertexArray::generate()), overlay_(GL_NEAREST), frameOverlay_(GL_LINEAR) {}
+
+void WindowPresenter::drawOverlay(const OverlayTexture& overlay, glm::vec2 origin, glm::vec2 size, glm::ivec2 windowSize) {
+    glBindTexture(GL_TEXTURE_2D, overlay.texture.get());
+    const glm::vec2 ndcOrigin = 2.0f * origin / glm::vec2(windowSize) - 1.0f, ndcSize = 2.0f * size / glm::vec2(windowSize);
+    glUniform4f(program_.rect, ndcOrigin.x, ndcOrigin.y, ndcSize.x, ndcSize.y);
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+}
+
+void WindowPresenter::present(const RenderTarget& frame, glm::ivec2 windowSize, const cv::Mat* overlay, const cv::Mat* frameOverlay) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, windowSize.x, windowSize.y);
     glDisable(GL_SCISSOR_TEST);
@@ -59,16 +83,8 @@ void WindowPresenter::present(const RenderTarget& frame, glm::ivec2 windowSize, 
     glBlitFramebuffer(0, 0, size.x, size.y, origin.x, origin.y, origin.x + shown.x, origin.y + shown.y, GL_COLOR_BUFFER_BIT, GL_LINEAR);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
-    if (!overlay || overlay->empty()) return;
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glBindTexture(GL_TEXTURE_2D, overlayTexture_.get());
-    const glm::ivec2 overlaySize(overlay->cols, overlay->rows);
-    if (overlaySize != overlaySize_) {
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, overlaySize.x, overlaySize.y, 0, GL_RGBA, GL_UNSIGNED_BYTE, overlay->data);
-        overlaySize_ = overlaySize;
-    } else {
-        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, overlaySize.x, overlaySize.y, GL_RGBA, GL_UNSIGNED_BYTE, overlay->data);
-    }
+    const bool withPanel = overlay && !overlay->empty(), withFrameOverlay = frameOverlay && !frameOverlay->empty();
+    if (!withPanel && !withFrameOverlay) return;
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
     glEnable(GL_BLEND);
@@ -76,11 +92,17 @@ void WindowPresenter::present(const RenderTarget& frame, glm::ivec2 windowSize, 
     program_.program.use();
     glActiveTexture(GL_TEXTURE0);
     glUniform1i(program_.image, 0);
-    const glm::vec2 ndc = 2.0f * glm::vec2(overlaySize) / glm::vec2(windowSize);
-    const float margin = 2.0f * 8.0f / static_cast<float>(windowSize.y);
-    glUniform4f(program_.rect, -1.0f + margin, 1.0f - margin - ndc.y, ndc.x, ndc.y);
     glBindVertexArray(vao_.get());
-    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    if (withFrameOverlay) {
+        frameOverlay_.upload(*frameOverlay);
+        drawOverlay(frameOverlay_, origin, shown, windowSize);
+    }
+    if (withPanel) {
+        overlay_.upload(*overlay);
+        const float margin = 8.0f;
+        const glm::vec2 panel(overlay_.size);
+        drawOverlay(overlay_, {margin, static_cast<float>(windowSize.y) - margin - panel.y}, panel, windowSize);
+    }
     glBindVertexArray(0);
     glDisable(GL_BLEND);
 }

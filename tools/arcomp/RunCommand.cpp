@@ -4,9 +4,12 @@
 // its fallback; a station whose camera never delivers runs on the test
 // pattern rather than leaving the kiosk dark.
 //
-// Keys: Tab toggles the stats overlay, F12 or P saves a screenshot, R
-// reloads the config (as SIGHUP does), Esc or Q quits.
+// Keys: Tab toggles the stats overlay (with a calibrated camera it also
+// draws the floor grid and each person's foot point, id and distance over
+// the video), F12 or P saves a screenshot, R reloads the config (as SIGHUP
+// does), Esc or Q quits.
 
+#include "runtime/CalibrationOverlay.hpp"
 #include "runtime/ShutdownSignals.hpp"
 #include "graph/core/JoinText.hpp"
 #include "runtime/StationLog.hpp"
@@ -82,6 +85,7 @@ int run(const RunOptions& o) {
     std::unique_ptr<StationRunner> runner = startStation(cfg);
     WindowPresenter presenter;
     StatsOverlay overlay;
+    CalibrationOverlay calibration;
 
     bool showOverlay = o.overlay, takeScreenshot = false;
     window->onKey([&](int key) {
@@ -109,8 +113,12 @@ int run(const RunOptions& o) {
         const FrameStats& stats = station.stats();
         overlay.add(stats, station.drawList(), {station.inputName(), station.inputState(), station.inputDrops()}, frameMs,
                     stats.budget ? runner->config().budget.targetMs : 1000.0 / 60.0);
+        // The config of the station running now: a reload may bring another camera file.
+        const std::optional<CalibratedCamera>& camera = runner->config().camera.calibrated;
+        if (showOverlay && camera) calibration.draw(*camera, station.size(), station.standingPeople());
         const glm::ivec2 size = window->framebufferSize();
-        presenter.present(station.compositedFrame(), size, showOverlay ? &overlay.image() : nullptr);
+        presenter.present(station.compositedFrame(), size, showOverlay ? &overlay.image() : nullptr,
+                          showOverlay && camera ? &calibration.image() : nullptr);
         const bool finalFrame = o.frames >= 0 && done == o.frames;
         if (takeScreenshot || (finalFrame && !o.screenshot.empty())) {
             const std::string file = finalFrame && !o.screenshot.empty() ? o.screenshot : "screenshot-" + std::to_string(done) + ".png";
@@ -140,7 +148,7 @@ const bool registered = registerCommand(
          line.flag("--windowed", o->windowed, "A window instead of full screen");
          line.option("--monitor", o->monitor, "Monitor index for full screen").showDefault();
          line.option("--size", o->size, "Window size WIDTHxHEIGHT when windowed").showDefault();
-         line.flag("--overlay", o->overlay, "Show the stats overlay from the start (Tab toggles it)");
+         line.flag("--overlay", o->overlay, "Show the stats overlay, and the floor grid with a calibrated camera, from the start (Tab toggles it)");
          line.option("--screenshot", o->screenshot, "With --frames: save the last frame shown to this PNG");
          line.option("--log-level", o->logLevel, "trace, debug, info, warn, error, critical or off (default: the config's)")
              .oneOf({"trace", "debug", "info", "warn", "error", "critical", "off"});
