@@ -1,6 +1,6 @@
 // Who stood where this frame, as the calibration overlay shows it: each
-// person's foot point in frame pixels (also when tracking runs at half
-// size), the distance their feet give, and whether that distance was
+// person's foot point in frame pixels (also when tracking runs at a
+// reduced size), the distance their feet give, and whether that distance was
 // measured now, kept from an earlier frame, or is the person plane's.
 
 #include "runtime/PersonDepthStage.hpp"
@@ -43,10 +43,11 @@ TEST(PersonDepthStage, aPersonSeenWithTheirFeetIsMeasuredAtTheirFootPixel) {
     ASSERT_EQ(stage.standing().size(), 1u);
     const StandingPerson& p = stage.standing()[0];
     EXPECT_GE(p.id, 1);
-    EXPECT_NEAR(p.foot.x, 300.0f, 0.5f);
-    EXPECT_NEAR(p.foot.y, 420.0f, 0.5f);
+    // Tracking runs at half size here: the foot is the centre of a 2x2 block, within a pixel.
+    EXPECT_NEAR(p.foot.x, 300.0f, 1.0f);
+    EXPECT_NEAR(p.foot.y, 420.0f, 1.0f);
     EXPECT_EQ(p.depth, StandingPerson::Depth::Measured);
-    EXPECT_NEAR(p.metres, depthAt(c, {300.0, 420.0}), 1e-3);
+    EXPECT_NEAR(p.metres, depthAt(c, glm::dvec2(p.foot)), 1e-3);
     EXPECT_FLOAT_EQ(stage.depths().metres[1], p.metres);  // the slot the compositor uses says the same
 }
 
@@ -69,15 +70,15 @@ TEST(PersonDepthStage, feetOutOfThePictureKeepTheLastDistanceAndAnUnmeasuredPers
     EXPECT_FLOAT_EQ(fresh.standing()[0].metres, 5.0f);
 }
 
-TEST(PersonDepthStage, footPointsAreInFramePixelsWhenTrackingRunsAtHalfSize) {
+TEST(PersonDepthStage, footPointsAreInFramePixelsWhenTrackingRunsAtAQuarterSize) {
     const CalibratedCamera c = camera({1920, 1080});
     PersonDepthStage stage(c, 5.0f, {1920, 1080});
-    ASSERT_EQ(stage.scale(), 2);
+    ASSERT_EQ(stage.scale(), 4);
     stage.run(matteWith({1920, 1080}, 960, 1040, 700, 900), true);
     ASSERT_EQ(stage.standing().size(), 1u);
-    // Tracking pixel (500, 450) covers frame pixels 1000..1001 and 900..901: its centre.
-    EXPECT_NEAR(stage.standing()[0].foot.x, 1000.5f, 1e-4f);
-    EXPECT_NEAR(stage.standing()[0].foot.y, 900.5f, 1e-4f);
+    // Tracking pixel (250, 225) covers frame pixels 1000..1003 and 900..903: its centre.
+    EXPECT_NEAR(stage.standing()[0].foot.x, 1001.5f, 1e-4f);
+    EXPECT_NEAR(stage.standing()[0].foot.y, 901.5f, 1e-4f);
 }
 
 TEST(PersonDepthStage, withoutACalibratedCameraNobodyIsTracked) {
