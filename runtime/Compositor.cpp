@@ -1,5 +1,6 @@
 #include "runtime/Compositor.hpp"
 
+#include <glm/gtc/type_ptr.hpp>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -28,25 +29,27 @@ uniform sampler2D uPerson;
 uniform highp usampler2D uSlots;
 uniform int uSlotScale;   // 0: no slot image, every pixel is slot 0
 uniform int uHeight;
-uniform float uDepth[PEOPLE];
+uniform vec3 uDepth[PEOPLE];   // window depth = x fragX + y fragY + z, per slot
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     ivec2 texel = ivec2(p.x, uHeight - 1 - p.y);
     int slot = uSlotScale > 0 ? int(texelFetch(uSlots, texel / uSlotScale, 0).r) : 0;
-    gl_FragDepth = uDepth[slot];
+    gl_FragDepth = clamp(dot(uDepth[slot], vec3(gl_FragCoord.xy, 1.0)), 0.0, 1.0);
     fragColor = texelFetch(uPerson, texel, 0).bgra;   // uploaded as BGRA bytes
 }
 #endif
 )";
 
-// Window depth of a point `metres` along the view axis, as the holdout's
-// rasterized depth has it (default depth range).
-float windowDepth(const glm::mat4& projection, float metres) {
-    const glm::vec4 clip = projection * glm::vec4(0.0f, 0.0f, -metres, 1.0f);
-    if (!(clip.w > 0.0f)) return 0.0f;  // at or behind the eye: in front of everything
-    return std::clamp(0.5f * clip.z / clip.w + 0.5f, 0.0f, 1.0f);
+// A card's window depth as a plane over the fragment's window position:
+// (x, y, z) with depth = x fragX + y fragY + z. The projection's depth is
+// linear in 1 / eye depth (-P22 + P32 / d in NDC), and the card's 1 / d
+// is linear in the video pixel (u, v) = (fragX - 1/2, height - fragY - 1/2).
+glm::vec3 windowDepthPlane(const glm::mat4& projection, const glm::vec3& inverseDepth, int height) {
+    const float half = 0.5f * projection[3][2];
+    const float a = inverseDepth.x, b = inverseDepth.y;
+    const float c = inverseDepth.z + a * -0.5f + b * (static_cast<float>(height) - 0.5f);
+    return {half * a, -half * b, 0.5f - 0.5f * projection[2][2] + half * c};
 }
-
 } // namespace
 
 Compositor::PersonProgram::PersonProgram()
@@ -163,8 +166,8 @@ void Compositor::person(const cv::Mat& person, const PersonDepths& depths, const
     glBindTexture(GL_TEXTURE_2D, personTexture_.get());
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size_.x, size_.y, GL_RGBA, GL_UNSIGNED_BYTE, person.data);
     uploadSlots(depths);
-    std::array<float, PersonDepths::kMaxPeople + 1> window{};
-    for (std::size_t i = 0; i < window.size(); ++i) window[i] = windowDepth(projection, depths.metres[i]);
+    std::array<glm::vec3, PersonDepths::kMaxPeople + 1> window{};
+    for (std::size_t i = 0; i < window.size(); ++i) window[i] = windowDepthPlane(projection, depths.inverseDepth[i], size_.y);
 
     output_.bind();
     glEnable(GL_DEPTH_TEST);
@@ -182,7 +185,7 @@ void Compositor::person(const cv::Mat& person, const PersonDepths& depths, const
     glUniform1i(program_.slots, 1);
     glUniform1i(program_.slotScale, depths.slots.empty() ? 0 : depths.slotScale);
     glUniform1i(program_.height, size_.y);
-    glUniform1fv(program_.depth, static_cast<GLsizei>(window.size()), window.data());
+    glUniform3fv(program_.depth, static_cast<GLsizei>(window.size()), glm::value_ptr(window[0]));
     glBindVertexArray(tileVao_.get());
     glBindBuffer(GL_ARRAY_BUFFER, tileBuffer_.get());
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(tiles_.size() * sizeof(float)), tiles_.data(), GL_STREAM_DRAW);

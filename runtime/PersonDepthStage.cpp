@@ -24,11 +24,24 @@ PersonDepthStage::PersonDepthStage(const std::optional<CalibratedCamera>& camera
                                    glm::ivec2 size)
     : plane_(personPlaneMetres), scale_(std::max(1, (size.x + kMaxTrackingWidth - 1) / kMaxTrackingWidth)),
       tracker_(trackingAt(scale_)) {
-    depths_.metres.fill(plane_);
+    depths_ = PersonDepths::everyoneAt(plane_);
     if (!camera) return;
     camera_ = camera;
     camera_->intrinsics = camera->intrinsics.scaledTo(size);
     depths_.slotScale = scale_;
+}
+
+glm::vec3 PersonDepthStage::cardThrough(const glm::dvec3& feet) const {
+    // The card's normal: level, from the camera towards the feet.
+    glm::dvec3 towards = feet - camera_->position();
+    towards.y = 0.0;
+    if (glm::length(towards) < 1e-6) return {0.0f, 0.0f, static_cast<float>(1.0 / camera_->depthOf(feet))};
+    const glm::dvec3 n = camera_->rotation * glm::normalize(towards);  // camera axes
+    const double d = glm::dot(n, camera_->rotation * feet + camera_->translation);  // the card: n . X = d
+    // A pixel's ray is s ((u - cx) / fx, (v - cy) / fy, 1) at depth s, and meets the card where 1 / s = n . ray / d.
+    const CameraIntrinsics& k = camera_->intrinsics;
+    return glm::vec3(static_cast<float>(n.x / (k.fx * d)), static_cast<float>(n.y / (k.fy * d)),
+                     static_cast<float>((n.z - n.x * k.cx / k.fx - n.y * k.cy / k.fy) / d));
 }
 
 void PersonDepthStage::run(const cv::Mat& person, bool newFrame) {
@@ -44,7 +57,7 @@ void PersonDepthStage::run(const cv::Mat& person, bool newFrame) {
     }
     const std::vector<TrackedPerson>& people = tracker_.update(alpha_);
 
-    std::unordered_map<int, float> kept;
+    std::unordered_map<int, Stand> kept;
     standing_.clear();
     for (const TrackedPerson& p : people) {
         // The tracking pixel's centre in frame pixels.
@@ -54,21 +67,21 @@ void PersonDepthStage::run(const cv::Mat& person, bool newFrame) {
         if (p.missed == 0 && p.feetVisible) {
             if (const std::optional<glm::dvec3> floor = camera_->floorPointAt(glm::dvec2(foot))) {
                 const double depth = camera_->depthOf(*floor);
-                if (depth > 0.0) lastDepth_[p.id] = static_cast<float>(depth);
+                if (depth > 0.0) lastStand_[p.id] = {static_cast<float>(depth), cardThrough(*floor)};
                 measured = depth > 0.0;
             }
         }
-        const auto d = lastDepth_.find(p.id);
-        if (d != lastDepth_.end()) kept.insert(*d);
+        const auto d = lastStand_.find(p.id);
+        if (d != lastStand_.end()) kept.insert(*d);
         if (p.missed == 0)
             standing_.push_back({.id = p.id,
                                  .foot = foot,
-                                 .metres = d != lastDepth_.end() ? d->second : plane_,
+                                 .metres = d != lastStand_.end() ? d->second.metres : plane_,
                                  .depth = measured                 ? StandingPerson::Depth::Measured
-                                          : d != lastDepth_.end() ? StandingPerson::Depth::Kept
+                                          : d != lastStand_.end() ? StandingPerson::Depth::Kept
                                                                   : StandingPerson::Depth::Plane});
     }
-    lastDepth_ = std::move(kept);  // tracks that ended forget their depth
+    lastStand_ = std::move(kept);  // tracks that ended forget their depth
     assignSlots();
 }
 
@@ -86,8 +99,12 @@ void PersonDepthStage::assignSlots() {
     for (const TrackedPerson& p : tracker_.people()) {
         if (p.label == 0 || depths_.people == PersonDepths::kMaxPeople) continue;
         const int slot = ++depths_.people;
-        const auto d = lastDepth_.find(p.id);
-        depths_.metres[static_cast<std::size_t>(slot)] = d != lastDepth_.end() ? d->second : plane_;
+        if (const auto d = lastStand_.find(p.id); d != lastStand_.end()) {
+            depths_.metres[static_cast<std::size_t>(slot)] = d->second.metres;
+            depths_.inverseDepth[static_cast<std::size_t>(slot)] = d->second.inverseDepth;
+        } else {
+            depths_.setFlat(slot, plane_);
+        }
         members[p.label].push_back({p.merged ? p.predictedFoot().x : p.foot.x, 0.5f * static_cast<float>(p.width),
                                     depths_.metres[static_cast<std::size_t>(slot)], static_cast<std::uint8_t>(slot)});
         if (!p.merged) boxes[p.label] = p.box;

@@ -56,13 +56,19 @@ public:
 
 private:
     void assignSlots();
+    glm::vec3 cardThrough(const glm::dvec3& feet) const;
 
     std::optional<CalibratedCamera> camera_;  // intrinsics at the video's size
     float plane_;
     int scale_ = 1;
     PersonTracker tracker_;
     cv::Mat alpha_;
-    std::unordered_map<int, float> lastDepth_;  // by track id
+    // Where a track last stood: the depth at its feet and its card (runtime/PersonDepths.hpp).
+    struct Stand {
+        float metres;
+        glm::vec3 inverseDepth;
+    };
+    std::unordered_map<int, Stand> lastStand_;  // by track id
     PersonDepths depths_;
     std::vector<StandingPerson> standing_;
 };

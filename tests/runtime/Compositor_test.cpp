@@ -42,11 +42,7 @@ void holdOut(glm::ivec2 size, cv::Rect r, float metres) {
 }
 
 // Everyone on one plane, 5 m away.
-PersonDepths onePlane(float metres = 5.0f) {
-    PersonDepths d;
-    d.metres.fill(metres);
-    return d;
-}
+PersonDepths onePlane(float metres = 5.0f) { return PersonDepths::everyoneAt(metres); }
 
 class CompositorOnEachApi : public ::testing::TestWithParam<GlRequest> {};
 
@@ -89,8 +85,8 @@ TEST_P(CompositorOnEachApi, eachPersonIsCutOnlyByHoldoutsNearerThanThem) {
     depths.slots(cv::Rect(0, 0, 20, 48)).setTo(1);
     depths.slots(cv::Rect(40, 0, 24, 48)).setTo(2);
     depths.people = 2;
-    depths.metres[1] = 3.0f;
-    depths.metres[2] = 9.0f;
+    depths.setFlat(1, 3.0f);
+    depths.setFlat(2, 9.0f);
     EXPECT_FLOAT_EQ(depths.farthest(), 20.0f);
     c.begin(frame, {});
     paint(size, {0, 0, 128, 48}, glm::vec4(0, 0, 1, 1));  // blue CG across the top
