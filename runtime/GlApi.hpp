@@ -39,7 +39,7 @@ std::optional<GlApiKind> parseGlApi(std::string_view text, bool& isAuto);
     X(BINDTEXTURE, glBindTexture) X(BINDVERTEXARRAY, glBindVertexArray) X(BLENDFUNC, glBlendFunc)                \
     X(BLENDFUNCSEPARATE, glBlendFuncSeparate) X(BUFFERDATA, glBufferData) X(BUFFERSUBDATA, glBufferSubData)       \
     X(CHECKFRAMEBUFFERSTATUS, glCheckFramebufferStatus) X(CLEAR, glClear) X(CLEARCOLOR, glClearColor)             \
-    X(CLEARDEPTHF, glClearDepthf) X(CLEARSTENCIL, glClearStencil) X(COLORMASK, glColorMask) X(COMPILESHADER, glCompileShader)                     \
+    X(CLEARDEPTHF, glClearDepthf) X(COLORMASK, glColorMask) X(COMPILESHADER, glCompileShader)                     \
     X(CREATEPROGRAM, glCreateProgram) X(CREATESHADER, glCreateShader) X(CULLFACE, glCullFace)                     \
     X(DELETEBUFFERS, glDeleteBuffers) X(DELETEFRAMEBUFFERS, glDeleteFramebuffers)                                 \
     X(DELETEPROGRAM, glDeleteProgram) X(DELETEQUERIES, glDeleteQueries) X(DELETERENDERBUFFERS, glDeleteRenderbuffers) \
@@ -57,7 +57,7 @@ std::optional<GlApiKind> parseGlApi(std::string_view text, bool& isAuto);
     X(GETUNIFORMLOCATION, glGetUniformLocation) X(GETQUERYOBJECTUIV, glGetQueryObjectuiv) X(BEGINQUERY, glBeginQuery) \
     X(ENDQUERY, glEndQuery) X(LINKPROGRAM, glLinkProgram) X(PIXELSTOREI, glPixelStorei) X(READPIXELS, glReadPixels) \
     X(READBUFFER, glReadBuffer) X(RENDERBUFFERSTORAGE, glRenderbufferStorage) X(SCISSOR, glScissor)                \
-    X(SHADERSOURCE, glShaderSource) X(STENCILFUNC, glStencilFunc) X(STENCILOP, glStencilOp)                       \
+    X(SHADERSOURCE, glShaderSource)                       \
     X(STENCILMASK, glStencilMask) X(TEXIMAGE2D, glTexImage2D) X(TEXSUBIMAGE2D, glTexSubImage2D)                   \
     X(TEXPARAMETERI, glTexParameteri) X(UNIFORM1F, glUniform1f) X(UNIFORM3FV, glUniform3fv) X(UNIFORM1I, glUniform1i) X(UNIFORM2F, glUniform2f) \
     X(UNIFORM3F, glUniform3f) X(UNIFORM4F, glUniform4f) X(UNIFORMMATRIX3FV, glUniformMatrix3fv)                   \

@@ -96,8 +96,9 @@ public:
     glm::ivec2 size() const { return compositor_->size(); }
     const std::vector<std::string>& warnings() const { return warnings_; }
     // The last frame's holdout mask, drawn again (same meshes, same view)
-    // into a colour target and read back: 255 where the person is cut. The
-    // frame itself keeps the mask only in the stencil.
+    // into a colour target and read back: 255 where a holdout mesh covers,
+    // which cuts each person who stands behind it there. The frame itself
+    // keeps the holdout only as depth.
     Image readHoldout();
     // The last matte output (premultiplied BGRA, video size).
     const cv::Mat& personLayer() const { return matte_.person(); }
