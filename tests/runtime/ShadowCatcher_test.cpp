@@ -30,6 +30,15 @@ TEST(ShadowCatcher, floorShadowMatrixDropsEachPointAlongTheLight) {
     EXPECT_NEAR(slanted.z, 3.0f, 1e-5f);
 }
 
+// A white 1 m cube standing on the floor at the origin; its transform node.
+NodeId addCubeOnTheFloor(Scene& scene) {
+    const auto white = scene.addMaterial({.name = "white", .baseColor = {1, 1, 1, 1}});
+    const NodeId cube = scene.addTransform(scene.root(), glm::translate(glm::mat4(1), {0.0f, 0.5f, 0.0f}));
+    scene.addMesh(cube, {scene.addGeometry(makeBox({1.0f, 1.0f, 1.0f})), white});
+    scene.update();
+    return cube;
+}
+
 struct Shadowed {
     cv::Mat grey;  // the output's luminance, rows top first
     View view;
@@ -43,10 +52,7 @@ Shadowed castOnGrey(const glm::vec3& light, float strength) {
     const glm::ivec2 size{320, 240};
     World world;
     Scene& scene = world.scene;
-    const auto white = scene.addMaterial({.name = "white", .baseColor = {1, 1, 1, 1}});
-    const NodeId cube = scene.addTransform(scene.root(), glm::translate(glm::mat4(1), {0.0f, 0.5f, 0.0f}));
-    scene.addMesh(cube, {scene.addGeometry(makeBox({1.0f, 1.0f, 1.0f})), white});
-    scene.update();
+    addCubeOnTheFloor(scene);
     Shadowed out;
     out.view = View::lookAt({0, 6, 6}, {0, 0, 0}, {0, 1, 0}, 50, size);
     DrawList list;
@@ -112,10 +118,7 @@ TEST(ShadowCatcher, theMaskIsDrawnAgainOnlyWhenAnObjectMoves) {
     const glm::ivec2 size{160, 120};
     World world;
     Scene& scene = world.scene;
-    const auto white = scene.addMaterial({.name = "white", .baseColor = {1, 1, 1, 1}});
-    const NodeId cube = scene.addTransform(scene.root(), glm::translate(glm::mat4(1), {0.0f, 0.5f, 0.0f}));
-    scene.addMesh(cube, {scene.addGeometry(makeBox({1.0f, 1.0f, 1.0f})), white});
-    scene.update();
+    const NodeId cube = addCubeOnTheFloor(scene);
     const View view = View::lookAt({0, 6, 6}, {0, 0, 0}, {0, 1, 0}, 50, size);
     Compositor compositor(size);
     Renderer renderer;
