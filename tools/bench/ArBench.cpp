@@ -424,7 +424,9 @@ int run(const Options& o) {
 const bool registered = registerBench({"ar", "Registered AR against a synthetic ground truth: layering per person vs one plane, calibration error, cost",
                                        [](CommandLine& line) {
                                            auto o = std::make_shared<Options>();
-                                           line.option("--frames", o->frames, "frames of the installation").showDefault();
+                                           line.option("--frames", o->frames, "frames of the installation (the walkers reach the box after about 100)")
+                                               .range(12, 100000)
+                                               .showDefault();
                                            line.option("--out", o->out, "folder for the strip, the calibration inputs and configs").showDefault();
                                            return [o] { return run(*o); };
                                        }});
