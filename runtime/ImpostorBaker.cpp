@@ -77,7 +77,7 @@ std::size_t bakeImpostors(Scene& scene, NodeId groupingNode, GroupingNodes& tabl
         unpremultiply(img);
         Material m;
         m.name = "impostor";
-        m.baseColorImage = static_cast<int>(scene.addImage(std::move(img)));
+        m.baseColorTexture.image = static_cast<int>(scene.addImage(std::move(img)));
         m.alphaMode = AlphaMode::Blend;
         m.unlit = true;
         m.doubleSided = true;

@@ -189,7 +189,7 @@ void Renderer::drawItem(const Scene& scene, const DrawItem& item, const View& vi
     glUniform1i(p.alphaMode, static_cast<int>(m.alphaMode));
     glUniform1f(p.alphaCutoff, m.alphaCutoff);
     glUniform1f(p.fade, item.fade);
-    const GLuint tex = texture(scene, m.baseColorImage);
+    const GLuint tex = texture(scene, m.baseColorTexture.image);
     glUniform1i(p.hasTexture, tex ? 1 : 0);
     glUniform1i(p.baseTexture, 0);
     glActiveTexture(GL_TEXTURE0);

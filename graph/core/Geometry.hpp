@@ -1,7 +1,7 @@
 #pragma once
 // Triangle geometry as the renderer and the mesh tools see it: flat arrays,
 // one index list of triangles. Normals are always present after
-// finalize(); texture coordinates and colours are optional (empty).
+// finalize(); texture coordinates, tangents and colours are optional (empty).
 //
 //   Geometry g;
 //   g.positions = {...}; g.indices = {...};
@@ -17,7 +17,9 @@ namespace arcomp {
 struct Geometry {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;
-    std::vector<glm::vec2> texcoords;
+    std::vector<glm::vec2> texcoords;   // TEXCOORD_0
+    std::vector<glm::vec2> texcoords1;  // TEXCOORD_1
+    std::vector<glm::vec4> tangents;    // xyz tangent, w the bitangent's sign (glTF's TANGENT)
     std::vector<glm::vec4> colors;
     std::vector<std::uint32_t> indices;
 

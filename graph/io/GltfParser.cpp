@@ -497,7 +497,7 @@ ParsedModel parseGltf(const fs::path& file) {
             if (source >= static_cast<int>(model.images.size()))
                 reader.fail(ptr("textures", static_cast<std::size_t>(t), "source"),
                             "image " + std::to_string(source) + " does not exist");
-            if (source >= 0 && !out.images[static_cast<std::size_t>(source)].rgba.empty()) m.baseColorImage = source;
+            if (source >= 0 && !out.images[static_cast<std::size_t>(source)].rgba.empty()) m.baseColorTexture.image = source;
         }
         m.alphaMode = src.alphaMode == "BLEND" ? AlphaMode::Blend : src.alphaMode == "MASK" ? AlphaMode::Mask
                                                                                             : AlphaMode::Opaque;

@@ -23,7 +23,8 @@ NodeId append(ParsedModel& model, Scene& scene, NodeId parent, const std::string
     const auto imageBase = static_cast<int>(scene.images().size());
     for (Image& i : model.images) scene.addImage(std::move(i));
     for (Material& m : model.materials) {
-        if (m.baseColorImage >= 0) m.baseColorImage += imageBase;
+        for (TextureRef* t : m.textures())
+            if (t->present()) t->image += imageBase;
         scene.addMaterial(std::move(m));
     }
     for (Geometry& g : model.geometries) scene.addGeometry(std::move(g));
