@@ -11,15 +11,9 @@ using namespace gl;
 
 namespace {
 
-// A triangle covering the screen, from gl_VertexID alone; the fragment
-// stage fetches the layer pixel under it (the image's rows run top down).
+// Drawn over the whole screen: each fragment fetches the layer pixel under
+// it (the image's rows run top down).
 const char* const kLayerShader = R"(
-#ifdef VERTEX
-void main() {
-    vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
-    gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
-}
-#else
 uniform sampler2D uColor;
 uniform sampler2D uDepth;
 out vec4 fragColor;
@@ -33,7 +27,6 @@ void main() {
     fragColor = c;
     gl_FragDepth = texelFetch(uDepth, texel, 0).r;
 }
-#endif
 )";
 
 // The world transform's uniform scale (the length of its first axis).
@@ -55,7 +48,7 @@ View localView(const View& view, const glm::mat4& world) {
 } // namespace
 
 PointCloudLayer::LayerProgram::LayerProgram()
-    : program(kLayerShader), color(program.requiredLocation("uColor")), depth(program.requiredLocation("uDepth")) {}
+    : program(fullScreenTriangle(kLayerShader)), color(program.requiredLocation("uColor")), depth(program.requiredLocation("uDepth")) {}
 
 PointCloudLayer::PointCloudLayer(int threads) : threads_(threads), vao_(GlVertexArray::generate()) {}
 

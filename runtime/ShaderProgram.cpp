@@ -67,4 +67,15 @@ GLint ShaderProgram::requiredLocation(const char* name) const {
     return at;
 }
 
+std::string fullScreenTriangle(const std::string& fragment) {
+    return R"(
+#ifdef VERTEX
+void main() {
+    vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
+    gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
+}
+#else
+)" + fragment + "\n#endif\n";
+}
+
 } // namespace arcomp

@@ -37,4 +37,9 @@ private:
     std::string defines_;  // says which variant, in errors
 };
 
+// A source for ShaderProgram whose vertex stage is one triangle covering the
+// viewport, made from gl_VertexID alone (draw three vertices, no buffers);
+// `fragment` is the fragment stage.
+std::string fullScreenTriangle(const std::string& fragment);
+
 } // namespace arcomp

@@ -9,17 +9,10 @@ using namespace gl;
 
 namespace {
 
-// One triangle over the viewport (the scissor keeps it to the shadows'
-// rectangle). The quarter-size mask is blurred by four bilinear taps, a
-// texel apart: a soft edge about eight output pixels wide, for four
-// fetches a pixel (nine cost llvmpipe a millisecond more at 768x576).
+// Drawn over the viewport (the scissor keeps it to the shadows' rectangle).
+// The quarter-size mask is blurred by four bilinear taps, a texel apart: a
+// soft edge about eight output pixels wide, for four fetches a pixel (nine cost llvmpipe a millisecond more at 768x576).
 const char* const kApplyShader = R"(
-#ifdef VERTEX
-void main() {
-    vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
-    gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
-}
-#else
 out vec4 fragColor;
 uniform sampler2D uMask;
 uniform vec2 uTexel;
@@ -31,7 +24,6 @@ void main() {
                     texture(uMask, uv + vec2(-0.5, 0.5) * uTexel).a + texture(uMask, uv + vec2(0.5, 0.5) * uTexel).a;
     fragColor = vec4(vec3(1.0 - uStrength * covered / 4.0), 1.0);
 }
-#endif
 )";
 
 constexpr int kBlurMarginPx = 12;
@@ -46,7 +38,7 @@ glm::mat4 floorShadowMatrix(const glm::vec3& light) {
 }
 
 ShadowCatcher::ApplyProgram::ApplyProgram()
-    : program(kApplyShader), mask(program.requiredLocation("uMask")), texel(program.requiredLocation("uTexel")),
+    : program(fullScreenTriangle(kApplyShader)), mask(program.requiredLocation("uMask")), texel(program.requiredLocation("uTexel")),
       outputSize(program.requiredLocation("uOutputSize")), strength(program.requiredLocation("uStrength")) {}
 
 ShadowCatcher::ShadowCatcher(glm::ivec2 size)
