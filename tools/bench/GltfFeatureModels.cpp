@@ -44,8 +44,6 @@ std::string vec(std::initializer_list<float> xs) {
     return s + "]";
 }
 std::string vec(const glm::vec3& v) { return vec({v.x, v.y, v.z}); }
-std::string vec(const glm::vec4& v) { return vec({v.x, v.y, v.z, v.w}); }
-std::string quat(const glm::quat& q) { return vec({q.x, q.y, q.z, q.w}); }  // glTF order: x, y, z, w
 
 constexpr int kFloat = 5126, kUnsignedShort = 5123, kUnsignedByte = 5121;
 constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;

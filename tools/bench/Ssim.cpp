@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace arcomp {
 
@@ -18,26 +19,33 @@ double ssim(const cv::Mat& a, const cv::Mat& b) {
     if (a.cols < kWindow || a.rows < kWindow)
         throw std::invalid_argument("ssim: images of " + std::to_string(a.cols) + "x" + std::to_string(a.rows) +
                                     " are smaller than the 11x11 window");
-    cv::Mat x, y;
-    a.convertTo(x, CV_64F);
-    b.convertTo(y, CV_64F);
+    // Channel by channel: OpenCV's matrix expressions add a scalar to the
+    // first channel only of a multi-channel matrix.
+    std::vector<cv::Mat> channelsA, channelsB;
+    cv::split(a, channelsA);
+    cv::split(b, channelsB);
     const auto blur = [](const cv::Mat& m) {
         cv::Mat out;
         cv::GaussianBlur(m, out, cv::Size(kWindow, kWindow), kSigma, kSigma, cv::BORDER_REFLECT);
         return out;
     };
-    const cv::Mat muX = blur(x), muY = blur(y);
-    const cv::Mat muXX = muX.mul(muX), muYY = muY.mul(muY), muXY = muX.mul(muY);
-    const cv::Mat sigmaXX = blur(x.mul(x)) - muXX, sigmaYY = blur(y.mul(y)) - muYY, sigmaXY = blur(x.mul(y)) - muXY;
-    cv::Mat numerator = (2.0 * muXY + C1).mul(2.0 * sigmaXY + C2);
-    cv::Mat denominator = (muXX + muYY + C1).mul(sigmaXX + sigmaYY + C2);
-    cv::Mat map;
-    cv::divide(numerator, denominator, map);
     const int border = kWindow / 2;
-    const cv::Scalar means = cv::mean(map(cv::Rect(border, border, a.cols - 2 * border, a.rows - 2 * border)));
+    const cv::Rect inside(border, border, a.cols - 2 * border, a.rows - 2 * border);
     double sum = 0.0;
-    for (int c = 0; c < a.channels(); ++c) sum += means[c];
-    return sum / a.channels();
+    for (std::size_t c = 0; c < channelsA.size(); ++c) {
+        cv::Mat x, y;
+        channelsA[c].convertTo(x, CV_64F);
+        channelsB[c].convertTo(y, CV_64F);
+        const cv::Mat muX = blur(x), muY = blur(y);
+        const cv::Mat muXX = muX.mul(muX), muYY = muY.mul(muY), muXY = muX.mul(muY);
+        const cv::Mat sigmaXX = blur(x.mul(x)) - muXX, sigmaYY = blur(y.mul(y)) - muYY, sigmaXY = blur(x.mul(y)) - muXY;
+        const cv::Mat numerator = (2.0 * muXY + C1).mul(2.0 * sigmaXY + C2);
+        const cv::Mat denominator = (muXX + muYY + C1).mul(sigmaXX + sigmaYY + C2);
+        cv::Mat map;
+        cv::divide(numerator, denominator, map);
+        sum += cv::mean(map(inside))[0];
+    }
+    return sum / static_cast<double>(channelsA.size());
 }
 
 } // namespace arcomp
