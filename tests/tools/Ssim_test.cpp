@@ -66,6 +66,25 @@ TEST(Ssim, colourChannelsAreAveraged) {
     EXPECT_NEAR(ssim(a, b), (2.0 + (30000.0 + c1) / (32500.0 + c1)) / 3.0, 1e-9);
 }
 
+// The map averaged over the mask only: where the images agree, 1, however
+// much they differ outside it.
+TEST(Ssim, maskLimitsTheAverage) {
+    const cv::Mat a = pattern();
+    cv::Mat b = a.clone();
+    b(cv::Rect(64, 0, 64, 96)).setTo(cv::Scalar(0, 0, 0));
+    cv::Mat left(a.size(), CV_8UC1, cv::Scalar(0)), right = left.clone();
+    left(cv::Rect(0, 0, 48, 96)).setTo(255);
+    right(cv::Rect(80, 0, 48, 96)).setTo(255);
+    EXPECT_DOUBLE_EQ(ssim(a, b, left), 1.0);
+    EXPECT_LT(ssim(a, b, right), 0.2);
+    const double whole = ssim(a, b);
+    EXPECT_GT(whole, ssim(a, b, right));
+    EXPECT_LT(whole, 1.0);
+    const cv::Mat none(a.size(), CV_8UC1, cv::Scalar(0));
+    EXPECT_THROW(ssim(a, b, none), std::invalid_argument);
+    EXPECT_THROW(ssim(a, b, cv::Mat(a.size(), CV_8UC3, cv::Scalar::all(255))), std::invalid_argument);
+}
+
 TEST(Ssim, mismatchedImagesThrow) {
     const cv::Mat a = pattern();
     cv::Mat gray;

@@ -8,7 +8,7 @@
 
 namespace arcomp {
 
-double ssim(const cv::Mat& a, const cv::Mat& b) {
+double ssim(const cv::Mat& a, const cv::Mat& b, const cv::Mat& mask) {
     constexpr int kWindow = 11;
     constexpr double kSigma = 1.5, kL = 255.0;
     constexpr double C1 = (0.01 * kL) * (0.01 * kL), C2 = (0.03 * kL) * (0.03 * kL);
@@ -19,6 +19,9 @@ double ssim(const cv::Mat& a, const cv::Mat& b) {
     if (a.cols < kWindow || a.rows < kWindow)
         throw std::invalid_argument("ssim: images of " + std::to_string(a.cols) + "x" + std::to_string(a.rows) +
                                     " are smaller than the 11x11 window");
+    if (!mask.empty() && (mask.size() != a.size() || mask.type() != CV_8UC1))
+        throw std::invalid_argument("ssim: the mask must be 8-bit, one channel, " + std::to_string(a.cols) + "x" +
+                                    std::to_string(a.rows));
     // Channel by channel: OpenCV's matrix expressions add a scalar to the
     // first channel only of a multi-channel matrix.
     std::vector<cv::Mat> channelsA, channelsB;
@@ -31,6 +34,9 @@ double ssim(const cv::Mat& a, const cv::Mat& b) {
     };
     const int border = kWindow / 2;
     const cv::Rect inside(border, border, a.cols - 2 * border, a.rows - 2 * border);
+    const cv::Mat counted = mask.empty() ? cv::Mat() : mask(inside);
+    if (!counted.empty() && cv::countNonZero(counted) == 0)
+        throw std::invalid_argument("ssim: the mask selects no pixel inside the 5-pixel border");
     double sum = 0.0;
     for (std::size_t c = 0; c < channelsA.size(); ++c) {
         cv::Mat x, y;
@@ -43,7 +49,7 @@ double ssim(const cv::Mat& a, const cv::Mat& b) {
         const cv::Mat denominator = (muXX + muYY + C1).mul(sigmaXX + sigmaYY + C2);
         cv::Mat map;
         cv::divide(numerator, denominator, map);
-        sum += cv::mean(map(inside))[0];
+        sum += cv::mean(map(inside), counted)[0];
     }
     return sum / static_cast<double>(channelsA.size());
 }

@@ -11,13 +11,18 @@
 // averaged, so a wrong hue costs as much as a wrong brightness.
 //
 //   double s = ssim(cv::imread("a.png"), cv::imread("b.png"));  // 1: identical
+//   double o = ssim(a, b, objectMask);                          // over the object only
 
 #include <opencv2/core.hpp>
 
 namespace arcomp {
 
 // `a` and `b`: 8-bit, the same size (at least 11x11) and channel count.
-// Throws std::invalid_argument otherwise.
-double ssim(const cv::Mat& a, const cv::Mat& b);
+// With a `mask` (8-bit, one channel, same size) the local index is averaged
+// over its non-zero pixels only: where a small object would otherwise be
+// outweighed by a background that matches trivially. Throws
+// std::invalid_argument for images that do not match, or a mask with no
+// pixel inside the border.
+double ssim(const cv::Mat& a, const cv::Mat& b, const cv::Mat& mask = cv::Mat());
 
 } // namespace arcomp
