@@ -12,7 +12,9 @@
 //  - `ssim` is the whole image's, as issue #22 states its target (0.9);
 //    `ssim_object` the same SSIM map averaged only where either renderer
 //    drew (grown by 5 pixels), since a background that matches trivially
-//    lifts the whole-image figure of a small object towards 1.
+//    lifts the whole-image figure of a small object towards 1; and
+//    `diff_object`, the mean absolute difference there (0-255), as SSIM
+//    forgives a smooth surface of the wrong colour.
 //  - DIR gets models/ (the .gltf files and the .hdr), three/ and
 //    arcomp-<api>/ (the renders), and strip-<model>.png: three.js | each
 //    arcomp API | |three.js - first API| x4.
@@ -318,6 +320,7 @@ int run(const Options& o) {
     struct Score {
         std::vector<std::optional<double>> ssim;    // per API, the whole image
         std::vector<std::optional<double>> object;  // per API, where either renderer drew (and 5 pixels around)
+        std::vector<std::optional<double>> diff;    // per API, mean |difference| there, 0-255
         std::vector<std::string> errors;          // per API, empty when it rendered
     };
     std::vector<Score> scores;
@@ -339,6 +342,7 @@ int run(const Options& o) {
             if (ran.status != 0) {
                 score.ssim.push_back(std::nullopt);
                 score.object.push_back(std::nullopt);
+                score.diff.push_back(std::nullopt);
                 score.errors.push_back(ran.output.empty() ? "exit " + std::to_string(ran.status) : ran.output);
                 tiles.push_back(captioned(cv::Mat(reference.size(), CV_8UC3, cv::Scalar(0, 0, 80)), "arcomp " + api + " failed"));
                 continue;
@@ -355,6 +359,14 @@ int run(const Options& o) {
             const std::optional<double> o = drawn ? std::optional<double>(ssim(reference, image, object)) : std::nullopt;
             score.ssim.push_back(s);
             score.object.push_back(o);
+            if (drawn) {
+                cv::Mat difference;
+                cv::absdiff(reference, image, difference);
+                const cv::Scalar mean = cv::mean(difference, object);
+                score.diff.push_back((mean[0] + mean[1] + mean[2]) / 3.0);
+            } else {
+                score.diff.push_back(std::nullopt);
+            }
             score.errors.emplace_back();
             if (firstArcomp.empty()) firstArcomp = image;
             tiles.push_back(captioned(image, "arcomp " + api + "  SSIM " + BenchJson::number(Fixed{s, 3}) +
@@ -377,7 +389,8 @@ int run(const Options& o) {
     j.beginArray("size").value(size.x).value(size.y).end();
     j.field("three", threeRevision).field("webgl", webgl);
     j.field("ssim", "Wang et al. 2004, 11x11 Gaussian sigma 1.5, K1 0.01, K2 0.03, per sRGB channel averaged, over grey; "
-                    "ssim_object: the same map averaged where either renderer drew, dilated 5 px; pass: ssim");
+                    "ssim_object: the same map averaged where either renderer drew, dilated 5 px; "
+                    "diff_object: mean |difference| of 8-bit sRGB values there; pass: ssim");
     j.field("threshold", o.threshold);
     j.beginArray("apis");
     for (const std::string& api : apis) j.value(api);
@@ -405,6 +418,12 @@ int run(const Options& o) {
         j.beginObject("ssim_object");
         for (std::size_t a = 0; a < apis.size(); ++a) {
             if (const auto& s = scores[i].object[a]) j.field(apis[a], Fixed{*s, 4});
+            else j.null(apis[a]);
+        }
+        j.end();
+        j.beginObject("diff_object");
+        for (std::size_t a = 0; a < apis.size(); ++a) {
+            if (const auto& d = scores[i].diff[a]) j.field(apis[a], Fixed{*d, 2});
             else j.null(apis[a]);
         }
         j.end();
