@@ -95,3 +95,30 @@ TEST(Cli, benchLoadPrintsOneJsonLineLast) {
     EXPECT_NE(json.find("\"triangles\":27864"), std::string::npos) << json;
     EXPECT_NE(json.find("\"load_ms\":"), std::string::npos) << json;
 }
+
+// What a reference renderer is told must reach arcomp too: the field of view
+// (a narrower one fills more of the frame) and the light's direction (a
+// quad lit from behind its viewer shows only the ambient term).
+TEST(Cli, renderTakesFieldOfViewAndLightDirection) {
+    TempDir dir;
+    const std::string quad = dir.write("quad.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n").string();
+    const auto render = [&](const std::string& name, const std::string& options) {
+        const ShellResult r = arcompCommand("render " + quad + " --out " + (dir.path() / name).string() +
+                                            " --size 160x120 --eye 0,0,6 --target 0,0,0 " + options);
+        EXPECT_EQ(r.code, 0) << r.out;
+        return arcomp::readPng(dir.path() / name);
+    };
+    const double narrow = coverage(render("narrow.png", "--fovy 20")), wide = coverage(render("wide.png", "--fovy 60"));
+    EXPECT_GT(narrow, 2.5 * wide) << narrow << " vs " << wide;
+    const auto brightness = [](const arcomp::Image& img) {
+        double sum = 0;
+        for (std::size_t i = 0; i < img.rgba.size(); i += 4) sum += img.rgba[i];
+        return sum;
+    };
+    const double front = brightness(render("front.png", "--light-direction 0,0,1"));
+    const double behind = brightness(render("behind.png", "--light-direction 0,0,-1"));
+    EXPECT_GT(front, 1.5 * behind);
+    const ShellResult zero = arcompCommand("render " + quad + " --out x.png --light-direction 0,0,0");
+    EXPECT_EQ(zero.code, 2);
+    EXPECT_NE(zero.out.find("--light-direction"), std::string::npos) << zero.out;
+}

@@ -20,7 +20,8 @@ namespace arcomp {
 namespace {
 
 struct RenderOptions {
-    std::string scene, out, size = "640x480", eye, target, shading = "phong", gl = "auto";
+    std::string scene, out, size = "640x480", eye, target, shading = "phong", gl = "auto", lightDirection;
+    float fovy = 0.0f;  // 0: the station camera's, else 45
 };
 
 int render(const RenderOptions& o) {
@@ -40,14 +41,22 @@ int render(const RenderOptions& o) {
     scene.update();
 
     View view = file.camera ? *file.camera : View::framing(scene.bound(), 45.0f, size);
-    if (!o.eye.empty() || !o.target.empty() || view.viewport != size) {
+    if (!o.eye.empty() || !o.target.empty() || view.viewport != size || o.fovy > 0.0f) {
         const Sphere b = scene.bound().empty() ? Sphere{glm::vec3(0.0f), 1.0f} : scene.bound();
         const glm::vec3 eye = o.eye.empty() ? view.eye : parseVec3(o.eye, "--eye");
         const glm::vec3 target = o.target.empty() ? (file.camera ? view.eye + view.forward : b.center)
                                                   : parseVec3(o.target, "--target");
         const float distance = glm::length(eye - b.center);
-        view = View::lookAt(eye, target, {0.0f, 1.0f, 0.0f}, glm::degrees(view.fovyRadians), size,
+        const float fovy = o.fovy > 0.0f ? o.fovy : glm::degrees(view.fovyRadians);
+        view = View::lookAt(eye, target, {0.0f, 1.0f, 0.0f}, fovy, size,
                             std::max(1e-3f * distance, distance - 2.0f * b.radius), distance + 2.0f * b.radius);
+    }
+
+    RenderSettings settings{.clearColor = file.background};
+    if (!o.lightDirection.empty()) {
+        const glm::vec3 towards = parseVec3(o.lightDirection, "--light-direction");
+        if (glm::length(towards) == 0.0f) throw InputError("--light-direction: the zero vector has no direction");
+        settings.lightDirection = glm::normalize(towards);
     }
 
     auto context = HeadlessContext::create(request);
@@ -57,7 +66,7 @@ int render(const RenderOptions& o) {
     Renderer renderer;
     DrawList list;
     select(world, view, {.shading = *shading}, list);
-    renderer.draw(scene, list, view, {.clearColor = file.background});
+    renderer.draw(scene, list, view, settings);
     std::optional<PointCloudLayer> clouds;
     if (world.pointClouds.size()) {
         clouds.emplace();
@@ -83,6 +92,9 @@ const bool registered = registerCommand(
          line.option("--size", o->size, "Image size WIDTHxHEIGHT").showDefault();
          line.option("--eye", o->eye, "Camera position X,Y,Z (default: frames the scene)");
          line.option("--target", o->target, "Point looked at X,Y,Z (default: the scene's centre)");
+         line.option("--fovy", o->fovy, "Vertical field of view in degrees (default: the station camera's, else 45)")
+             .range(1.0, 179.0);
+         line.option("--light-direction", o->lightDirection, "Direction towards the light X,Y,Z, world space (default: from above, left and front)");
          line.option("--shading", o->shading, "unlit, flat, gouraud or phong").showDefault();
          line.option("--gl", o->gl, "OpenGL API: auto, gl33 or es3").showDefault();
          return [o] { return render(*o); };
