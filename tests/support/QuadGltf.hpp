@@ -51,6 +51,8 @@ struct QuadGltf {
     std::string images = std::string(R"([{"uri": "data:image/png;base64,)") + kTinyPng + "\"}]";
     std::string extensionsUsed = "[]";
     std::string extensionsRequired = "[]";
+    std::string nodes = R"([{"mesh": 0}])";
+    std::string sceneNodes = "[0]";
 
     struct View {
         std::size_t offset, length;
@@ -103,7 +105,7 @@ struct QuadGltf {
         }
         return R"({"asset": {"version": "2.0"}, "extensionsUsed": )" + extensionsUsed +
                R"(, "extensionsRequired": )" + extensionsRequired +
-               R"(, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+               R"(, "scene": 0, "scenes": [{"nodes": )" + sceneNodes + R"(}], "nodes": )" + nodes + R"(,
   "meshes": [{"primitives": )" + primitives + R"(}],
   "materials": )" + materials + R"(, "textures": )" + textures + R"(, "samplers": )" + samplers +
                R"(, "images": )" + images + R"(,
