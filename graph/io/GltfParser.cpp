@@ -475,6 +475,7 @@ Sampler toSampler(const tinygltf::Sampler& src, std::size_t index, const GltfRea
     };
     const auto wrap = [&](int gl, const char* field) {
         switch (gl) {
+        case -1:  // tinygltf's "unset", as for the filters: the default
         case kGlRepeat: return TextureWrap::Repeat;
         case kGlClampToEdge: return TextureWrap::ClampToEdge;
         case kGlMirroredRepeat: return TextureWrap::MirroredRepeat;

@@ -75,7 +75,8 @@ TEST(GltfMaterials, everySlotFactorAndExtensionIsRead) {
     q.primitives = kWithUv1;
     q.extensionsUsed = R"(["KHR_texture_transform", "KHR_materials_emissive_strength"])";
     q.extensionsRequired = q.extensionsUsed;
-    q.samplers = R"([{"magFilter": 9728, "minFilter": 9986, "wrapS": 33071, "wrapT": 33648}, {}])";
+    q.samplers = R"([{"magFilter": 9728, "minFilter": 9986, "wrapS": 33071, "wrapT": 33648},
+                     {"magFilter": -1, "minFilter": -1, "wrapS": -1}])";
     q.textures = R"([{"source": 0, "sampler": 0}, {"source": 0, "sampler": 1}, {"source": 0}])";
     q.materials = R"([{"name": "all",
         "pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.25, 1, 0.75], "metallicFactor": 0.1, "roughnessFactor": 0.6,
@@ -102,7 +103,7 @@ TEST(GltfMaterials, everySlotFactorAndExtensionIsRead) {
                          .wrapT = TextureWrap::MirroredRepeat};
     EXPECT_EQ(m.baseColorTexture.sampler, custom);
     EXPECT_EQ(m.occlusionTexture.sampler, custom);
-    EXPECT_EQ(m.metallicRoughnessTexture.sampler, Sampler{});  // a sampler with nothing set
+    EXPECT_EQ(m.metallicRoughnessTexture.sampler, Sampler{});  // -1 or absent: the defaults
     EXPECT_EQ(m.normalTexture.sampler, Sampler{});             // a texture with no sampler
     EXPECT_EQ(m.metallicRoughnessTexture.texCoord, 0);
     EXPECT_FLOAT_EQ(m.normalScale, 0.5f);
