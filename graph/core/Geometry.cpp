@@ -1,5 +1,6 @@
 #include "graph/core/Geometry.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -21,6 +22,69 @@ std::vector<glm::vec3> computeVertexNormals(const std::vector<glm::vec3>& positi
         n = len > 0.0f ? n / len : glm::vec3(0.0f, 0.0f, 1.0f);
     }
     return normals;
+}
+
+namespace {
+
+// Any unit vector perpendicular to the unit vector n: the cross product with
+// the axis n leans on least is never short.
+glm::vec3 anyPerpendicular(const glm::vec3& n) {
+    const glm::vec3 a = std::abs(n.x) < 0.57f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+    return glm::normalize(glm::cross(n, a));
+}
+
+float cornerAngle(const glm::vec3& from, const glm::vec3& to1, const glm::vec3& to2) {
+    const glm::vec3 a = to1 - from, b = to2 - from;
+    const float la = glm::length(a), lb = glm::length(b);
+    if (la == 0.0f || lb == 0.0f) return 0.0f;
+    return std::acos(std::clamp(glm::dot(a, b) / (la * lb), -1.0f, 1.0f));
+}
+
+} // namespace
+
+std::vector<glm::vec4> computeTangents(const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& normals,
+                                       const std::vector<glm::vec2>& texcoords,
+                                       const std::vector<std::uint32_t>& indices) {
+    const std::size_t n = positions.size();
+    std::vector<glm::vec3> tangentSum(n, glm::vec3(0.0f)), bitangentSum(n, glm::vec3(0.0f));
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+        const std::uint32_t v[3] = {indices[t], indices[t + 1], indices[t + 2]};
+        const glm::vec3 e1 = positions[v[1]] - positions[v[0]], e2 = positions[v[2]] - positions[v[0]];
+        const glm::vec2 d1 = texcoords[v[1]] - texcoords[v[0]], d2 = texcoords[v[2]] - texcoords[v[0]];
+        const float det = d1.x * d2.y - d2.x * d1.y;
+        if (!(std::abs(det) > 1e-12f)) continue;  // no UV area: no direction to give
+        // dP/du and dP/dv, each normalised: MikkTSpace weighs a triangle's
+        // direction by its corner angle, not by its size in uv space.
+        const glm::vec3 dPdu = (e1 * d2.y - e2 * d1.y) / det;
+        const glm::vec3 dPdv = (e2 * d1.x - e1 * d2.x) / det;
+        const float lu = glm::length(dPdu), lv = glm::length(dPdv);
+        if (!(lu > 0.0f) || !(lv > 0.0f) || !std::isfinite(lu) || !std::isfinite(lv)) continue;
+        // glTF's v grows downwards in the image; the bitangent points up it.
+        const glm::vec3 tangent = dPdu / lu, bitangent = -dPdv / lv;
+        for (int c = 0; c < 3; ++c) {
+            const float w = cornerAngle(positions[v[c]], positions[v[(c + 1) % 3]], positions[v[(c + 2) % 3]]);
+            tangentSum[v[c]] += tangent * w;
+            bitangentSum[v[c]] += bitangent * w;
+        }
+    }
+    std::vector<glm::vec4> out(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const glm::vec3& nrm = normals[i];
+        glm::vec3 t = tangentSum[i] - nrm * glm::dot(nrm, tangentSum[i]);
+        const float len = glm::length(t);
+        if (len > 1e-6f && std::isfinite(len)) {
+            t /= len;
+        } else {
+            // No tangent of its own: u along the bitangent's right hand if
+            // there is one, else any direction in the surface.
+            const glm::vec3 b = bitangentSum[i] - nrm * glm::dot(nrm, bitangentSum[i]);
+            const float lb = glm::length(b);
+            t = lb > 1e-6f && std::isfinite(lb) ? glm::cross(b / lb, nrm) : anyPerpendicular(nrm);
+        }
+        const float w = glm::dot(glm::cross(nrm, t), bitangentSum[i]) < 0.0f ? -1.0f : 1.0f;
+        out[i] = glm::vec4(t, w);
+    }
+    return out;
 }
 
 void Geometry::finalize() {

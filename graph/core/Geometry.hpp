@@ -25,6 +25,9 @@ struct Geometry {
 
     Box box;
     Sphere bound;
+    // The tangents were computed (computeTangents) for a normal map, the
+    // file had none: inspect reports it, and a cache may recompute them.
+    bool tangentsGenerated = false;
 
     std::size_t triangleCount() const { return indices.size() / 3; }
     // Computes area-weighted vertex normals when none were given and the
@@ -34,6 +37,18 @@ struct Geometry {
 
 std::vector<glm::vec3> computeVertexNormals(const std::vector<glm::vec3>& positions,
                                             const std::vector<std::uint32_t>& indices);
+
+// Tangents for a normal map, in the spirit of MikkTSpace: each triangle's
+// tangent and bitangent from its UV derivatives, summed per vertex weighted
+// by the corner angle, made perpendicular to the normal (Gram-Schmidt), with
+// w the bitangent's sign as glTF's TANGENT has it. The bitangent points
+// towards decreasing v, "up" in a glTF image, where a normal map's green
+// channel points. Where the UVs give no direction (a degenerate or
+// unmapped vertex) the tangent is some unit vector perpendicular to the
+// normal, w = +1: never NaN. `normals` must be unit length, one per position.
+std::vector<glm::vec4> computeTangents(const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& normals,
+                                       const std::vector<glm::vec2>& texcoords,
+                                       const std::vector<std::uint32_t>& indices);
 
 // A UV sphere of the given radius; used for generated scenes and benchmarks.
 Geometry makeUvSphere(float radius, int slices, int stacks);

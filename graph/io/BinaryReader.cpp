@@ -81,4 +81,15 @@ std::vector<glm::vec2> BinaryReader::vec2s(std::uint64_t count, const char* what
     return out;
 }
 
+std::vector<glm::vec4> BinaryReader::vec4s(std::uint64_t count, const char* what) {
+    needItems(count, 4 * sizeof(float), what);
+    std::vector<glm::vec4> out;
+    out.reserve(static_cast<std::size_t>(count));
+    for (std::uint64_t i = 0; i < count; ++i) {
+        const float x = finite(what), y = finite(what), z = finite(what), w = finite(what);
+        out.emplace_back(x, y, z, w);
+    }
+    return out;
+}
+
 } // namespace arcomp

@@ -63,6 +63,7 @@ public:
     // `count` finite vectors; the count is checked against the bytes left first.
     std::vector<glm::vec3> vec3s(std::uint64_t count, const char* what);
     std::vector<glm::vec2> vec2s(std::uint64_t count, const char* what);
+    std::vector<glm::vec4> vec4s(std::uint64_t count, const char* what);
 
 private:
     std::uint64_t littleEndian(int byteCount, const char* what);

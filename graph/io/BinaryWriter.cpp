@@ -44,4 +44,14 @@ void BinaryWriter::vec2s(std::span<const glm::vec2> values) {
     }
 }
 
+void BinaryWriter::vec4s(std::span<const glm::vec4> values) {
+    makeRoom(16 * values.size());
+    for (const glm::vec4& v : values) {
+        f32(v.x);
+        f32(v.y);
+        f32(v.z);
+        f32(v.w);
+    }
+}
+
 } // namespace arcomp

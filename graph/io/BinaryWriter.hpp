@@ -35,6 +35,7 @@ public:
     void u32s(std::span<const std::uint32_t> values);
     void vec3s(std::span<const glm::vec3> values);
     void vec2s(std::span<const glm::vec2> values);
+    void vec4s(std::span<const glm::vec4> values);
 
     const std::vector<std::byte>& bytes() const { return bytes_; }
     std::vector<std::byte> take() { return std::move(bytes_); }

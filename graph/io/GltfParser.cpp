@@ -11,9 +11,11 @@
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <set>
 
 namespace arcomp {
@@ -24,7 +26,8 @@ namespace {
 
 // Extensions whose absence from our support would change what is drawn, and
 // which we do support.
-const std::set<std::string> kSupportedRequired{"KHR_materials_unlit", "KHR_mesh_quantization"};
+const std::set<std::string> kSupportedRequired{"KHR_materials_unlit", "KHR_mesh_quantization", "KHR_texture_transform",
+                                               "KHR_materials_emissive_strength"};
 
 // The largest element count we accept for an accessor without a buffer view
 // (all zeros, possibly sparse): real data is bounded by its buffer's size.
@@ -219,6 +222,12 @@ public:
 
     std::size_t count(std::size_t index, const std::string& usePointer) const {
         return accessor(index, usePointer).count;
+    }
+
+    // The accessor, checked as readFloats checks it, for attributes that come
+    // in more than one shape (COLOR_0: VEC3 or VEC4, normalized integers).
+    const tinygltf::Accessor& describe(std::size_t index, const std::string& usePointer) const {
+        return accessor(index, usePointer);
     }
 
 private:
@@ -431,6 +440,191 @@ Image toRgba8(const tinygltf::Image& src) {
     return out;
 }
 
+
+// The GL enum values glTF's samplers hold.
+constexpr int kGlNearest = 9728, kGlLinear = 9729, kGlNearestMipmapNearest = 9984, kGlLinearMipmapNearest = 9985,
+              kGlNearestMipmapLinear = 9986, kGlLinearMipmapLinear = 9987;
+constexpr int kGlClampToEdge = 33071, kGlMirroredRepeat = 33648, kGlRepeat = 10497;
+
+// glTF leaves an absent filter to the implementation (tinygltf: -1), which
+// takes Sampler's defaults. A value outside the spec's list fails, as the
+// validator makes it an error (VALUE_NOT_IN_LIST): such a file was not
+// written by a tool that knew what it meant.
+Sampler toSampler(const tinygltf::Sampler& src, std::size_t index, const GltfReader& reader) {
+    const std::string where = ptr("samplers", index);
+    Sampler out;
+    const auto filter = [&](int gl, const char* field, bool minification, TextureFilter& to) {
+        switch (gl) {
+        case -1: return;
+        case kGlNearest: to = TextureFilter::Nearest; return;
+        case kGlLinear: to = TextureFilter::Linear; return;
+        default: break;
+        }
+        if (minification) {
+            switch (gl) {
+            case kGlNearestMipmapNearest: to = TextureFilter::NearestMipmapNearest; return;
+            case kGlLinearMipmapNearest: to = TextureFilter::LinearMipmapNearest; return;
+            case kGlNearestMipmapLinear: to = TextureFilter::NearestMipmapLinear; return;
+            case kGlLinearMipmapLinear: to = TextureFilter::LinearMipmapLinear; return;
+            default: break;
+            }
+        }
+        reader.fail(where + "/" + field, "is " + std::to_string(gl) + ", expected " +
+                                             (minification ? "9728, 9729 or 9984 to 9987 (NEAREST, LINEAR or a mipmap filter)"
+                                                           : "9728 (NEAREST) or 9729 (LINEAR)"));
+    };
+    const auto wrap = [&](int gl, const char* field) {
+        switch (gl) {
+        case -1:  // tinygltf's "unset", as for the filters: the default
+        case kGlRepeat: return TextureWrap::Repeat;
+        case kGlClampToEdge: return TextureWrap::ClampToEdge;
+        case kGlMirroredRepeat: return TextureWrap::MirroredRepeat;
+        default:
+            reader.fail(where + "/" + field, "is " + std::to_string(gl) +
+                                                 ", expected 10497 (REPEAT), 33071 (CLAMP_TO_EDGE) or 33648 (MIRRORED_REPEAT)");
+        }
+    };
+    filter(src.magFilter, "magFilter", false, out.magFilter);
+    filter(src.minFilter, "minFilter", true, out.minFilter);
+    out.wrapS = wrap(src.wrapS, "wrapS");
+    out.wrapT = wrap(src.wrapT, "wrapT");
+    return out;
+}
+
+float finiteNumber(const tinygltf::Value& v, const std::string& where, const GltfReader& reader) {
+    if (!v.IsNumber() || !std::isfinite(v.GetNumberAsDouble())) reader.fail(where, "must be a finite number");
+    return static_cast<float>(v.GetNumberAsDouble());
+}
+
+glm::vec2 finitePair(const tinygltf::Value& v, const std::string& where, const GltfReader& reader) {
+    if (!v.IsArray() || v.ArrayLen() != 2) reader.fail(where, "must be an array of 2 numbers");
+    return {finiteNumber(v.Get(0), where + "/0", reader), finiteNumber(v.Get(1), where + "/1", reader)};
+}
+
+int texCoordSet(const tinygltf::Value& v, const std::string& where, const GltfReader& reader) {
+    const double d = v.IsNumber() ? v.GetNumberAsDouble() : -1.0;
+    if (!(d >= 0.0 && d <= 1e6 && d == std::floor(d)))
+        reader.fail(where, "must be an integer of 0 or more (the n of TEXCOORD_n)");
+    return static_cast<int>(d);
+}
+
+// KHR_texture_transform on one textureInfo; its texCoord replaces the
+// textureInfo's own.
+TextureTransform readTransform(const tinygltf::Value& ext, const std::string& where, int& texCoord,
+                               const GltfReader& reader) {
+    if (!ext.IsObject()) reader.fail(where, "must be an object");
+    TextureTransform t;
+    if (ext.Has("offset")) t.offset = finitePair(ext.Get("offset"), where + "/offset", reader);
+    if (ext.Has("rotation")) t.rotation = finiteNumber(ext.Get("rotation"), where + "/rotation", reader);
+    if (ext.Has("scale")) t.scale = finitePair(ext.Get("scale"), where + "/scale", reader);
+    if (ext.Has("texCoord")) texCoord = texCoordSet(ext.Get("texCoord"), where + "/texCoord", reader);
+    return t;
+}
+
+// The JSON names of Material::textures()'s slots, in its order, and how
+// inspect and warnings call them.
+constexpr std::array<const char*, 5> kSlotPointers{"pbrMetallicRoughness/baseColorTexture",
+                                                   "pbrMetallicRoughness/metallicRoughnessTexture", "normalTexture",
+                                                   "occlusionTexture", "emissiveTexture"};
+constexpr std::array<const char*, 5> kSlotNames{"base colour", "metallic-roughness", "normal", "occlusion", "emissive"};
+
+// What every material's textures need, checked once: each texture's image
+// and sampler exist, and the samplers in arcomp's terms.
+struct TextureTables {
+    const tinygltf::Model& model;
+    const std::vector<Image>& images;
+    std::vector<Sampler> samplers;
+};
+
+TextureTables textureTables(const tinygltf::Model& model, const std::vector<Image>& images, const GltfReader& reader) {
+    TextureTables tables{model, images, {}};
+    for (std::size_t i = 0; i < model.samplers.size(); ++i) tables.samplers.push_back(toSampler(model.samplers[i], i, reader));
+    for (std::size_t i = 0; i < model.textures.size(); ++i) {
+        const tinygltf::Texture& t = model.textures[i];
+        if (t.source < -1 || t.source >= static_cast<int>(images.size()))
+            reader.fail(ptr("textures", i, "source"), "image " + std::to_string(t.source) + " does not exist (" +
+                                                          std::to_string(images.size()) + " images)");
+        if (t.sampler < -1 || t.sampler >= static_cast<int>(tables.samplers.size()))
+            reader.fail(ptr("textures", i, "sampler"), "sampler " + std::to_string(t.sampler) + " does not exist (" +
+                                                           std::to_string(tables.samplers.size()) + " samplers)");
+    }
+    return tables;
+}
+
+// Any slot's textureInfo (tinygltf has a type for plain, normal and
+// occlusion ones). `where` points at the textureInfo. An image that did not
+// decode leaves the slot empty; its warning was given when it failed.
+template <class Info>
+TextureRef readTexture(const Info& info, const std::string& where, const TextureTables& tables, const GltfReader& reader) {
+    TextureRef ref;
+    if (info.index == -1) return ref;  // tinygltf's "no such textureInfo"
+    if (info.index < 0 || static_cast<std::size_t>(info.index) >= tables.model.textures.size())
+        reader.fail(where + "/index", "texture " + std::to_string(info.index) + " does not exist (" +
+                                          std::to_string(tables.model.textures.size()) + " textures)");
+    if (info.texCoord < 0)
+        reader.fail(where + "/texCoord", "is " + std::to_string(info.texCoord) + ", expected 0 or more (the n of TEXCOORD_n)");
+    ref.texCoord = info.texCoord;
+    if (const auto e = info.extensions.find("KHR_texture_transform"); e != info.extensions.end())
+        ref.transform = readTransform(e->second, where + "/extensions/KHR_texture_transform", ref.texCoord, reader);
+    const tinygltf::Texture& texture = tables.model.textures[static_cast<std::size_t>(info.index)];
+    if (texture.sampler >= 0) ref.sampler = tables.samplers[static_cast<std::size_t>(texture.sampler)];
+    if (texture.source >= 0 && !tables.images[static_cast<std::size_t>(texture.source)].rgba.empty())
+        ref.image = texture.source;
+    return ref;
+}
+
+std::string materialLabel(std::size_t index, const std::string& name) {
+    return "material " + std::to_string(index) + (name.empty() ? "" : " ('" + name + "')");
+}
+
+Material readMaterial(const tinygltf::Material& src, std::size_t index, const TextureTables& tables,
+                      const GltfReader& reader, std::vector<std::string>& warnings) {
+    const std::string where = ptr("materials", index);
+    Material m;
+    m.name = src.name;
+    const auto& pbr = src.pbrMetallicRoughness;
+    if (pbr.baseColorFactor.size() == 4)
+        m.baseColor = glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2],
+                                pbr.baseColorFactor[3]);
+    m.metallic = static_cast<float>(pbr.metallicFactor);
+    m.roughness = static_cast<float>(pbr.roughnessFactor);
+    m.baseColorTexture = readTexture(pbr.baseColorTexture, where + "/" + kSlotPointers[0], tables, reader);
+    m.metallicRoughnessTexture = readTexture(pbr.metallicRoughnessTexture, where + "/" + kSlotPointers[1], tables, reader);
+    m.normalTexture = readTexture(src.normalTexture, where + "/" + kSlotPointers[2], tables, reader);
+    m.normalScale = static_cast<float>(src.normalTexture.scale);
+    m.occlusionTexture = readTexture(src.occlusionTexture, where + "/" + kSlotPointers[3], tables, reader);
+    m.occlusionStrength = static_cast<float>(src.occlusionTexture.strength);
+    m.emissiveTexture = readTexture(src.emissiveTexture, where + "/" + kSlotPointers[4], tables, reader);
+    if (src.emissiveFactor.size() == 3)
+        m.emissive = glm::vec3(src.emissiveFactor[0], src.emissiveFactor[1], src.emissiveFactor[2]);
+    if (const auto e = src.extensions.find("KHR_materials_emissive_strength"); e != src.extensions.end()) {
+        const std::string at = where + "/extensions/KHR_materials_emissive_strength";
+        if (!e->second.IsObject()) reader.fail(at, "must be an object");
+        if (e->second.Has("emissiveStrength")) {
+            m.emissiveStrength = finiteNumber(e->second.Get("emissiveStrength"), at + "/emissiveStrength", reader);
+            if (m.emissiveStrength < 0.0f) reader.fail(at + "/emissiveStrength", "is negative, expected 0 or more");
+        }
+    }
+    m.alphaMode = src.alphaMode == "BLEND" ? AlphaMode::Blend : src.alphaMode == "MASK" ? AlphaMode::Mask
+                                                                                        : AlphaMode::Opaque;
+    m.alphaCutoff = static_cast<float>(src.alphaCutoff);
+    m.doubleSided = src.doubleSided;
+    m.unlit = src.extensions.count("KHR_materials_unlit") > 0;
+
+    // Geometry carries TEXCOORD_0 and TEXCOORD_1 only; a texture mapped by
+    // another set is drawn as if absent rather than with the wrong uvs.
+    const auto slots = m.textures();
+    for (std::size_t k = 0; k < slots.size(); ++k) {
+        if (slots[k]->texCoord <= 1) continue;
+        if (slots[k]->present())
+            warnings.push_back(where + "/" + kSlotPointers[k] + ": reads TEXCOORD_" + std::to_string(slots[k]->texCoord) +
+                               ", arcomp reads TEXCOORD_0 and TEXCOORD_1 only; " + materialLabel(index, m.name) +
+                               " drawn without its " + kSlotNames[k] + " texture");
+        *slots[k] = TextureRef{};
+    }
+    return m;
+}
+
 } // namespace
 
 ParsedModel parseGltf(const fs::path& file) {
@@ -478,34 +672,11 @@ ParsedModel parseGltf(const fs::path& file) {
 
     for (std::size_t i = 0; i < model.images.size(); ++i) out.images.push_back(toRgba8(model.images[i]));
 
-    // Materials; a default one serves primitives that name none.
-    for (std::size_t i = 0; i < model.materials.size(); ++i) {
-        const tinygltf::Material& src = model.materials[i];
-        Material m;
-        m.name = src.name;
-        const auto& pbr = src.pbrMetallicRoughness;
-        if (pbr.baseColorFactor.size() == 4)
-            m.baseColor = glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2],
-                                    pbr.baseColorFactor[3]);
-        m.metallic = static_cast<float>(pbr.metallicFactor);
-        m.roughness = static_cast<float>(pbr.roughnessFactor);
-        if (const int t = pbr.baseColorTexture.index; t >= 0) {
-            if (static_cast<std::size_t>(t) >= model.textures.size())
-                reader.fail(ptr("materials", i) + "/pbrMetallicRoughness/baseColorTexture/index",
-                            "texture " + std::to_string(t) + " does not exist");
-            const int source = model.textures[static_cast<std::size_t>(t)].source;
-            if (source >= static_cast<int>(model.images.size()))
-                reader.fail(ptr("textures", static_cast<std::size_t>(t), "source"),
-                            "image " + std::to_string(source) + " does not exist");
-            if (source >= 0 && !out.images[static_cast<std::size_t>(source)].rgba.empty()) m.baseColorTexture.image = source;
-        }
-        m.alphaMode = src.alphaMode == "BLEND" ? AlphaMode::Blend : src.alphaMode == "MASK" ? AlphaMode::Mask
-                                                                                            : AlphaMode::Opaque;
-        m.alphaCutoff = static_cast<float>(src.alphaCutoff);
-        m.doubleSided = src.doubleSided;
-        m.unlit = src.extensions.count("KHR_materials_unlit") > 0;
-        out.materials.push_back(std::move(m));
-    }
+    // Materials; a default one serves primitives that name none. Every
+    // texture and sampler is checked, used or not, like the meshes below.
+    const TextureTables textures = textureTables(model, out.images, reader);
+    for (std::size_t i = 0; i < model.materials.size(); ++i)
+        out.materials.push_back(readMaterial(model.materials[i], i, textures, reader, out.warnings));
     const auto defaultMaterial = static_cast<std::uint32_t>(out.materials.size());
     out.materials.push_back(Material{.name = "default"});
 
@@ -551,6 +722,34 @@ ParsedModel parseGltf(const fs::path& file) {
         for (std::size_t i = 0; i < nodeCount; ++i)
             if (parentOf[i] < 0) roots.push_back(static_cast<int>(i));
     }
+
+    // A texture whose TEXCOORD_n a primitive lacks cannot be drawn on it; the
+    // primitive gets a copy of its material without such slots, one copy
+    // per material and set of slots, and the other primitives keep theirs.
+    std::map<std::pair<std::uint32_t, unsigned>, std::uint32_t> withoutSlots;
+    auto drawableMaterial = [&](std::uint32_t material, const Geometry& g, const std::string& where) {
+        const Material& m = out.materials[material];
+        const auto slots = m.textures();
+        unsigned dropped = 0;
+        for (std::size_t k = 0; k < slots.size(); ++k) {
+            const bool lacks = slots[k]->texCoord == 1 ? g.texcoords1.empty() : g.texcoords.empty();
+            if (!slots[k]->present() || !lacks) continue;
+            dropped |= 1u << k;
+            out.warnings.push_back(where + ": " + materialLabel(material, m.name) + " maps its " + kSlotNames[k] +
+                                   " texture with TEXCOORD_" + std::to_string(slots[k]->texCoord) +
+                                   ", which the primitive lacks; drawn without that texture");
+        }
+        if (dropped == 0) return material;
+        const auto [at, added] = withoutSlots.try_emplace({material, dropped}, static_cast<std::uint32_t>(out.materials.size()));
+        if (added) {
+            Material copy = m;
+            const auto copySlots = copy.textures();
+            for (std::size_t k = 0; k < copySlots.size(); ++k)
+                if (dropped & (1u << k)) *copySlots[k] = TextureRef{};
+            out.materials.push_back(std::move(copy));
+        }
+        return at->second;
+    };
 
     // Each (mesh, primitive) becomes one geometry, shared by every node that
     // uses the mesh. Every mesh is checked, used or not: a file that holds
@@ -619,6 +818,61 @@ ParsedModel parseGltf(const fs::path& file) {
                 g.texcoords.resize(vertexCount);
                 std::memcpy(g.texcoords.data(), v.data(), v.size() * sizeof(float));
             }
+            if (auto t = prim.attributes.find("TEXCOORD_1"); t != prim.attributes.end()) {
+                sameCount("TEXCOORD_1", static_cast<std::size_t>(t->second));
+                const auto v = reader.readFloats(static_cast<std::size_t>(t->second), attributePointer("TEXCOORD_1"),
+                                                 TINYGLTF_TYPE_VEC2, floatOrQuantized);
+                g.texcoords1.resize(vertexCount);
+                std::memcpy(g.texcoords1.data(), v.data(), v.size() * sizeof(float));
+            }
+            if (auto c = prim.attributes.find("COLOR_0"); c != prim.attributes.end()) {
+                const auto index = static_cast<std::size_t>(c->second);
+                const std::string use = attributePointer("COLOR_0");
+                sameCount("COLOR_0", index);
+                // The spec's forms: VEC3 or VEC4, of floats or of normalized
+                // unsigned bytes or shorts.
+                const tinygltf::Accessor& a = reader.describe(index, use);
+                if (a.type != TINYGLTF_TYPE_VEC3 && a.type != TINYGLTF_TYPE_VEC4)
+                    reader.fail(ptr("accessors", index, "type"),
+                                std::string("is ") + typeName(a.type) + ", expected VEC3 or VEC4 (used by " + use + ")");
+                if (a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !a.normalized &&
+                    (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                     a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT))
+                    reader.fail(ptr("accessors", index, "normalized"),
+                                "is false; unsigned byte or short colours must be normalized (used by " + use + ")");
+                const auto v = reader.readFloats(index, use, a.type,
+                                                 CT{TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                                    TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
+                const std::size_t n = a.type == TINYGLTF_TYPE_VEC4 ? 4 : 3;
+                g.colors.resize(vertexCount);
+                // Float colours outside [0, 1] break the spec, not the drawing:
+                // clamped, as a normalized integer would have been.
+                for (std::size_t i = 0; i < vertexCount; ++i)
+                    g.colors[i] = glm::clamp(glm::vec4(v[i * n], v[i * n + 1], v[i * n + 2], n == 4 ? v[i * n + 3] : 1.0f),
+                                             0.0f, 1.0f);
+            }
+            if (auto t = prim.attributes.find("TANGENT"); t != prim.attributes.end()) {
+                const auto index = static_cast<std::size_t>(t->second);
+                sameCount("TANGENT", index);
+                const CT tangentTypes = quantized ? CT{TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE,
+                                                       TINYGLTF_COMPONENT_TYPE_SHORT}
+                                                  : CT{TINYGLTF_COMPONENT_TYPE_FLOAT};
+                const auto v = reader.readFloats(index, attributePointer("TANGENT"), TINYGLTF_TYPE_VEC4, tangentTypes);
+                if (g.normals.empty()) {
+                    // The spec: without normals, flat ones are computed and the
+                    // tangents ignored; they could not match computed normals.
+                    out.warnings.push_back(attributePointer("TANGENT") + ": ignored, the primitive has no NORMAL");
+                } else {
+                    // Like the normals: unit length, and w a sign, whatever the
+                    // file's rounding.
+                    g.tangents.resize(vertexCount);
+                    for (std::size_t i = 0; i < vertexCount; ++i) {
+                        const glm::vec3 xyz(v[i * 4], v[i * 4 + 1], v[i * 4 + 2]);
+                        const float len = glm::length(xyz);
+                        g.tangents[i] = glm::vec4(len > 0.0f ? xyz / len : glm::vec3(1, 0, 0), v[i * 4 + 3] < 0.0f ? -1.0f : 1.0f);
+                    }
+                }
+            }
             std::vector<std::uint32_t> indices;
             if (prim.indices >= 0) {
                 indices = reader.readIndices(static_cast<std::size_t>(prim.indices), where + "/indices", vertexCount);
@@ -628,6 +882,12 @@ ParsedModel parseGltf(const fs::path& file) {
             }
             g.indices = triangulate(mode, std::move(indices));
             g.finalize();
+            material = drawableMaterial(material, g, where);
+            if (const TextureRef& normalMap = out.materials[material].normalTexture; normalMap.present() && g.tangents.empty()) {
+                g.tangents = computeTangents(g.positions, g.normals, normalMap.texCoord == 1 ? g.texcoords1 : g.texcoords,
+                                             g.indices);
+                g.tangentsGenerated = true;
+            }
             const auto id = static_cast<std::uint32_t>(out.geometries.size());
             out.geometries.push_back(std::move(g));
             parts.push_back({id, material});

@@ -14,7 +14,14 @@ namespace {
 // Names unique to this format, so that a unity build may join this file
 // with the other formats' readers.
 constexpr char kLodMagic[8] = {'A', 'R', 'C', 'O', 'M', 'P', 'L', 'D'};
-constexpr std::uint32_t kLodHasNormals = 1u, kLodHasTexcoords = 2u;
+constexpr std::uint32_t kLodHasNormals = 1u, kLodHasTexcoords = 2u, kLodHasTexcoords1 = 4u, kLodHasTangents = 8u,
+                        kLodTangentsGenerated = 16u;
+constexpr std::uint32_t kLodKnownFlags =
+    kLodHasNormals | kLodHasTexcoords | kLodHasTexcoords1 | kLodHasTangents | kLodTangentsGenerated;
+
+bool perVertex(const auto& attribute, const Geometry& g) {
+    return !attribute.empty() && attribute.size() == g.positions.size();
+}
 
 } // namespace
 
@@ -25,16 +32,20 @@ void writeLodFile(const std::filesystem::path& file, const std::vector<LodLevel>
     out.u32(static_cast<std::uint32_t>(levels.size()));
     for (const LodLevel& l : levels) {
         const Geometry& g = l.geometry;
-        const bool normals = g.normals.size() == g.positions.size() && !g.normals.empty();
-        const bool texcoords = g.texcoords.size() == g.positions.size() && !g.texcoords.empty();
+        const bool normals = perVertex(g.normals, g), texcoords = perVertex(g.texcoords, g);
+        const bool texcoords1 = perVertex(g.texcoords1, g), tangents = perVertex(g.tangents, g);
         out.f32(l.ratio);
         out.f32(l.error);
         out.u32(static_cast<std::uint32_t>(g.positions.size()));
         out.u32(static_cast<std::uint32_t>(g.indices.size()));
-        out.u32((normals ? kLodHasNormals : 0u) | (texcoords ? kLodHasTexcoords : 0u));
+        out.u32((normals ? kLodHasNormals : 0u) | (texcoords ? kLodHasTexcoords : 0u) |
+                (texcoords1 ? kLodHasTexcoords1 : 0u) | (tangents ? kLodHasTangents : 0u) |
+                (tangents && g.tangentsGenerated ? kLodTangentsGenerated : 0u));
         out.vec3s(g.positions);
         if (normals) out.vec3s(g.normals);
         if (texcoords) out.vec2s(g.texcoords);
+        if (texcoords1) out.vec2s(g.texcoords1);
+        if (tangents) out.vec4s(g.tangents);
         out.u32s(g.indices);
     }
     writeFileAtomically(file, out.bytes());
@@ -60,12 +71,19 @@ std::vector<LodLevel> parseLodFile(std::span<const unsigned char> bytes, const s
         const auto vertices = r.u32("a level header");
         const auto indices = r.u32("a level header");
         const auto flags = r.u32("a level header");
-        if (flags & ~(kLodHasNormals | kLodHasTexcoords)) r.fail(where + ": unknown flags " + std::to_string(flags));
+        if (flags & ~kLodKnownFlags) r.fail(where + ": unknown flags " + std::to_string(flags));
+        if ((flags & kLodTangentsGenerated) && !(flags & kLodHasTangents))
+            r.fail(where + ": flags " + std::to_string(flags) + " mark generated tangents but hold none");
         if (indices % 3 != 0) r.fail(where + ": index count " + std::to_string(indices) + " is not a multiple of 3");
         Geometry& g = l.geometry;
         g.positions = r.vec3s(vertices, "positions");
         if (flags & kLodHasNormals) g.normals = r.vec3s(vertices, "normals");
         if (flags & kLodHasTexcoords) g.texcoords = r.vec2s(vertices, "texcoords");
+        if (flags & kLodHasTexcoords1) g.texcoords1 = r.vec2s(vertices, "texcoords1");
+        if (flags & kLodHasTangents) {
+            g.tangents = r.vec4s(vertices, "tangents");
+            g.tangentsGenerated = (flags & kLodTangentsGenerated) != 0;
+        }
         r.needItems(indices, 4, "indices");
         g.indices.resize(indices);
         for (std::uint32_t& index : g.indices) {
@@ -93,8 +111,11 @@ bool madeFrom(const std::vector<LodLevel>& levels, const Geometry& mesh, std::sp
     if (levels.size() != ratios.size()) return false;
     for (std::size_t i = 0; i < levels.size(); ++i)
         if (levels[i].ratio != ratios[i]) return false;
+    // A file from before the mesh had some attribute would load the levels
+    // without it; the attributes the format holds must match too.
     const Geometry& full = levels[0].geometry;
-    return full.positions == mesh.positions && full.indices == mesh.indices;
+    return full.positions == mesh.positions && full.indices == mesh.indices && full.texcoords == mesh.texcoords &&
+           full.texcoords1 == mesh.texcoords1 && full.tangents == mesh.tangents;
 }
 
 } // namespace

@@ -7,9 +7,15 @@
 // Layout, little-endian, version 1:
 //   "ARCOMPLD" (8 bytes), u32 version, u32 level count (1..8);
 //   per level: f32 ratio, f32 error, u32 vertex count, u32 index count,
-//   u32 flags (bit 0: normals, bit 1: texcoords), then positions (3 f32 each),
-//   normals (3 f32 each) if flagged, texcoords (2 f32 each) if flagged,
-//   indices (u32, a multiple of 3, each below the vertex count).
+//   u32 flags (bit 0: normals, bit 1: texcoords, bit 2: texcoords1, bit 3:
+//   tangents, bit 4: the tangents were generated), then positions (3 f32
+//   each), normals (3 f32 each) if flagged, texcoords (2 f32 each) if
+//   flagged, texcoords1 (2 f32 each) if flagged, tangents (4 f32 each, w the
+//   bitangent's sign) if flagged, indices (u32, a multiple of 3, each below
+//   the vertex count).
+// Bits 2 to 4 came later without a new version: every file written before
+// reads as it did, and a reader from before refuses the new bits as unknown
+// flags, so the cache is made again rather than read without them.
 // The reader checks every count against the bytes left before it allocates,
 // and every value it reads; errors name the file and the byte or level.
 

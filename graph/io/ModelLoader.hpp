@@ -4,7 +4,11 @@
 //   Scene scene;
 //   LoadedModel m = loadModel("bunny.obj", scene, scene.root());
 //   // m.root is a group named after the file; m.warnings lists what was
-//   // skipped (points and lines, images that do not decode, ...)
+//   // skipped (points and lines, images that do not decode, textures on a
+//   // TEXCOORD_n the primitive lacks, ...)
+//
+// glTF normal maps on primitives without TANGENT get tangents generated
+// (computeTangents, Geometry::tangentsGenerated).
 //
 // A model that would be unsafe to draw (indices or accessors out of range,
 // wrong component types, cycles in the node graph, required extensions we do

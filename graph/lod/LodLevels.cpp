@@ -22,10 +22,15 @@ Geometry compacted(const Geometry& g, const std::vector<std::uint32_t>& indices)
             out.positions.push_back(g.positions[i]);
             if (!g.normals.empty()) out.normals.push_back(g.normals[i]);
             if (!g.texcoords.empty()) out.texcoords.push_back(g.texcoords[i]);
+            if (!g.texcoords1.empty()) out.texcoords1.push_back(g.texcoords1[i]);
+            if (!g.tangents.empty()) out.tangents.push_back(g.tangents[i]);
             if (!g.colors.empty()) out.colors.push_back(g.colors[i]);
         }
         out.indices.push_back(remap[i]);
     }
+    // A kept vertex keeps its tangent: the full mesh's surface frame, close
+    // enough on the coarser surface that a level is drawn at a distance.
+    out.tangentsGenerated = g.tangentsGenerated;
     out.finalize();
     return out;
 }

@@ -98,3 +98,32 @@ TEST(GltfCorpus, everyFileLoadsOrIsRejectedCleanlyAsTheValidatorSays) {
     EXPECT_EQ(files, 263);
     EXPECT_EQ(validRejected, static_cast<int>(kValidButNotLoaded.size()));
 }
+
+// Where the validator finds a material's texture, or a texture's image or
+// sampler, missing, the loader refuses the file at the same JSON pointer.
+TEST(GltfCorpus, unresolvedTextureReferencesAreRefusedWhereTheValidatorPoints) {
+    const fs::path corpus = arcomp::test::sharedData() / "gltf/validator-corpus";
+    if (!fs::exists(corpus)) GTEST_SKIP() << "shared test data is absent";
+    const std::regex unresolved(
+        R"re("code"\s*:\s*"UNRESOLVED_REFERENCE"[^}]*"pointer"\s*:\s*"(/(materials|textures)/[^"]*)")re");
+    int files = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(corpus)) {
+        const fs::path file = entry.path();
+        if (file.extension() != ".gltf" && file.extension() != ".glb") continue;
+        std::ifstream in(file.string() + ".report.json");
+        std::stringstream s;
+        s << in.rdbuf();
+        const std::string report = s.str();
+        std::smatch m;
+        if (!std::regex_search(report, m, unresolved)) continue;
+        ++files;
+        Scene scene;
+        try {
+            loadModel(file, scene, scene.root());
+            ADD_FAILURE() << file << " loaded; the validator finds " << m[1] << " unresolved";
+        } catch (const ModelError& e) {
+            EXPECT_EQ(e.where, m[1].str()) << e.what();
+        }
+    }
+    EXPECT_EQ(files, 7);  // five material slots, a texture's source and its sampler
+}

@@ -170,3 +170,66 @@ TEST(LodFile, loadOrSimplifyReusesLevelsMadeFromTheSameMeshAndRatios) {
     EXPECT_EQ(damaged.levels.size(), 3u);
     std::filesystem::remove(file);
 }
+
+namespace {
+
+// A sphere that carries every attribute the levels and the file keep:
+// TEXCOORD_1 is TEXCOORD_0 mirrored in u, and tangents generated from it.
+Geometry sphereWithEveryAttribute(int slices, int stacks) {
+    Geometry g = makeUvSphere(1.0f, slices, stacks);
+    for (const glm::vec2& uv : g.texcoords) g.texcoords1.push_back({1.0f - uv.x, uv.y});
+    g.tangents = computeTangents(g.positions, g.normals, g.texcoords, g.indices);
+    g.tangentsGenerated = true;
+    return g;
+}
+
+} // namespace
+
+TEST(LodLevels, simplifiedLevelsKeepEachVertexsTexcoord1AndTangent) {
+    const Geometry sphere = sphereWithEveryAttribute(32, 16);
+    const std::vector<LodLevel> levels = simplifyLevels(sphere, kRatios);
+    for (int i = 1; i < 3; ++i) {
+        const Geometry& g = levels[i].geometry;
+        ASSERT_EQ(g.texcoords1.size(), g.positions.size()) << "level " << i;
+        ASSERT_EQ(g.tangents.size(), g.positions.size()) << "level " << i;
+        EXPECT_TRUE(g.tangentsGenerated);
+        for (std::size_t v = 0; v < g.positions.size(); ++v) {
+            // The sphere's (position, TEXCOORD_0) pairs are unique: they name
+            // the vertex a kept one came from.
+            std::size_t from = sphere.positions.size();
+            for (std::size_t o = 0; o < sphere.positions.size() && from == sphere.positions.size(); ++o)
+                if (sphere.positions[o] == g.positions[v] && sphere.texcoords[o] == g.texcoords[v]) from = o;
+            ASSERT_LT(from, sphere.positions.size());
+            EXPECT_EQ(g.texcoords1[v], sphere.texcoords1[from]);
+            EXPECT_EQ(g.tangents[v], sphere.tangents[from]);
+        }
+    }
+}
+
+TEST(LodFile, roundTripKeepsTexcoord1AndTangents) {
+    std::vector<LodLevel> levels = simplifyLevels(sphereWithEveryAttribute(16, 8), kRatios);
+    levels[2].geometry.tangentsGenerated = false;  // as if the file had brought them
+    const std::vector<LodLevel> back = parseLodFile(fileBytes(levels), "x.lod");
+    ASSERT_EQ(back.size(), levels.size());
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+        EXPECT_EQ(back[i].geometry.texcoords1, levels[i].geometry.texcoords1);
+        EXPECT_EQ(back[i].geometry.tangents, levels[i].geometry.tangents);
+        EXPECT_EQ(back[i].geometry.tangentsGenerated, levels[i].geometry.tangentsGenerated);
+    }
+}
+
+TEST(LodFile, aCacheMadeBeforeTheMeshHadTangentsIsMadeAgain) {
+    const std::filesystem::path file =
+        std::filesystem::temp_directory_path() / ("lod_tangents_test_" + std::to_string(::getpid()) + ".lod");
+    std::filesystem::remove(file);
+    const Geometry plain = makeUvSphere(1.0f, 16, 8);
+    EXPECT_FALSE(loadOrSimplifyLevels(file, plain, kRatios).loaded);
+    const Geometry withTangents = sphereWithEveryAttribute(16, 8);
+    const LoadedOrSimplified again = loadOrSimplifyLevels(file, withTangents, kRatios);
+    EXPECT_FALSE(again.loaded) << again.note;
+    EXPECT_EQ(again.levels[1].geometry.tangents.size(), again.levels[1].geometry.positions.size());
+    const LoadedOrSimplified cached = loadOrSimplifyLevels(file, withTangents, kRatios);
+    EXPECT_TRUE(cached.loaded) << cached.note;
+    EXPECT_EQ(cached.levels[1].geometry.tangents, again.levels[1].geometry.tangents);
+    std::filesystem::remove(file);
+}

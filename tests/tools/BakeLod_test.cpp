@@ -1,6 +1,9 @@
 // `arcomp bake lod` end to end: the issue's acceptance command on the bunny.
 #include "graph/io/LodFile.hpp"
 
+#include "../support/QuadGltf.hpp"
+#include "../support/TempDir.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -35,4 +38,27 @@ TEST(BakeLod, bunnyLevelsWithinTenPercentAndFileReadsBack) {
 TEST(BakeLod, badRatiosAreBadInput) {
     EXPECT_EQ(run("bake lod /nonexistent.obj --ratios 1,2").code, 2);
     EXPECT_EQ(run("bake lod /nonexistent.obj --ratios 1,0.5").code, 2);
+}
+
+TEST(BakeLod, mergedTangentsKeepTheirFrameUnderAMirroringNode) {
+    // The quad twice, once mirrored in x; its normal map has tangents
+    // generated: (1, 0, 0, +1) on the quad as written.
+    arcomp::test::QuadGltf q;
+    q.materials = R"([{"normalTexture": {"index": 0}}])";
+    q.nodes = R"([{"mesh": 0}, {"mesh": 0, "scale": [-1, 1, 1]}])";
+    q.sceneNodes = "[0, 1]";
+    arcomp::test::TempDir dir;
+    const auto out = dir.path() / "quads.lod";
+    const auto r = run("bake lod " + dir.write("quads.gltf", q.json()).string() + " --ratios 1 --out " + out.string());
+    ASSERT_EQ(r.code, 0) << r.out;
+    const arcomp::Geometry g = arcomp::readLodFile(out).at(0).geometry;
+    ASSERT_EQ(g.tangents.size(), 8u);
+    EXPECT_TRUE(g.tangentsGenerated);
+    // The bitangent cross(n, t) * w must still be +y, up the image, on both.
+    for (std::size_t v = 0; v < 8; ++v) {
+        const glm::vec3 bitangent = glm::cross(g.normals[v], glm::vec3(g.tangents[v])) * g.tangents[v].w;
+        EXPECT_NEAR(bitangent.y, 1.0f, 1e-5f) << v;
+        EXPECT_NEAR(g.tangents[v].x, v < 4 ? 1.0f : -1.0f, 1e-5f) << v;
+    }
+    EXPECT_EQ(g.tangents[4].w, -1.0f);
 }

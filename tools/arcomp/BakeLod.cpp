@@ -17,18 +17,30 @@ namespace arcomp {
 namespace {
 
 // The model's parts placed by their nodes' matrices, as one geometry.
-// Texture coordinates survive only when every part has them.
+// An attribute survives only when every part has it: a merged array must
+// cover every vertex. Vertex colours are not merged: the .lod file does not
+// hold them.
 Geometry mergedModel(const ParsedModel& m) {
     std::vector<glm::mat4> world(m.nodes.size(), glm::mat4(1.0f));
-    bool allUv = true;
+    bool allUv = true, allUv1 = true, allTangents = true, anyGenerated = false;
     for (std::size_t n = 0; n < m.nodes.size(); ++n) {
         const ModelNode& node = m.nodes[n];
         world[n] = node.parent < 0 ? node.local : world[static_cast<std::size_t>(node.parent)] * node.local;
-        for (const MeshPart& p : node.parts) allUv = allUv && !m.geometries[p.geometry].texcoords.empty();
+        for (const MeshPart& p : node.parts) {
+            const Geometry& g = m.geometries[p.geometry];
+            allUv = allUv && !g.texcoords.empty();
+            allUv1 = allUv1 && !g.texcoords1.empty();
+            allTangents = allTangents && !g.tangents.empty();
+            anyGenerated = anyGenerated || g.tangentsGenerated;
+        }
     }
     Geometry out;
     for (std::size_t n = 0; n < m.nodes.size(); ++n) {
-        const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(world[n])));
+        const glm::mat3 linear(world[n]);
+        const glm::mat3 normalMatrix = glm::transpose(glm::inverse(linear));
+        // A mirroring matrix turns the frame's handedness: the bitangent,
+        // cross(normal, tangent) * w, keeps its direction only if w flips.
+        const float handedness = glm::determinant(linear) < 0.0f ? -1.0f : 1.0f;
         for (const MeshPart& p : m.nodes[n].parts) {
             const Geometry& g = m.geometries[p.geometry];
             const auto base = static_cast<std::uint32_t>(out.positions.size());
@@ -36,10 +48,15 @@ Geometry mergedModel(const ParsedModel& m) {
                 out.positions.push_back(glm::vec3(world[n] * glm::vec4(g.positions[v], 1.0f)));
                 out.normals.push_back(glm::normalize(normalMatrix * g.normals[v]));
                 if (allUv) out.texcoords.push_back(g.texcoords[v]);
+                if (allUv1) out.texcoords1.push_back(g.texcoords1[v]);
+                if (allTangents)
+                    out.tangents.push_back(glm::vec4(glm::normalize(linear * glm::vec3(g.tangents[v])),
+                                                     g.tangents[v].w * handedness));
             }
             for (std::uint32_t i : g.indices) out.indices.push_back(base + i);
         }
     }
+    out.tangentsGenerated = allTangents && anyGenerated;
     out.finalize();
     return out;
 }

@@ -52,6 +52,11 @@ int main(int argc, char** argv) {
     levels[1].ratio = 0.5f;
     levels[1].error = 0.01f;
     writeLodFile(out / "lod/tetra.lod", levels);
+    // The optional attributes' flags, so that mutations reach their branches.
+    levels[0].geometry.texcoords1 = g.texcoords;
+    levels[0].geometry.tangents = computeTangents(g.positions, g.normals, g.texcoords, g.indices);
+    levels[0].geometry.tangentsGenerated = true;
+    writeLodFile(out / "lod/tetra-tangents.lod", levels);
 
     SilhouetteMesh sil;
     sil.positions = g.positions;
