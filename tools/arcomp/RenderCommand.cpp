@@ -1,7 +1,8 @@
 // arcomp render <scene> --out F.png: one headless frame of a model or a
-// station config's scene.
+// station config's scene. arcomp environment --out F.hdr: the light it uses.
 
 #include "graph/core/SelectPass.hpp"
+#include "runtime/Environment.hpp"
 #include "runtime/GlContext.hpp"
 #include "runtime/ImageFile.hpp"
 #include "runtime/ImpostorBaker.hpp"
@@ -20,7 +21,8 @@ namespace arcomp {
 namespace {
 
 struct RenderOptions {
-    std::string scene, out, size = "640x480", eye, target, shading = "phong", gl = "auto";
+    std::string scene, out, size = "640x480", eye, target, shading = "phong", gl = "auto", environment = "neutral";
+    float environmentIntensity = 1.0f, lightIntensity = RenderSettings{}.lightIntensity;
 };
 
 int render(const RenderOptions& o) {
@@ -55,9 +57,11 @@ int render(const RenderOptions& o) {
     RenderTarget target(size);
     target.bind();
     Renderer renderer;
+    if (o.environment != "neutral") renderer.setEnvironment(prefilterEnvironment(loadEnvironment(o.environment)));
     DrawList list;
     select(world, view, {.shading = *shading}, list);
-    renderer.draw(scene, list, view, {.clearColor = file.background});
+    renderer.draw(scene, list, view,
+                  {.clearColor = file.background, .lightIntensity = o.lightIntensity, .environmentIntensity = o.environmentIntensity});
     std::optional<PointCloudLayer> clouds;
     if (world.pointClouds.size()) {
         clouds.emplace();
@@ -85,7 +89,29 @@ const bool registered = registerCommand(
          line.option("--target", o->target, "Point looked at X,Y,Z (default: the scene's centre)");
          line.option("--shading", o->shading, "unlit, flat, gouraud or phong").showDefault();
          line.option("--gl", o->gl, "OpenGL API: auto, gl33 or es3").showDefault();
+         line.option("--environment", o->environment, "Image-based light: neutral, or an equirectangular .hdr or .png").showDefault();
+         line.option("--environment-intensity", o->environmentIntensity, "Scales the image-based light").showDefault();
+         line.option("--light-intensity", o->lightIntensity, "The directional light, as three.js's DirectionalLight.intensity").showDefault();
          return [o] { return render(*o); };
+     }});
+
+// Writes an environment as a Radiance .hdr, so that a reference renderer
+// (three.js's RGBELoader) can be lit exactly as `render` lights.
+int writeEnvironment(const std::string& source, const std::string& out) {
+    const Environment env = environmentFromOption(source);
+    writeRadianceHdr(out, env);
+    std::cout << "wrote " << out << ": " << env.width << "x" << env.height << " equirectangular, linear RGB\n";
+    return kExitOk;
+}
+
+const bool registeredEnvironment = registerCommand(
+    {"environment", "Write the image-based light render uses (the built-in neutral one by default) as a Radiance .hdr",
+     [](CommandLine& line) {
+         auto source = std::make_shared<std::string>("neutral");
+         auto out = std::make_shared<std::string>();
+         line.option("--out", *out, ".hdr file to write").required();
+         line.option("--source", *source, "neutral, or an equirectangular .hdr or .png to convert").showDefault();
+         return [source, out] { return writeEnvironment(*source, *out); };
      }});
 
 } // namespace
