@@ -50,6 +50,10 @@ TEST(Environment, neutralStudioIsGreyBrightAboveDarkBelowAndRepeatable) {
     EXPECT_GT(up.r, 2.0f * horizon.r);
     EXPECT_GT(horizon.r, 2.0f * down.r);
     EXPECT_EQ(neutralEnvironment().radiance, env.radiance);
+    const ImageBasedLight light = prefilterEnvironment(env);
+    EXPECT_NEAR(diffuseRadiance(light, {0, 1, 0}).g, 0.8f, 0.15f) << "a white floor-facing-up surface's ambient";
+    EXPECT_NEAR(diffuseRadiance(light, {0, 0, -1}).g, 0.4f, 0.1f);
+    EXPECT_LT(diffuseRadiance(light, {0, -1, 0}).g, 0.25f);
 }
 
 TEST(Environment, radianceHdrRoundTripsWithinRgbePrecision) {
