@@ -21,8 +21,9 @@ namespace arcomp {
 namespace {
 
 struct RenderOptions {
-    std::string scene, out, size = "640x480", eye, target, shading = "phong", gl = "auto", environment = "neutral";
-    float environmentIntensity = 1.0f, lightIntensity = RenderSettings{}.lightIntensity;
+    std::string scene, out, size = "640x480", eye, target, shading = "phong", gl = "auto", environment;
+    std::optional<float> environmentIntensity;
+    float lightIntensity = RenderSettings{}.lightIntensity;
 };
 
 int render(const RenderOptions& o) {
@@ -57,11 +58,15 @@ int render(const RenderOptions& o) {
     RenderTarget target(size);
     target.bind();
     Renderer renderer;
-    if (o.environment != "neutral") renderer.setEnvironment(prefilterEnvironment(loadEnvironment(o.environment)));
+    // --environment over the config's render.environment over neutral.
+    const std::string environment = !o.environment.empty() ? o.environment
+                                    : file.environment.empty() ? std::string("neutral")
+                                                               : file.environment.string();
+    if (environment != "neutral") renderer.setEnvironment(prefilterEnvironment(loadEnvironment(environment)));
     DrawList list;
     select(world, view, {.shading = *shading}, list);
     renderer.draw(scene, list, view,
-                  {.clearColor = file.background, .lightIntensity = o.lightIntensity, .environmentIntensity = o.environmentIntensity});
+                  {.clearColor = file.background, .lightIntensity = o.lightIntensity, .environmentIntensity = o.environmentIntensity.value_or(file.environmentIntensity)});
     std::optional<PointCloudLayer> clouds;
     if (world.pointClouds.size()) {
         clouds.emplace();
@@ -82,6 +87,7 @@ const bool registered = registerCommand(
     {"render", "Render one frame of a model (.gltf, .glb, .obj) or a station config (.yaml) to a PNG",
      [](CommandLine& line) {
          auto o = std::make_shared<RenderOptions>();
+         auto environmentIntensity = std::make_shared<float>(-1.0f);  // below the range: not given
          line.option("scene", o->scene, "Model or station config").required();
          line.option("--out", o->out, "PNG file to write").required();
          line.option("--size", o->size, "Image size WIDTHxHEIGHT").showDefault();
@@ -89,10 +95,15 @@ const bool registered = registerCommand(
          line.option("--target", o->target, "Point looked at X,Y,Z (default: the scene's centre)");
          line.option("--shading", o->shading, "unlit, flat, gouraud or phong").showDefault();
          line.option("--gl", o->gl, "OpenGL API: auto, gl33 or es3").showDefault();
-         line.option("--environment", o->environment, "Image-based light: neutral, or an equirectangular .hdr or .png").showDefault();
-         line.option("--environment-intensity", o->environmentIntensity, "Scales the image-based light").showDefault();
+         line.option("--environment", o->environment,
+                     "Image-based light: neutral, or an equirectangular .hdr or .png (default: the config's, else neutral)");
+         line.option("--environment-intensity", *environmentIntensity, "Scales the image-based light (default: the config's, else 1)")
+             .range(0.0, 1000.0);
          line.option("--light-intensity", o->lightIntensity, "The directional light, as three.js's DirectionalLight.intensity").showDefault();
-         return [o] { return render(*o); };
+         return [o, environmentIntensity] {
+             if (*environmentIntensity >= 0.0f) o->environmentIntensity = *environmentIntensity;
+             return render(*o);
+         };
      }});
 
 // Writes an environment as a Radiance .hdr, so that a reference renderer
