@@ -17,10 +17,14 @@ const char* const kMeshShader = R"(
 //   0 Unlit:   base colour + emission, no light (also every KHR_materials_unlit
 //              material and coverage-only passes).
 //   1 Flat:    per-face normal from screen-space derivatives (no per-face
-//              vertices needed); the BRDF's direct light + diffuse irradiance.
-//   2 Gouraud: the BRDF's direct light and the diffuse irradiance per vertex,
+//              vertices needed); the BRDF's direct light + the irradiance as
+//              ambient light.
+//   2 Gouraud: the BRDF's direct light and the irradiance ambient per vertex,
 //              with the material's factors; textures still per pixel. No
 //              normal map, no specular image-based light.
+//   At these two levels the irradiance also stands in for the reflected
+//   environment (F0 * E / pi, what a fully rough mirror would reflect), so
+//   that metals, which have no diffuse colour, do not turn black there.
 //   3 Phong:   everything per pixel: normal map, direct light, diffuse
 //              irradiance + prefiltered specular (split sum), occlusion on
 //              the indirect light.
@@ -133,10 +137,14 @@ void main() {
     vec3 base = uBaseColor.rgb * aColor.rgb;
     vec3 f0 = mix(vec3(0.04), base, uMetallic);
     directLight(vNormal, v, f0, uRoughness, vDiffuseLight, vSpecularLight);
-    vDiffuseLight += diffuseIrradiance(vNormal);
+    vec3 ambient = diffuseIrradiance(vNormal);
+    vDiffuseLight += ambient;
+    vSpecularLight += f0 * ambient;
     if (uDoubleSided != 0) {
         directLight(-vNormal, v, f0, uRoughness, vBackDiffuseLight, vBackSpecularLight);
-        vBackDiffuseLight += diffuseIrradiance(-vNormal);
+        vec3 backAmbient = diffuseIrradiance(-vNormal);
+        vBackDiffuseLight += backAmbient;
+        vBackSpecularLight += f0 * backAmbient;
     } else {
         vBackDiffuseLight = vDiffuseLight;
         vBackSpecularLight = vSpecularLight;
@@ -223,7 +231,8 @@ void main() {
     if (dot(n, v) < 0.0) n = -n;
     vec3 diffuse, specular;
     directLight(n, v, f0, roughness, diffuse, specular);
-    vec3 lit = diffuseColor * (diffuse + diffuseIrradiance(n)) + specular;
+    vec3 ambient = diffuseIrradiance(n);
+    vec3 lit = diffuseColor * (diffuse + ambient) + specular + f0 * ambient;
 #elif SHADING == 2
     vec3 lit = gl_FrontFacing ? diffuseColor * vDiffuseLight + vSpecularLight
                               : diffuseColor * vBackDiffuseLight + vBackSpecularLight;
