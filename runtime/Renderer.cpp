@@ -113,7 +113,8 @@ void directLight(vec3 n, vec3 v, vec3 f0, float roughness, out vec3 diffuse, out
     float d = nh * nh * (a2 - 1.0) + 1.0;
     float D = a2 / (PI * d * d);
     float V = 0.5 / (nl * sqrt(nv * nv * (1.0 - a2) + a2) + nv * sqrt(nl * nl * (1.0 - a2) + a2));
-    vec3 F = f0 + (1.0 - f0) * pow(1.0 - vh, 5.0);
+    float m = 1.0 - vh, m2 = m * m;  // (1 - v.h)^5 by products: pow is a log and an exp on llvmpipe
+    vec3 F = f0 + (1.0 - f0) * (m2 * m2 * m);
     diffuse = (1.0 - F) / PI * uLightRadiance * nl;
     specular = F * D * V * uLightRadiance * nl;
 }
