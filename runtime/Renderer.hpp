@@ -26,8 +26,8 @@
 
 #include <array>
 #include <map>
-#include <tuple>
 #include <optional>
+#include <tuple>
 #include <vector>
 
 namespace arcomp {
