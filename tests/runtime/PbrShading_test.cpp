@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
 
 using namespace arcomp;
 
@@ -71,8 +72,11 @@ Image makeImage(int w, int h, const std::function<glm::u8vec4(int, int)>& texel)
 // at distance 4.83 with 45 degrees).
 const View kFront = View::lookAt({0, 0, 4.828f}, {0, 0, 0}, {0, 1, 0}, 45.0f, kSize);
 
+// The API the running test renders with: every test runs on both.
+GlRequest g_api = GlRequest::Gl33;
+
 struct Render {
-    GlRequest api = GlRequest::Gl33;
+    std::optional<GlRequest> api = std::nullopt;  // default: g_api
     Shading shading = Shading::Phong;
     RenderSettings settings{};
     const ImageBasedLight* environment = nullptr;
@@ -80,7 +84,7 @@ struct Render {
 };
 
 Image render(const std::function<void(Scene&)>& build, const Render& r = {}) {
-    auto ctx = HeadlessContext::create(r.api);
+    auto ctx = HeadlessContext::create(r.api.value_or(g_api));
     World world;
     build(world.scene);
     world.scene.update();
@@ -100,7 +104,8 @@ void addAt(Scene& scene, const glm::vec3& position, Geometry g, Material m) {
 }
 
 void saveOnFailure(const Image& img, const std::string& name) {
-    if (::testing::Test::HasFailure()) writePng(std::string(ARCOMP_TEST_OUTPUT) + "/" + name + ".png", img);
+    if (::testing::Test::HasFailure())
+        writePng(std::string(ARCOMP_TEST_OUTPUT) + "/" + name + (g_api == GlRequest::Es3 ? "-es3" : "-gl33") + ".png", img);
 }
 
 const Sampler kNearest{.magFilter = TextureFilter::Nearest, .minFilter = TextureFilter::Nearest};
@@ -114,12 +119,17 @@ TextureRef slot(int image, const Sampler& sampler, int texCoord = 0, const Textu
     return ref;
 }
 
+class PbrShading : public ::testing::TestWithParam<GlRequest> {
+protected:
+    void SetUp() override { g_api = GetParam(); }
+};
+
 constexpr Shading kLevels[] = {Shading::Unlit, Shading::Flat, Shading::Gouraud, Shading::Phong};
 
 } // namespace
 
 // The third-party car: KHR_materials_unlit, black base, colours in emission.
-TEST(PbrShading, unlitBlackBaseWithEmissionDrawsTheEmissiveColour) {
+TEST_P(PbrShading, unlitBlackBaseWithEmissionDrawsTheEmissiveColour) {
     const glm::vec3 emissive{0.2f, 0.6f, 1.0f};
     for (Shading level : kLevels) {
         const Image img = render(
@@ -135,7 +145,7 @@ TEST(PbrShading, unlitBlackBaseWithEmissionDrawsTheEmissiveColour) {
     }
 }
 
-TEST(PbrShading, emissionTimesStrengthAndTextureShowsAtEveryLevel) {
+TEST_P(PbrShading, emissionTimesStrengthAndTextureShowsAtEveryLevel) {
     for (Shading level : kLevels) {
         const Image img = render(
             [&](Scene& s) {
@@ -157,7 +167,7 @@ TEST(PbrShading, emissionTimesStrengthAndTextureShowsAtEveryLevel) {
 
 // A black dielectric in the dark shows only the directional light's GGX
 // highlight: rougher, it is dimmer and wider.
-TEST(PbrShading, highlightPeakFallsAndSpreadsAsRoughnessRises) {
+TEST_P(PbrShading, highlightPeakFallsAndSpreadsAsRoughnessRises) {
     int lastPeak = 256;
     std::size_t lastSpread = 0;
     for (float roughness : {0.25f, 0.45f, 0.7f}) {
@@ -184,7 +194,7 @@ TEST(PbrShading, highlightPeakFallsAndSpreadsAsRoughnessRises) {
 
 // Metals reflect in their own colour (F0 = base colour); a dielectric's
 // reflection (F0 = 0.04) is the light's own colour: white here.
-TEST(PbrShading, metalReflectionsTakeTheBaseColourDielectricOnesStayWhite) {
+TEST_P(PbrShading, metalReflectionsTakeTheBaseColourDielectricOnesStayWhite) {
     auto highlight = [](const glm::vec4& base, float metallic) {
         const Image img = render(
             [&](Scene& s) { addAt(s, {}, makeUvSphere(1.0f, 64, 32), {.name = "test", .baseColor = base, .metallic = metallic, .roughness = 0.5f}); },
@@ -236,7 +246,7 @@ int brightnessRange(const Image& img) {
 
 } // namespace
 
-TEST(PbrShading, normalMapShowsItsPatternUnderAGrazingLight) {
+TEST_P(PbrShading, normalMapShowsItsPatternUnderAGrazingLight) {
     const Image plain = grazingSquare(false, true);
     const Image mapped = grazingSquare(true, true);
     const Image derived = grazingSquare(true, false);
@@ -248,7 +258,7 @@ TEST(PbrShading, normalMapShowsItsPatternUnderAGrazingLight) {
     saveOnFailure(mapped, "pbr-normal-map");
 }
 
-TEST(PbrShading, occlusionDarkensTheAmbientOnly) {
+TEST_P(PbrShading, occlusionDarkensTheAmbientOnly) {
     auto squareWithOcclusion = [](float light, float environment) {
         return render(
             [&](Scene& s) {
@@ -271,7 +281,7 @@ TEST(PbrShading, occlusionDarkensTheAmbientOnly) {
     saveOnFailure(ambient, "pbr-occlusion");
 }
 
-TEST(PbrShading, maskCutoffKeepsTheTexelsAboveIt) {
+TEST_P(PbrShading, maskCutoffKeepsTheTexelsAboveIt) {
     std::size_t counts[2]{};
     int i = 0;
     for (float cutoff : {0.25f, 0.75f}) {
@@ -298,7 +308,7 @@ TEST(PbrShading, maskCutoffKeepsTheTexelsAboveIt) {
     EXPECT_NEAR(static_cast<double>(counts[1]) / square, 0.25, 0.04);
 }
 
-TEST(PbrShading, blendedSquareMixesWithTheOpaqueOneBehind) {
+TEST_P(PbrShading, blendedSquareMixesWithTheOpaqueOneBehind) {
     const Image img = render(
         [&](Scene& s) {
             addAt(s, {0, 0, -0.5f}, makeSquare(), {.name = "test", .baseColor = {1, 0, 0, 1}});
@@ -342,7 +352,7 @@ double fractionDiffering(const Image& a, const Image& b) {
 
 } // namespace
 
-TEST(PbrShading, textureTransformMovesTheCheckerByItsOffset) {
+TEST_P(PbrShading, textureTransformMovesTheCheckerByItsOffset) {
     const Image plain = texturedSquare(checker(8), kNearest);
     const Image byOneCell = texturedSquare(checker(8), kNearest, {.offset = {0.125f, 0}});
     const Image byTwoCells = texturedSquare(checker(8), kNearest, {.offset = {0.25f, 0}});
@@ -351,7 +361,7 @@ TEST(PbrShading, textureTransformMovesTheCheckerByItsOffset) {
     saveOnFailure(byOneCell, "pbr-transform");
 }
 
-TEST(PbrShading, nearestSamplingKeepsEdgesSharpLinearBlursThem) {
+TEST_P(PbrShading, nearestSamplingKeepsEdgesSharpLinearBlursThem) {
     auto midTones = [](const Image& img) {
         std::size_t n = 0;
         for (int y = 26; y < 70; ++y)
@@ -364,7 +374,7 @@ TEST(PbrShading, nearestSamplingKeepsEdgesSharpLinearBlursThem) {
     EXPECT_GT(midTones(linear), 0.3);
 }
 
-TEST(PbrShading, clampRepeatsTheEdgeTexelRepeatWrapsAround) {
+TEST_P(PbrShading, clampRepeatsTheEdgeTexelRepeatWrapsAround) {
     // Red | green, with u running 0..2 across the square.
     const Image redGreen = makeImage(2, 1, [](int x, int) { return x == 0 ? glm::u8vec4(255, 0, 0, 255) : glm::u8vec4(0, 255, 0, 255); });
     Sampler repeat = kNearest, clamp = kNearest;
@@ -378,7 +388,7 @@ TEST(PbrShading, clampRepeatsTheEdgeTexelRepeatWrapsAround) {
     EXPECT_LT(at(clamped, thirdQuarter, 48).r, 50);
 }
 
-TEST(PbrShading, aSlotReadsTheTexcoordSetItNames) {
+TEST_P(PbrShading, aSlotReadsTheTexcoordSetItNames) {
     auto square = [](int texCoord) {
         return render(
             [&](Scene& s) {
@@ -400,7 +410,7 @@ TEST(PbrShading, aSlotReadsTheTexcoordSetItNames) {
     EXPECT_GT(at(second, 60, 48).g, 200) << "TEXCOORD_1 spans the texture";
 }
 
-TEST(PbrShading, vertexColoursMultiplyTheBaseColour) {
+TEST_P(PbrShading, vertexColoursMultiplyTheBaseColour) {
     const Image img = render(
         [&](Scene& s) {
             Geometry g = makeSquare();
@@ -415,7 +425,7 @@ TEST(PbrShading, vertexColoursMultiplyTheBaseColour) {
     EXPECT_LT(right.r, 50);
 }
 
-TEST(PbrShading, singleSidedBacksAreCulledDoubleSidedOnesLitWithTheNormalFlipped) {
+TEST_P(PbrShading, singleSidedBacksAreCulledDoubleSidedOnesLitWithTheNormalFlipped) {
     const View behind = View::lookAt({0, 0, -4.828f}, {0, 0, 0}, {0, 1, 0}, 45.0f, kSize);
     auto back = [&](Shading level, bool doubleSided, const glm::vec3& light) {
         return render(
@@ -434,7 +444,7 @@ TEST(PbrShading, singleSidedBacksAreCulledDoubleSidedOnesLitWithTheNormalFlipped
     }
 }
 
-TEST(PbrShading, unlitLevelIgnoresTheLightTopLevelFollowsTheEnvironment) {
+TEST_P(PbrShading, unlitLevelIgnoresTheLightTopLevelFollowsTheEnvironment) {
     auto sphere = [](Shading level, const RenderSettings& settings, const ImageBasedLight* environment) {
         return render([&](Scene& s) { addAt(s, {}, makeUvSphere(1.0f, 48, 24), {.name = "test", .baseColor = {0.9f, 0.9f, 0.9f, 1}, .roughness = 0.5f}); },
                       {.shading = level, .settings = settings, .environment = environment});
@@ -456,7 +466,7 @@ TEST(PbrShading, unlitLevelIgnoresTheLightTopLevelFollowsTheEnvironment) {
     saveOnFailure(reddish, "pbr-red-environment");
 }
 
-TEST(PbrShading, desktopAndEsAgreeOnTheFullModel) {
+TEST(PbrShadingApis, desktopAndEsAgreeOnTheFullModel) {
     auto scene = [](Scene& s) {
         Geometry g = makeUvSphere(1.0f, 48, 24);
         addAt(s, {}, std::move(g), {.name = "test", .baseColor = {0.9f, 0.5f, 0.2f, 1}, .metallic = 0.5f, .roughness = 0.4f});
@@ -468,3 +478,6 @@ TEST(PbrShading, desktopAndEsAgreeOnTheFullModel) {
     EXPECT_LT(sum / static_cast<double>(gl.rgba.size()), 0.5);
     EXPECT_GT(covered(es), 1000u);
 }
+
+INSTANTIATE_TEST_SUITE_P(Apis, PbrShading, ::testing::Values(GlRequest::Gl33, GlRequest::Es3),
+                         [](const auto& info) { return info.param == GlRequest::Gl33 ? "gl33" : "es3"; });
