@@ -466,6 +466,30 @@ TEST_P(PbrShading, unlitLevelIgnoresTheLightTopLevelFollowsTheEnvironment) {
     saveOnFailure(reddish, "pbr-red-environment");
 }
 
+// A mirror sphere shows the environment the right way round: what lies
+// behind the camera (+Z) in its middle, +X on its right.
+TEST_P(PbrShading, aMirrorSphereReflectsTheEnvironmentTheRightWayRound) {
+    auto mirror = [](const std::function<bool(const glm::vec3&)>& bright) {
+        Environment env{64, 32, std::vector<glm::vec3>(64 * 32)};
+        for (int y = 0; y < 32; ++y)
+            for (int x = 0; x < 64; ++x)
+                env.radiance[static_cast<std::size_t>(y * 64 + x)] =
+                    glm::vec3(bright(equirectangularDirection({(x + 0.5f) / 64.0f, (y + 0.5f) / 32.0f})) ? 1.0f : 0.0f);
+        const ImageBasedLight light = prefilterEnvironment(env, 64, 5);
+        return render(
+            [&](Scene& s) { addAt(s, {}, makeUvSphere(1.0f, 64, 32), {.name = "mirror", .baseColor = {1, 1, 1, 1}, .metallic = 1.0f, .roughness = 0.0f}); },
+            {.settings = {.lightIntensity = 0.0f}, .environment = &light});
+    };
+    const Image behindCamera = mirror([](const glm::vec3& d) { return d.z > 0.0f; });
+    const Image ahead = mirror([](const glm::vec3& d) { return d.z < 0.0f; });
+    const Image right = mirror([](const glm::vec3& d) { return d.x > 0.0f; });
+    EXPECT_GT(brightness(at(behindCamera, 48, 48)), 200);
+    EXPECT_LT(brightness(at(ahead, 48, 48)), 30);
+    EXPECT_GT(brightness(at(right, 60, 48)), 200);
+    EXPECT_LT(brightness(at(right, 36, 48)), 30);
+    saveOnFailure(right, "pbr-mirror-right");
+}
+
 TEST(PbrShadingApis, desktopAndEsAgreeOnTheFullModel) {
     auto scene = [](Scene& s) {
         Geometry g = makeUvSphere(1.0f, 48, 24);
