@@ -374,6 +374,28 @@ TEST_P(PbrShading, nearestSamplingKeepsEdgesSharpLinearBlursThem) {
     EXPECT_GT(midTones(linear), 0.3);
 }
 
+// The default sampler minifies through mipmaps, and a colour texture is
+// decoded from sRGB and averaged as light: a fine checker of sRGB 128
+// (linear 0.216) and black seen small is linear 0.108, sRGB 92, and even.
+// Without the decode it would read 137; averaged as sRGB codes, 64.
+TEST_P(PbrShading, aMinifiedColourTextureAveragesInLinearLight) {
+    const Image greyChecker = makeImage(256, 256, [](int x, int y) {
+        return (x + y) % 2 ? glm::u8vec4(128, 128, 128, 255) : glm::u8vec4(0, 0, 0, 255);
+    });
+    const Image img = texturedSquare(greyChecker, Sampler{});
+    int lo = 255, hi = 0, sum = 0;
+    for (int y = 30; y < 66; ++y)
+        for (int x = 30; x < 66; ++x) {
+            const int b = brightness(at(img, x, y));
+            lo = std::min(lo, b);
+            hi = std::max(hi, b);
+            sum += b;
+        }
+    EXPECT_NEAR(sum / (36 * 36), encoded(0.5f * 0.2158f), 8);
+    EXPECT_LT(hi - lo, 16);
+    saveOnFailure(img, "pbr-minified");
+}
+
 TEST_P(PbrShading, clampRepeatsTheEdgeTexelRepeatWrapsAround) {
     // Red | green, with u running 0..2 across the square.
     const Image redGreen = makeImage(2, 1, [](int x, int) { return x == 0 ? glm::u8vec4(255, 0, 0, 255) : glm::u8vec4(0, 255, 0, 255); });
