@@ -1,5 +1,7 @@
 #include "runtime/ImageBasedLight.hpp"
 
+#include <opencv2/imgproc.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -49,25 +51,13 @@ float smithVisibility(float nl, float nv, float alpha) {
 
 Environment resized(const Environment& source, int width, int height) {
     Environment out{width, height, std::vector<glm::vec3>(static_cast<std::size_t>(width * height))};
-    // Box filter when shrinking by whole factors (the usual case: every
-    // source texel counts once), bilinear otherwise.
-    if (source.width % width == 0 && source.height % height == 0) {
-        const int fx = source.width / width, fy = source.height / height;
-        for (int y = 0; y < height; ++y)
-            for (int x = 0; x < width; ++x) {
-                glm::vec3 sum(0.0f);
-                for (int j = 0; j < fy; ++j)
-                    for (int i = 0; i < fx; ++i) sum += source.at(x * fx + i, y * fy + j);
-                out.radiance[static_cast<std::size_t>(y * width + x)] = sum / static_cast<float>(fx * fy);
-            }
-        return out;
-    }
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            const glm::vec2 uv{(static_cast<float>(x) + 0.5f) / static_cast<float>(width),
-                               (static_cast<float>(y) + 0.5f) / static_cast<float>(height)};
-            out.radiance[static_cast<std::size_t>(y * width + x)] = source.sample(equirectangularDirection(uv));
-        }
+    // Area averaging when shrinking, so that every source texel counts once
+    // (a small sun in a large panorama keeps its energy); bilinear when
+    // growing a small image.
+    const cv::Mat from(source.height, source.width, CV_32FC3, const_cast<glm::vec3*>(source.radiance.data()));
+    cv::Mat to(height, width, CV_32FC3, out.radiance.data());
+    const bool shrinking = width <= source.width && height <= source.height;
+    cv::resize(from, to, to.size(), 0, 0, shrinking ? cv::INTER_AREA : cv::INTER_LINEAR);
     return out;
 }
 
