@@ -30,12 +30,13 @@ float softDisc(const glm::vec3& d, const glm::vec3& centre, float radius) {
 glm::vec3 neutralRadiance(const glm::vec3& d) {
     // Sky and floor: a light band at the horizon, brighter upwards, a dark
     // floor that meets it over a few degrees (a studio's cove, not a cliff).
-    const float horizon = 0.4f, zenith = 0.6f, floor = 0.1f;
+    const float horizon = 0.4f, zenith = 0.6f, floor = 0.18f;
     float value = d.y >= 0.0f ? horizon + (zenith - horizon) * std::sqrt(d.y)
                               : floor + (horizon - floor) * std::exp(-(-d.y) * 12.0f);
     // Sized so that a white surface facing up gets about 0.8 from the
     // environment (E / pi), one facing sideways about 0.4: bright enough to
-    // read shapes, dim enough that the directional light still shows.
+    // read shapes, dim enough that the directional light still shows; the
+    // floor keeps undersides from going black.
     value += 1.5f * softDisc(d, {0.0f, 1.0f, 0.0f}, glm::radians(15.0f));
     value += 1.2f * softDisc(d, glm::normalize(glm::vec3(0.75f, 0.5f, 0.43f)), glm::radians(12.0f));
     value += 0.8f * softDisc(d, glm::normalize(glm::vec3(-0.75f, 0.4f, 0.43f)), glm::radians(12.0f));
