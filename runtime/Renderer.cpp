@@ -10,46 +10,118 @@ using namespace gl;
 
 namespace {
 
-// One source for all four levels; SHADING picks the lighting model:
-// 0 unlit, 1 flat (face normal from screen-space derivatives, so no
-// per-face vertices are needed), 2 Gouraud (per vertex), 3 Phong (per pixel,
-// Blinn's half vector).
 const char* const kMeshShader = R"(
+// One source for all four shading levels; SHADING picks how much of glTF's
+// metallic-roughness model a level evaluates. Cheapest first, as the frame
+// budget controller (DESIGN.md, section 3) steps through them:
+//   0 Unlit:   base colour + emission, no light (also every KHR_materials_unlit
+//              material and coverage-only passes).
+//   1 Flat:    per-face normal from screen-space derivatives (no per-face
+//              vertices needed); the BRDF's direct light + the irradiance as
+//              ambient light.
+//   2 Gouraud: the BRDF's direct light and the irradiance ambient per vertex,
+//              with the material's factors; textures still per pixel. No
+//              normal map, no specular image-based light.
+//   At these two levels the irradiance also stands in for the reflected
+//   environment (F0 * E / pi, what a fully rough mirror would reflect), so
+//   that metals, which have no diffuse colour, do not turn black there.
+//   3 Phong:   everything per pixel: normal map, direct light, diffuse
+//              irradiance + prefiltered specular (split sum), occlusion on
+//              the indirect light.
+// Emission is added at every level. Lighting is in linear light; the output
+// is premultiplied and sRGB-encoded (Renderer.hpp).
 #ifdef VERTEX
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
-layout(location = 2) in vec2 aTexcoord;
+layout(location = 2) in vec2 aTexcoord0;
+layout(location = 3) in vec2 aTexcoord1;
+layout(location = 4) in vec4 aTangent;
+layout(location = 5) in vec4 aColor;
 #define VARYING out
 #else
 #define VARYING in
 #endif
 VARYING vec3 vWorld;
 VARYING vec3 vNormal;
-VARYING vec2 vTexcoord;
-VARYING vec3 vLight;
+VARYING vec4 vTangent;
+VARYING vec2 vTexcoord0;
+VARYING vec2 vTexcoord1;
+VARYING vec4 vColor;
+VARYING vec3 vDiffuseLight;   // Gouraud: what multiplies the diffuse colour
+VARYING vec3 vSpecularLight;  // Gouraud: the direct highlight
+VARYING vec3 vBackDiffuseLight, vBackSpecularLight;  // Gouraud, double-sided: the same for back faces
 
 uniform mat4 uModel;
 uniform mat4 uViewProjection;
 uniform mat3 uNormalMatrix;
 uniform vec3 uEye;
-uniform vec3 uLightDirection;
+uniform vec3 uLightDirection;  // towards the light
+uniform vec3 uLightRadiance;   // colour * intensity
+uniform mat4 uIrradiance[3];   // E(n)/pi per channel (ImageBasedLight.hpp), times the environment's intensity
+uniform float uEnvironmentIntensity;
+uniform float uSpecularLevels;
+uniform sampler2D uSpecularEnvironment;
+uniform sampler2D uSplitSum;
+
 uniform vec4 uBaseColor;
-uniform float uSpecular;
-uniform int uHasTexture;
+uniform float uMetallic;
+uniform float uRoughness;
+uniform vec3 uEmissive;  // factor * strength
+uniform float uNormalScale;
+uniform float uOcclusionStrength;
 uniform int uAlphaMode;
 uniform float uAlphaCutoff;
 uniform float uFade;
-uniform sampler2D uBaseTexture;
+uniform int uDoubleSided;
+uniform int uHasTangents;
+// Texture slots: base colour, metallic-roughness, normal, occlusion,
+// emissive. uTexCoord: which TEXCOORD set, -1 when the slot is empty.
+uniform int uTexCoord[5];
+uniform mat3 uUvTransform[5];
+uniform sampler2D uBaseColorTexture;
+uniform sampler2D uMetallicRoughnessTexture;
+uniform sampler2D uNormalTexture;
+uniform sampler2D uOcclusionTexture;
+uniform sampler2D uEmissiveTexture;
 
-// Ambient + diffuse + specular, as a factor on the base colour plus an
-// additive highlight; both sides lit, since open meshes show their backs.
-vec3 lightAt(vec3 n, vec3 p, vec3 base) {
-    vec3 v = normalize(uEye - p);
-    if (dot(n, v) < 0.0) n = -n;
-    float diffuse = max(dot(n, uLightDirection), 0.0);
-    vec3 h = normalize(uLightDirection + v);
-    float highlight = diffuse > 0.0 ? pow(max(dot(n, h), 0.0), 32.0) * uSpecular : 0.0;
-    return base * (0.25 + 0.75 * diffuse) + vec3(highlight);
+const float PI = 3.14159265358979;
+
+// glTF 2.0 Appendix B: the specular BRDF is F * D * V with GGX's
+// (Trowbridge-Reitz) D, Smith's height-correlated visibility V and Schlick's
+// Fresnel F; the diffuse one (1 - F) * c_diff / pi, where
+// c_diff = base * (1 - metallic), F0 = mix(0.04, base, metallic) and
+// alpha = roughness^2. Returns, for the directional light, the factor on
+// c_diff and the specular radiance separately, so Gouraud can multiply a
+// per-pixel texture afterwards.
+void directLight(vec3 n, vec3 v, vec3 f0, float roughness, out vec3 diffuse, out vec3 specular) {
+    vec3 l = uLightDirection;
+    float nl = dot(n, l);
+    if (nl <= 0.0) {
+        diffuse = vec3(0.0);
+        specular = vec3(0.0);
+        return;
+    }
+    vec3 h = normalize(l + v);
+    float nv = max(dot(n, v), 1e-4);
+    float nh = max(dot(n, h), 0.0);
+    float vh = max(dot(v, h), 0.0);
+    // A perfect mirror reflects a directional light into one direction no
+    // pixel sees; a floor on roughness keeps the highlight visible and finite.
+    float alpha = max(roughness, 0.05);
+    alpha *= alpha;
+    float a2 = alpha * alpha;
+    float d = nh * nh * (a2 - 1.0) + 1.0;
+    float D = a2 / (PI * d * d);
+    float V = 0.5 / (nl * sqrt(nv * nv * (1.0 - a2) + a2) + nv * sqrt(nl * nl * (1.0 - a2) + a2));
+    float m = 1.0 - vh, m2 = m * m;  // (1 - v.h)^5 by products: pow is a log and an exp on llvmpipe
+    vec3 F = f0 + (1.0 - f0) * (m2 * m2 * m);
+    diffuse = (1.0 - F) / PI * uLightRadiance * nl;
+    specular = F * D * V * uLightRadiance * nl;
+}
+
+vec3 diffuseIrradiance(vec3 n) {
+    vec4 n4 = vec4(n, 1.0);
+    return max(vec3(dot(n4, uIrradiance[0] * n4), dot(n4, uIrradiance[1] * n4), dot(n4, uIrradiance[2] * n4)), 0.0);
 }
 
 #ifdef VERTEX
@@ -57,45 +129,180 @@ void main() {
     vec4 world = uModel * vec4(aPosition, 1.0);
     vWorld = world.xyz;
     vNormal = normalize(uNormalMatrix * aNormal);
-    vTexcoord = aTexcoord;
+    vTangent = vec4(mat3(uModel) * aTangent.xyz, aTangent.w);
+    vTexcoord0 = aTexcoord0;
+    vTexcoord1 = aTexcoord1;
+    vColor = aColor;
 #if SHADING == 2
-    vLight = lightAt(vNormal, vWorld, vec3(1.0));
+    vec3 v = normalize(uEye - vWorld);
+    vec3 base = uBaseColor.rgb * aColor.rgb;
+    vec3 f0 = mix(vec3(0.04), base, uMetallic);
+    directLight(vNormal, v, f0, uRoughness, vDiffuseLight, vSpecularLight);
+    vec3 ambient = diffuseIrradiance(vNormal);
+    vDiffuseLight += ambient;
+    vSpecularLight += f0 * ambient;
+    if (uDoubleSided != 0) {
+        directLight(-vNormal, v, f0, uRoughness, vBackDiffuseLight, vBackSpecularLight);
+        vec3 backAmbient = diffuseIrradiance(-vNormal);
+        vBackDiffuseLight += backAmbient;
+        vBackSpecularLight += f0 * backAmbient;
+    } else {
+        vBackDiffuseLight = vDiffuseLight;
+        vBackSpecularLight = vSpecularLight;
+    }
 #else
-    vLight = vec3(1.0);
+    vDiffuseLight = vSpecularLight = vBackDiffuseLight = vBackSpecularLight = vec3(0.0);
 #endif
     gl_Position = uViewProjection * world;
 }
 #else
 out vec4 fragColor;
-void main() {
-    vec4 base = uBaseColor;
-    if (uHasTexture != 0) {
-        vec4 t = texture(uBaseTexture, vTexcoord);
-        base *= vec4(pow(t.rgb, vec3(2.2)), t.a);
+
+// A slot's coordinates: its TEXCOORD set through its KHR_texture_transform.
+vec2 slotUv(int slot) {
+    vec2 uv = uTexCoord[slot] == 1 ? vTexcoord1 : vTexcoord0;
+    return (uUvTransform[slot] * vec3(uv, 1.0)).xy;
+}
+
+// The sRGB transfer function (IEC 61966-2-1), as three.js's sRGB output.
+vec3 srgbEncode(vec3 c) {
+    return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
+}
+
+// Equirectangular lookup, laid out as Environment.hpp says.
+vec2 environmentUv(vec3 d) {
+    return vec2(atan(d.z, d.x) / (2.0 * PI) + 0.5, 0.5 - asin(clamp(d.y, -1.0, 1.0)) / PI);
+}
+
+// The surface normal at this pixel for the top level: the interpolated one
+// (flipped on back faces of double-sided materials), perturbed by the normal
+// map in the frame of the vertex tangent (w: the bitangent's sign), or,
+// without tangents, of a frame from the screen-space derivatives of position
+// and texture coordinates (as glTF asks for MikkTSpace there, this is an
+// approximation that agrees on flat, unmirrored mappings).
+vec3 shadingNormal(vec3 n) {
+    if (uTexCoord[2] < 0) return n;
+    vec2 uv = slotUv(2);
+    vec3 t, b;
+    if (uHasTangents != 0) {
+        t = normalize(vTangent.xyz - n * dot(n, vTangent.xyz));
+        b = cross(n, t) * (vTangent.w < 0.0 ? -1.0 : 1.0);
+    } else {
+        // Solve dp = t du + b dv over the pixel's footprint for t; then b as
+        // a tangent with w = +1 would give it.
+        vec3 dp1 = dFdx(vWorld), dp2 = dFdy(vWorld);
+        vec2 duv1 = dFdx(uv), duv2 = dFdy(uv);
+        float det = duv1.x * duv2.y - duv2.x * duv1.y;
+        t = (dp1 * duv2.y - dp2 * duv1.y) * (det < 0.0 ? -1.0 : 1.0);
+        t -= n * dot(n, t);
+        t = dot(t, t) > 1e-20 ? normalize(t) : normalize(cross(n, abs(n.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
+        b = cross(n, t);
     }
+    // n came reversed on a back face, and b with it (b = n x t); reversing
+    // t too turns the whole frame over, so the map's relief reads the same
+    // from both sides.
+    if (!gl_FrontFacing) t = -t;
+    vec3 m = texture(uNormalTexture, uv).xyz * 2.0 - 1.0;
+    m.xy *= uNormalScale;
+    return normalize(mat3(t, b, n) * m);
+}
+
+void main() {
+    vec4 base = uBaseColor * vColor;
+    if (uTexCoord[0] >= 0) base *= texture(uBaseColorTexture, slotUv(0));  // decoded from sRGB by the format
     if (uAlphaMode == 1 && base.a < uAlphaCutoff) discard;
     float alpha = (uAlphaMode == 2 ? base.a : 1.0) * uFade;
+    vec3 emission = uEmissive;
+    if (uTexCoord[4] >= 0) emission *= texture(uEmissiveTexture, slotUv(4)).rgb;
+
 #if SHADING == 0
     vec3 lit = base.rgb;
-#elif SHADING == 1
-    vec3 faceNormal = normalize(cross(dFdx(vWorld), dFdy(vWorld)));
-    vec3 lit = lightAt(faceNormal, vWorld, base.rgb);
-#elif SHADING == 2
-    vec3 lit = base.rgb * vLight;
 #else
-    vec3 lit = lightAt(normalize(vNormal), vWorld, base.rgb);
+    float metallic = uMetallic, roughness = uRoughness;
+    if (uTexCoord[1] >= 0) {
+        vec4 mr = texture(uMetallicRoughnessTexture, slotUv(1));
+        roughness *= mr.g;
+        metallic *= mr.b;
+    }
+    vec3 diffuseColor = base.rgb * (1.0 - metallic);
+    vec3 f0 = mix(vec3(0.04), base.rgb, metallic);
+    vec3 v = normalize(uEye - vWorld);
+#if SHADING == 1
+    vec3 n = normalize(cross(dFdx(vWorld), dFdy(vWorld)));
+    if (dot(n, v) < 0.0) n = -n;
+    vec3 diffuse, specular;
+    directLight(n, v, f0, roughness, diffuse, specular);
+    vec3 ambient = diffuseIrradiance(n);
+    vec3 lit = diffuseColor * (diffuse + ambient) + specular + f0 * ambient;
+#elif SHADING == 2
+    vec3 lit = gl_FrontFacing ? diffuseColor * vDiffuseLight + vSpecularLight
+                              : diffuseColor * vBackDiffuseLight + vBackSpecularLight;
+#else
+    vec3 n = normalize(vNormal);
+    if (!gl_FrontFacing) n = -n;
+    n = shadingNormal(n);
+    vec3 diffuse, specular;
+    directLight(n, v, f0, roughness, diffuse, specular);
+    float nv = clamp(dot(n, v), 1e-4, 1.0);
+    float occlusion = 1.0;
+    if (uTexCoord[3] >= 0) occlusion = 1.0 + uOcclusionStrength * (texture(uOcclusionTexture, slotUv(3)).r - 1.0);
+    // Karis 2013 split sum: prefiltered radiance times F0 * scale + bias.
+    vec2 scaleBias = texture(uSplitSum, vec2(nv, roughness)).rg;
+    vec3 r = reflect(-v, n);
+    vec3 prefiltered = textureLod(uSpecularEnvironment, environmentUv(r), roughness * (uSpecularLevels - 1.0)).rgb;
+    vec3 indirect = diffuseColor * diffuseIrradiance(n) + prefiltered * uEnvironmentIntensity * (f0 * scaleBias.x + scaleBias.y);
+    vec3 lit = diffuse * diffuseColor + specular + occlusion * indirect;
 #endif
-    vec3 encoded = pow(clamp(lit, 0.0, 1.0), vec3(1.0 / 2.2));
+#endif
+    vec3 encoded = srgbEncode(clamp(lit + emission, 0.0, 1.0));
     fragColor = vec4(encoded * alpha, alpha);
 }
 #endif
 )";
 
+// glTF's sampler enums to GL's.
+GLint glWrap(TextureWrap w) {
+    switch (w) {
+    case TextureWrap::ClampToEdge: return GL_CLAMP_TO_EDGE;
+    case TextureWrap::MirroredRepeat: return GL_MIRRORED_REPEAT;
+    case TextureWrap::Repeat: break;
+    }
+    return GL_REPEAT;
+}
+GLint glFilter(TextureFilter f) {
+    switch (f) {
+    case TextureFilter::Nearest: return GL_NEAREST;
+    case TextureFilter::Linear: return GL_LINEAR;
+    case TextureFilter::NearestMipmapNearest: return GL_NEAREST_MIPMAP_NEAREST;
+    case TextureFilter::LinearMipmapNearest: return GL_LINEAR_MIPMAP_NEAREST;
+    case TextureFilter::NearestMipmapLinear: return GL_NEAREST_MIPMAP_LINEAR;
+    case TextureFilter::LinearMipmapLinear: break;
+    }
+    return GL_LINEAR_MIPMAP_LINEAR;
+}
+bool usesMipmaps(TextureFilter f) { return f != TextureFilter::Nearest && f != TextureFilter::Linear; }
+
+// Texture units, one per material slot in Material::textures() order, then
+// the environment's two.
+constexpr int kSlotCount = 5;
+constexpr GLint kSpecularUnit = kSlotCount, kSplitSumUnit = kSlotCount + 1;
+
+// The environment-free half of image-based lighting, and the built-in
+// environment's other half: the same for every Renderer, so worked out once
+// per process.
+const SplitSumTable& sharedSplitSum() {
+    static const SplitSumTable table = splitSumTable();
+    return table;
+}
+const ImageBasedLight& neutralLight() {
+    static const ImageBasedLight light = prefilterEnvironment(neutralEnvironment());
+    return light;
+}
+
 } // namespace
 
-// Lighting's uniforms are read only where a level lights (not unlit; the
-// normal matrix not by flat either), and the compiler drops them elsewhere:
-// those may be -1. The rest every level reads.
+// Lighting's uniforms are read only where a level lights, and the compiler
+// drops them elsewhere: those may be -1. The rest every level reads.
 Renderer::MeshProgram::MeshProgram(Shading shading)
     : program(kMeshShader, "#define SHADING " + std::to_string(static_cast<int>(shading)) + "\n"),
       model(program.requiredLocation("uModel")),
@@ -103,16 +310,65 @@ Renderer::MeshProgram::MeshProgram(Shading shading)
       normalMatrix(program.location("uNormalMatrix")),
       eye(program.location("uEye")),
       lightDirection(program.location("uLightDirection")),
+      lightRadiance(program.location("uLightRadiance")),
+      irradiance(program.location("uIrradiance")),
+      environmentIntensity(program.location("uEnvironmentIntensity")),
+      specularLevels(program.location("uSpecularLevels")),
+      specularEnvironment(program.location("uSpecularEnvironment")),
+      splitSum(program.location("uSplitSum")),
       baseColor(program.requiredLocation("uBaseColor")),
-      specular(program.location("uSpecular")),
+      metallic(program.location("uMetallic")),
+      roughness(program.location("uRoughness")),
+      emissive(program.requiredLocation("uEmissive")),
+      normalScale(program.location("uNormalScale")),
+      occlusionStrength(program.location("uOcclusionStrength")),
       alphaMode(program.requiredLocation("uAlphaMode")),
       alphaCutoff(program.requiredLocation("uAlphaCutoff")),
       fade(program.requiredLocation("uFade")),
-      hasTexture(program.requiredLocation("uHasTexture")),
-      baseTexture(program.requiredLocation("uBaseTexture")) {}
+      doubleSided(program.location("uDoubleSided")),
+      hasTangents(program.location("uHasTangents")),
+      texCoord(program.requiredLocation("uTexCoord")),
+      uvTransform(program.requiredLocation("uUvTransform")) {
+    const char* const samplers[kSlotCount] = {"uBaseColorTexture", "uMetallicRoughnessTexture", "uNormalTexture",
+                                              "uOcclusionTexture", "uEmissiveTexture"};
+    // Each sampler uniform keeps its unit for the program's life.
+    program.use();
+    for (int slot = 0; slot < kSlotCount; ++slot) glUniform1i(program.location(samplers[slot]), slot);
+    glUniform1i(specularEnvironment, kSpecularUnit);
+    glUniform1i(splitSum, kSplitSumUnit);
+}
 
 Renderer::Renderer() {
     for (int s = 0; s < kShadingCount; ++s) programs_[static_cast<std::size_t>(s)].emplace(static_cast<Shading>(s));
+    const SplitSumTable& table = sharedSplitSum();
+    splitSum_ = GlTexture::generate();
+    glBindTexture(GL_TEXTURE_2D, splitSum_.get());
+    // RG16F: filterable on ES 3.0 as on desktop (32-bit floats are not).
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RG16F, table.size, table.size, 0, GL_RG, GL_FLOAT, table.scaleBias.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    setEnvironment(neutralLight());
+}
+
+void Renderer::setEnvironment(const ImageBasedLight& light) {
+    irradiance_ = light.irradiance;
+    specularLevels_ = static_cast<int>(light.specular.size());
+    specular_ = GlTexture::generate();
+    glBindTexture(GL_TEXTURE_2D, specular_.get());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    // RGB9_E5: high dynamic range and filterable on ES 3.0 without an
+    // extension; each roughness is one mip level, read with textureLod.
+    for (int level = 0; level < specularLevels_; ++level) {
+        const Environment& e = light.specular[static_cast<std::size_t>(level)];
+        glTexImage2D(GL_TEXTURE_2D, level, GL_RGB9_E5, e.width, e.height, 0, GL_RGB, GL_FLOAT, e.radiance.data());
+    }
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, specularLevels_ - 1);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);  // azimuth goes round
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
 void Renderer::forget() {
@@ -126,13 +382,25 @@ const Renderer::GpuGeometry& Renderer::geometry(const Scene& scene, std::uint32_
     GpuGeometry& gpu = geometries_[id];
     if (gpu.vao) return gpu;
     const Geometry& g = scene.geometry(id);
-    // Interleaved position, normal, texcoord: one buffer, one fetch stream.
+    const std::size_t n = g.positions.size();
+    // Interleaved, one buffer and one fetch stream; attributes the geometry
+    // lacks take no space and are read as constants (see drawItem).
+    const bool uv0 = g.texcoords.size() == n, uv1 = g.texcoords1.size() == n;
+    gpu.hasTangents = g.tangents.size() == n && n > 0;
+    gpu.hasColors = g.colors.size() == n && n > 0;
+    const std::array<std::pair<bool, int>, 6> attributes{{{true, 3}, {true, 3}, {uv0, 2}, {uv1, 2},
+                                                          {gpu.hasTangents, 4}, {gpu.hasColors, 4}}};
+    int floatsPerVertex = 0;
+    for (const auto& [present, size] : attributes) floatsPerVertex += present ? size : 0;
     std::vector<float> vertices;
-    vertices.reserve(g.positions.size() * 8);
-    for (std::size_t i = 0; i < g.positions.size(); ++i) {
-        const glm::vec2 uv = i < g.texcoords.size() ? g.texcoords[i] : glm::vec2(0.0f);
+    vertices.reserve(n * static_cast<std::size_t>(floatsPerVertex));
+    for (std::size_t i = 0; i < n; ++i) {
         vertices.insert(vertices.end(), {g.positions[i].x, g.positions[i].y, g.positions[i].z, g.normals[i].x,
-                                         g.normals[i].y, g.normals[i].z, uv.x, uv.y});
+                                         g.normals[i].y, g.normals[i].z});
+        if (uv0) vertices.insert(vertices.end(), {g.texcoords[i].x, g.texcoords[i].y});
+        if (uv1) vertices.insert(vertices.end(), {g.texcoords1[i].x, g.texcoords1[i].y});
+        if (gpu.hasTangents) vertices.insert(vertices.end(), {g.tangents[i].x, g.tangents[i].y, g.tangents[i].z, g.tangents[i].w});
+        if (gpu.hasColors) vertices.insert(vertices.end(), {g.colors[i].r, g.colors[i].g, g.colors[i].b, g.colors[i].a});
     }
     gpu.vao = GlVertexArray::generate();
     glBindVertexArray(gpu.vao.get());
@@ -143,30 +411,41 @@ const Renderer::GpuGeometry& Renderer::geometry(const Scene& scene, std::uint32_
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.indices.get());
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(g.indices.size() * sizeof(std::uint32_t)),
                  g.indices.data(), GL_STATIC_DRAW);
-    const GLsizei stride = 8 * sizeof(float);
-    for (GLuint a = 0; a < 3; ++a) glEnableVertexAttribArray(a);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(3 * sizeof(float)));
-    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(6 * sizeof(float)));
+    const auto stride = static_cast<GLsizei>(static_cast<std::size_t>(floatsPerVertex) * sizeof(float));
+    std::size_t offset = 0;
+    for (GLuint a = 0; a < attributes.size(); ++a) {
+        const auto [present, size] = attributes[a];
+        if (!present) continue;
+        glEnableVertexAttribArray(a);
+        glVertexAttribPointer(a, size, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offset * sizeof(float)));
+        offset += static_cast<std::size_t>(size);
+    }
     glBindVertexArray(0);
     gpu.indexCount = static_cast<GLsizei>(g.indices.size());
     return gpu;
 }
 
-GLuint Renderer::texture(const Scene& scene, int image) {
-    if (image < 0) return 0;
-    const auto index = static_cast<std::size_t>(image);
-    if (index >= textures_.size()) textures_.resize(scene.images().size());
-    if (textures_[index]) return textures_[index].get();
-    const Image& img = scene.images()[index];
-    GlTexture& t = textures_[index];
+GLuint Renderer::texture(const Scene& scene, const TextureRef& ref, bool srgb) {
+    if (!ref.present() || static_cast<std::size_t>(ref.image) >= scene.images().size()) return 0;
+    const Sampler& s = ref.sampler;
+    const TextureKey key{ref.image, srgb, s.magFilter, s.minFilter, s.wrapS, s.wrapT};
+    GlTexture& t = textures_[key];
+    if (t) return t.get();
+    const Image& img = scene.images()[static_cast<std::size_t>(ref.image)];
+    if (img.width <= 0 || img.height <= 0 || img.rgba.size() != static_cast<std::size_t>(img.width * img.height * 4))
+        return 0;  // an empty slot draws as if absent rather than reading past the pixels
     t = GlTexture::generate();
     glBindTexture(GL_TEXTURE_2D, t.get());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
-    glGenerateMipmap(GL_TEXTURE_2D);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    // Colour slots are sRGB-encoded (glTF 3.9.2): the format decodes them
+    // before filtering, as it must.
+    glTexImage2D(GL_TEXTURE_2D, 0, srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, img.width, img.height, 0, GL_RGBA,
+                 GL_UNSIGNED_BYTE, img.rgba.data());
+    if (usesMipmaps(s.minFilter)) glGenerateMipmap(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, glFilter(s.minFilter));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, s.magFilter == TextureFilter::Nearest ? GL_NEAREST : GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, glWrap(s.wrapS));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, glWrap(s.wrapT));
     return t.get();
 }
 
@@ -182,21 +461,60 @@ void Renderer::drawItem(const Scene& scene, const DrawItem& item, const View& vi
     glUniformMatrix4fv(p.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProjection));
     glUniformMatrix3fv(p.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
     glUniform3f(p.eye, view.eye.x, view.eye.y, view.eye.z);
-    glUniform3f(p.lightDirection, settings.lightDirection.x, settings.lightDirection.y, settings.lightDirection.z);
+    const glm::vec3 l = glm::normalize(settings.lightDirection);
+    glUniform3f(p.lightDirection, l.x, l.y, l.z);
+    const glm::vec3 light = settings.lightColor * settings.lightIntensity;
+    glUniform3f(p.lightRadiance, light.r, light.g, light.b);
+    std::array<glm::mat4, 3> irradiance = irradiance_;
+    for (glm::mat4& channel : irradiance) channel *= settings.environmentIntensity;
+    glUniformMatrix4fv(p.irradiance, 3, GL_FALSE, glm::value_ptr(irradiance[0]));
+    glUniform1f(p.environmentIntensity, settings.environmentIntensity);
+    glUniform1f(p.specularLevels, static_cast<float>(specularLevels_));
+
     const glm::vec4 base = m.baseColor * item.tint;
     glUniform4f(p.baseColor, base.r, base.g, base.b, base.a);
-    glUniform1f(p.specular, 0.5f * (1.0f - m.roughness) + 0.1f);
+    glUniform1f(p.metallic, m.metallic);
+    glUniform1f(p.roughness, m.roughness);
+    const glm::vec3 emissive = settings.coverageOnly ? glm::vec3(0.0f) : m.emissive * m.emissiveStrength;
+    glUniform3f(p.emissive, emissive.r, emissive.g, emissive.b);
+    glUniform1f(p.normalScale, m.normalScale);
+    glUniform1f(p.occlusionStrength, m.occlusionStrength);
     glUniform1i(p.alphaMode, static_cast<int>(m.alphaMode));
     glUniform1f(p.alphaCutoff, m.alphaCutoff);
     glUniform1f(p.fade, item.fade);
-    const GLuint tex = texture(scene, m.baseColorTexture.image);
-    glUniform1i(p.hasTexture, tex ? 1 : 0);
-    glUniform1i(p.baseTexture, 0);
+    glUniform1i(p.doubleSided, m.doubleSided ? 1 : 0);
+
+    const auto slots = m.textures();
+    std::array<GLint, kSlotCount> texCoord{};
+    std::array<glm::mat3, kSlotCount> uvTransform{};
+    for (int slot = 0; slot < kSlotCount; ++slot) {
+        const TextureRef& ref = *slots[static_cast<std::size_t>(slot)];
+        // Base colour and emission are colours (sRGB); the rest are data.
+        const bool srgb = slot == 0 || slot == 4;
+        const GLuint tex = texture(scene, ref, srgb);
+        texCoord[static_cast<std::size_t>(slot)] = tex ? std::clamp(ref.texCoord, 0, 1) : -1;
+        uvTransform[static_cast<std::size_t>(slot)] = ref.transform.matrix();
+        glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + slot));
+        glBindTexture(GL_TEXTURE_2D, tex);
+    }
+    glUniform1iv(p.texCoord, kSlotCount, texCoord.data());
+    glUniformMatrix3fv(p.uvTransform, kSlotCount, GL_FALSE, glm::value_ptr(uvTransform[0]));
+    glActiveTexture(GL_TEXTURE0 + kSpecularUnit);
+    glBindTexture(GL_TEXTURE_2D, specular_.get());
+    glActiveTexture(GL_TEXTURE0 + kSplitSumUnit);
+    glBindTexture(GL_TEXTURE_2D, splitSum_.get());
     glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, tex);
+
     if (m.doubleSided) glDisable(GL_CULL_FACE);
     else glEnable(GL_CULL_FACE);
     const GpuGeometry& g = geometry(scene, item.part.geometry);
+    glUniform1i(p.hasTangents, g.hasTangents ? 1 : 0);
+    // What an absent attribute reads: generic values are context state, not
+    // the vertex array's, so they are set for every draw.
+    glVertexAttrib4f(2, 0.0f, 0.0f, 0.0f, 1.0f);
+    glVertexAttrib4f(3, 0.0f, 0.0f, 0.0f, 1.0f);
+    glVertexAttrib4f(4, 1.0f, 0.0f, 0.0f, 1.0f);
+    glVertexAttrib4f(5, 1.0f, 1.0f, 1.0f, 1.0f);
     glBindVertexArray(g.vao.get());
     // A silhouette region draws its own range of the shared index list.
     const GLsizei count = item.indexCount ? static_cast<GLsizei>(item.indexCount) : g.indexCount;

@@ -1,24 +1,33 @@
 #pragma once
 // Draws a select pass's DrawList into the bound framebuffer, each item with
-// its own shading level (unlit, flat, Gouraud, Phong). Geometry and textures
-// go to the GPU the first time they are drawn and stay there.
+// its own shading level (unlit, flat, Gouraud, Phong: what each evaluates of
+// glTF's metallic-roughness material is listed at the shader in
+// Renderer.cpp). Geometry and textures go to the GPU the first time they are
+// drawn and stay there. Light: one directional light plus image-based light
+// from an environment (built-in neutral studio unless setEnvironment says
+// otherwise).
 //
 //   Renderer renderer;                       // a context must be current
+//   renderer.setEnvironment(prefilterEnvironment(loadEnvironment("hall.hdr")));  // optional
 //   select(scene, view, {}, list);
 //   renderer.draw(scene, list, view, {.clearColor = {0, 0, 0, 0}});
 //
 // Output is premultiplied RGBA with sRGB-encoded colour: lighting happens in
 // linear light (textures are decoded from sRGB, factors are linear as glTF
 // says) and is encoded once at the end, so the compositor can blend layers
-// with "over" directly.
+// with "over" directly. There is no tone mapping: what exceeds 1 clips, as
+// in three.js with NoToneMapping and sRGB output.
 
 #include "graph/core/DrawList.hpp"
 #include "graph/core/View.hpp"
 #include "runtime/GlHandle.hpp"
+#include "runtime/ImageBasedLight.hpp"
 #include "runtime/ShaderProgram.hpp"
 
 #include <array>
+#include <map>
 #include <optional>
+#include <tuple>
 #include <vector>
 
 namespace arcomp {
@@ -26,6 +35,12 @@ namespace arcomp {
 struct RenderSettings {
     std::optional<glm::vec4> clearColor = glm::vec4(0.0f);  // nullopt: draw over what is there
     glm::vec3 lightDirection = glm::normalize(glm::vec3(-0.4f, 0.8f, 0.45f));  // towards the light, world space
+    // Linear colour and intensity of the directional light, as three.js's
+    // DirectionalLight takes them: a white diffuse surface facing it
+    // reflects intensity / pi.
+    glm::vec3 lightColor{1.0f};
+    float lightIntensity = 1.5f;
+    float environmentIntensity = 1.0f;  // scales the image-based light
     // Every item opaque and unlit: for passes that need where items are, not
     // how they look (the holdout's depth, a shadow mask), where a blended or
     // fading item must still count.
@@ -38,6 +53,9 @@ public:
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
+    // Replaces the image-based light (the built-in neutral one by default).
+    void setEnvironment(const ImageBasedLight& light);
+
     void draw(const Scene& scene, const DrawList& list, const View& view, const RenderSettings& settings = {});
     // Drops every GPU resource, for when the scene is replaced.
     void forget();
@@ -49,23 +67,31 @@ private:
         GlVertexArray vao;
         GlBuffer vertices, indices;
         GLsizei indexCount = 0;
+        bool hasTangents = false, hasColors = false;
     };
     // One shading level's program and its uniforms' locations, looked up
     // once: a draw item sets a dozen uniforms.
     struct MeshProgram {
         explicit MeshProgram(Shading shading);
         ShaderProgram program;
-        GLint model, viewProjection, normalMatrix, eye, lightDirection, baseColor, specular, alphaMode, alphaCutoff,
-            fade, hasTexture, baseTexture;
+        GLint model, viewProjection, normalMatrix, eye, lightDirection, lightRadiance, irradiance,
+            environmentIntensity, specularLevels, specularEnvironment, splitSum, baseColor, metallic, roughness, emissive,
+            normalScale, occlusionStrength, alphaMode, alphaCutoff, fade, doubleSided, hasTangents, texCoord, uvTransform;
     };
+    // One GL texture per image, colour space and sampler: an image can be
+    // both a colour (sRGB-decoded) and data, and sampled in different ways.
+    using TextureKey = std::tuple<int, bool, TextureFilter, TextureFilter, TextureWrap, TextureWrap>;
     const GpuGeometry& geometry(const Scene& scene, std::uint32_t id);
-    GLuint texture(const Scene& scene, int image);
+    GLuint texture(const Scene& scene, const TextureRef& ref, bool srgb);
     void drawItem(const Scene& scene, const DrawItem& item, const View& view, const RenderSettings& settings);
 
     std::array<std::optional<MeshProgram>, kShadingCount> programs_;
     const Scene* scene_ = nullptr;
     std::vector<GpuGeometry> geometries_;
-    std::vector<GlTexture> textures_;
+    std::map<TextureKey, GlTexture> textures_;
+    GlTexture specular_, splitSum_;
+    std::array<glm::mat4, 3> irradiance_{};
+    int specularLevels_ = 0;
     std::size_t trianglesDrawn_ = 0;
 };
 

@@ -105,6 +105,8 @@ SceneFile loadSceneFile(const fs::path& file) {
         buildScene(cfg, out.world, out.warnings);
         if (cfg.camera.given) out.camera = cameraView(cfg.camera);
         out.background = cfg.render.background;
+        out.environment = cfg.render.environment;
+        out.environmentIntensity = cfg.render.environmentIntensity;
         return out;
     }
     const LoadedModel loaded = loadModel(file, out.world.scene, out.world.scene.root());

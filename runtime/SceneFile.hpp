@@ -20,6 +20,9 @@ struct SceneFile {
     World world;
     std::optional<View> camera;
     glm::vec4 background{0.0f};
+    // A config's render.environment and its intensity; empty: neutral.
+    std::filesystem::path environment;
+    float environmentIntensity = 1.0f;
     // Models a config names that could not be loaded are skipped, each with
     // a line here: the station goes on with the rest.
     std::vector<std::string> warnings;

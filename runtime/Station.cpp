@@ -3,6 +3,7 @@
 #include "graph/core/ElapsedTime.hpp"
 #include "graph/core/SelectPass.hpp"
 #include "runtime/CalibrationFile.hpp"
+#include "runtime/Environment.hpp"
 #include "runtime/ImpostorBaker.hpp"
 #include "runtime/PointCloudLayer.hpp"
 #include "runtime/SceneFile.hpp"
@@ -36,6 +37,7 @@ void Station::preflight(const StationConfig& cfg) {
     if (cfg.budget.enabled) (void)readCalibration(cfg.budget.calibration);
     (void)makeGazeSource(cfg.gaze, View{});
     (void)makeMatte(cfg.compositing.matte);
+    if (!cfg.render.environment.empty()) (void)loadEnvironment(cfg.render.environment);  // BadInput naming the file
 }
 
 Station::Station(const StationConfig& cfg, StationInput input)
@@ -65,6 +67,15 @@ Station::Station(const StationConfig& cfg, StationInput input)
     if (cfg_.budget.enabled) budget_.emplace(cfg_.budget);
 
     renderer_ = std::make_unique<Renderer>();
+    if (!cfg_.render.environment.empty()) {
+        // A station that cannot read its environment still runs, lit by the
+        // built-in one: the operator sees the warning, visitors see a model.
+        try {
+            renderer_->setEnvironment(prefilterEnvironment(loadEnvironment(cfg_.render.environment)));
+        } catch (const std::exception& e) {
+            warnings_.push_back(std::string("render.environment: ") + e.what() + "; lighting with the neutral environment");
+        }
+    }
     gpuTimes_ = std::make_unique<GpuStageTimes>(kGpuStageCount);
     if (world_.pointClouds.size()) cloudLayer_ = std::make_unique<PointCloudLayer>();
     compositor_ = std::make_unique<Compositor>(camera.size);
@@ -110,7 +121,8 @@ bool Station::frame() {
             shadows_->cast(world_.scene, drawList_, view_, comp.shadow, *renderer_, compositor_->output());
         });
     gpuTimes_->time(kGpuRender, [&] {
-        renderer_->draw(world_.scene, drawList_, view_, {.clearColor = std::nullopt, .lightDirection = comp.shadow.light});
+        renderer_->draw(world_.scene, drawList_, view_, {.clearColor = std::nullopt, .lightDirection = comp.shadow.light,
+                                                                  .environmentIntensity = cfg_.render.environmentIntensity});
     });
     stats_.cgTriangles = renderer_->trianglesDrawn();
     clock.lap();

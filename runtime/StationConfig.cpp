@@ -139,6 +139,18 @@ StationConfig loadStationConfig(const std::filesystem::path& file) {
     cfg.render.shading = *parseShading(shading);
     render.choice("gl", cfg.render.gl, {"auto", "gl33", "es3"});
     render.vec4("background", cfg.render.background);
+    if (render.has("environment")) {
+        std::string environment;
+        render.text("environment", environment);
+        if (environment.empty())
+            render.report().add(render.mark(), "render.environment: expected 'neutral' or an equirectangular .hdr or .png file");
+        else if (environment != "neutral") {
+            std::filesystem::path p(environment);
+            if (p.is_relative()) p = file.parent_path() / p;
+            cfg.render.environment = p.lexically_normal();
+        }
+    }
+    render.number("environment_intensity", cfg.render.environmentIntensity, 0.0, 1000.0);
     render.finish();
 
     readCompositingConfig(root, cfg.compositing);

@@ -67,6 +67,12 @@ struct RenderConfig {
     Shading shading = Shading::Phong;
     std::string gl = "auto";
     glm::vec4 background{0.08f, 0.08f, 0.1f, 1.0f};
+    // The image-based light: an equirectangular .hdr or .png, empty for the
+    // built-in neutral studio (runtime/Environment.hpp). A file that cannot
+    // be read fails `arcomp check` and a reload; at start the station says so
+    // and lights with the neutral one.
+    std::filesystem::path environment;
+    float environmentIntensity = 1.0f;
 };
 
 struct StationConfig {

@@ -75,12 +75,14 @@ TEST_P(RendererOnEachApi, drawsObjectsWhereTheyStandInTheirColours) {
     EXPECT_EQ(corner.a, 0) << "background stays transparent";
     const Pixel box = at(img, 320 / 2 - 55, 120);
     EXPECT_EQ(box.a, 255);
+    // Beside its colour, a dielectric reflects about 4% of the (grey) studio
+    // in every channel: sRGB 30-40 where it has none of its own.
     EXPECT_GT(box.r, 100);
-    EXPECT_LT(box.g, 30);
+    EXPECT_LT(box.g, 45);
     const Pixel sphere = at(img, 320 / 2 + 55, 120);
     EXPECT_EQ(sphere.a, 255);
     EXPECT_GT(sphere.g, 100);
-    EXPECT_LT(sphere.r, 30);
+    EXPECT_LT(sphere.r, 45);
     const double c = coverage(img);
     EXPECT_GT(c, 0.10);
     EXPECT_LT(c, 0.35);

@@ -556,3 +556,30 @@ camera:
     EXPECT_GT(cut[2], cut[0]) << cut;
     EXPECT_LT(cut[0], 150) << cut;
 }
+
+// A station whose environment file went bad after the check still runs: it
+// says so and lights with the built-in environment, so its frames are those
+// of a station configured with `neutral`.
+TEST(Station, anUnreadableEnvironmentAtStartIsAWarningAndTheNeutralOneLights) {
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    arcomp::test::TempDir dir;
+    const fs::path bad = dir.write("broken.hdr", "#?RADIANCE\nnot really\n");
+    auto frameWith = [&](const fs::path& environment, std::vector<std::string>& warnings) {
+        StationConfig cfg = occluderConfig(HoldoutMesh::Full);
+        cfg.render.environment = environment;
+        Station station(cfg, pattern({160, 120}));
+        EXPECT_TRUE(station.frame());
+        warnings = station.warnings();
+        return station.compositedFrame().read();
+    };
+    std::vector<std::string> badWarnings, neutralWarnings;
+    const Image withBad = frameWith(bad, badWarnings);
+    const Image withNeutral = frameWith({}, neutralWarnings);
+    const auto mentions = [](const std::vector<std::string>& lines, const std::string& part) {
+        return std::any_of(lines.begin(), lines.end(), [&](const std::string& l) { return l.find(part) != std::string::npos; });
+    };
+    EXPECT_TRUE(mentions(badWarnings, "broken.hdr"));
+    EXPECT_TRUE(mentions(badWarnings, "neutral environment"));
+    EXPECT_FALSE(mentions(neutralWarnings, "environment"));
+    EXPECT_EQ(withBad.rgba, withNeutral.rgba);
+}

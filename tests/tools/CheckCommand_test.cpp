@@ -57,6 +57,8 @@ INSTANTIATE_TEST_SUITE_P(
                         "station.yaml:4:17: scene.objects[0].position"},
         ConfigErrorCase{"missingFile", "scene:\n  objects:\n    - model: statue.glb\n",
                         "statue.glb' does not exist"},
+        ConfigErrorCase{"missingEnvironment", "scene:\n  objects:\n    - shape: box\nrender:\n  environment: studio.hdr\n",
+                        "studio.hdr: environment file does not exist"},
         ConfigErrorCase{"missingFilePlace", "scene:\n  objects:\n    - model: statue.glb\n",
                         "station.yaml:3:14: scene.objects[0].model: file '"},
         ConfigErrorCase{"numberOutOfRange", "scene:\n  objects:\n    - shape: box\nstatus:\n  port: 99999\n",
@@ -99,4 +101,18 @@ TEST(CheckCommand, everyErrorIsListedAtOnce) {
     EXPECT_NE(r.out.find(":3:14: scene.objects[0].shape"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find(":5:12: render.shading"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find(":7:10: log.level"), std::string::npos) << r.out;
+}
+
+// The environment `arcomp environment` writes is one check accepts; a file
+// that is not an image is refused, named.
+TEST(CheckCommand, readsTheEnvironmentFileItNames) {
+    TempDir dir;
+    const auto written = arcomp::test::arcompCommand("environment --out " + (dir.path() / "neutral.hdr").string());
+    ASSERT_EQ(written.code, 0) << written.out;
+    const auto good = check(dir.write("good.yaml", "scene:\n  objects:\n    - shape: box\nrender:\n  environment: neutral.hdr\n"));
+    EXPECT_EQ(good.code, 0) << good.out;
+    dir.write("notes.hdr", "these are notes, not light");
+    const auto bad = check(dir.write("bad.yaml", "scene:\n  objects:\n    - shape: box\nrender:\n  environment: notes.hdr\n"));
+    EXPECT_EQ(bad.code, 2) << bad.out;
+    EXPECT_NE(bad.out.find("notes.hdr: cannot decode the environment"), std::string::npos) << bad.out;
 }

@@ -1,7 +1,8 @@
 // arcomp render <scene> --out F.png: one headless frame of a model or a
-// station config's scene.
+// station config's scene. arcomp environment --out F.hdr: the light it uses.
 
 #include "graph/core/SelectPass.hpp"
+#include "runtime/Environment.hpp"
 #include "runtime/GlContext.hpp"
 #include "runtime/ImageFile.hpp"
 #include "runtime/ImpostorBaker.hpp"
@@ -20,8 +21,10 @@ namespace arcomp {
 namespace {
 
 struct RenderOptions {
-    std::string scene, out, size = "640x480", eye, target, shading = "phong", gl = "auto", lightDirection;
+    std::string scene, out, size = "640x480", eye, target, shading = "phong", gl = "auto", lightDirection, environment;
     float fovy = 0.0f;  // 0: the station camera's, else 45
+    std::optional<float> environmentIntensity;
+    float lightIntensity = RenderSettings{}.lightIntensity;
 };
 
 int render(const RenderOptions& o) {
@@ -52,7 +55,9 @@ int render(const RenderOptions& o) {
                             std::max(1e-3f * distance, distance - 2.0f * b.radius), distance + 2.0f * b.radius);
     }
 
-    RenderSettings settings{.clearColor = file.background};
+    RenderSettings settings{.clearColor = file.background,
+                            .lightIntensity = o.lightIntensity,
+                            .environmentIntensity = o.environmentIntensity.value_or(file.environmentIntensity)};
     if (!o.lightDirection.empty()) {
         const glm::vec3 towards = parseVec3(o.lightDirection, "--light-direction");
         if (glm::length(towards) == 0.0f) throw InputError("--light-direction: the zero vector has no direction");
@@ -64,6 +69,11 @@ int render(const RenderOptions& o) {
     RenderTarget target(size);
     target.bind();
     Renderer renderer;
+    // --environment over the config's render.environment over neutral.
+    const std::string environment = !o.environment.empty() ? o.environment
+                                    : file.environment.empty() ? std::string("neutral")
+                                                               : file.environment.string();
+    if (environment != "neutral") renderer.setEnvironment(prefilterEnvironment(loadEnvironment(environment)));
     DrawList list;
     select(world, view, {.shading = *shading}, list);
     renderer.draw(scene, list, view, settings);
@@ -87,6 +97,7 @@ const bool registered = registerCommand(
     {"render", "Render one frame of a model (.gltf, .glb, .obj) or a station config (.yaml) to a PNG",
      [](CommandLine& line) {
          auto o = std::make_shared<RenderOptions>();
+         auto environmentIntensity = std::make_shared<float>(-1.0f);  // below the range: not given
          line.option("scene", o->scene, "Model or station config").required();
          line.option("--out", o->out, "PNG file to write").required();
          line.option("--size", o->size, "Image size WIDTHxHEIGHT").showDefault();
@@ -97,7 +108,34 @@ const bool registered = registerCommand(
          line.option("--light-direction", o->lightDirection, "Direction towards the light X,Y,Z, world space (default: from above, left and front)");
          line.option("--shading", o->shading, "unlit, flat, gouraud or phong").showDefault();
          line.option("--gl", o->gl, "OpenGL API: auto, gl33 or es3").showDefault();
-         return [o] { return render(*o); };
+         line.option("--environment", o->environment,
+                     "Image-based light: neutral, or an equirectangular .hdr or .png (default: the config's, else neutral)");
+         line.option("--environment-intensity", *environmentIntensity, "Scales the image-based light (default: the config's, else 1)")
+             .range(0.0, 1000.0);
+         line.option("--light-intensity", o->lightIntensity, "The directional light, as three.js's DirectionalLight.intensity").showDefault();
+         return [o, environmentIntensity] {
+             if (*environmentIntensity >= 0.0f) o->environmentIntensity = *environmentIntensity;
+             return render(*o);
+         };
+     }});
+
+// Writes an environment as a Radiance .hdr, so that a reference renderer
+// (three.js's RGBELoader) can be lit exactly as `render` lights.
+int writeEnvironment(const std::string& source, const std::string& out) {
+    const Environment env = environmentFromOption(source);
+    writeRadianceHdr(out, env);
+    std::cout << "wrote " << out << ": " << env.width << "x" << env.height << " equirectangular, linear RGB\n";
+    return kExitOk;
+}
+
+const bool registeredEnvironment = registerCommand(
+    {"environment", "Write the image-based light render uses (the built-in neutral one by default) as a Radiance .hdr",
+     [](CommandLine& line) {
+         auto source = std::make_shared<std::string>("neutral");
+         auto out = std::make_shared<std::string>();
+         line.option("--out", *out, ".hdr file to write").required();
+         line.option("--source", *source, "neutral, or an equirectangular .hdr or .png to convert").showDefault();
+         return [source, out] { return writeEnvironment(*source, *out); };
      }});
 
 } // namespace
