@@ -15,10 +15,11 @@ const char* const kMeshShader = R"(
 // metallic-roughness model a level evaluates. Cheapest first, as the frame
 // budget controller (DESIGN.md, section 3) steps through them:
 //   0 Unlit:   base colour + emission, no light (also every KHR_materials_unlit
-//              material and coverage-only passes).
-//   1 Flat:    per-face normal from screen-space derivatives (no per-face
-//              vertices needed); the BRDF's direct light + the irradiance as
-//              ambient light.
+//              material, without its emission, and coverage-only passes).
+//   1 Flat:    as Gouraud, but one light per face: the provoking vertex's,
+//              not interpolated (GL's flat shading model). The derivative
+//              face normal with the BRDF per pixel looked better but cost
+//              twice Gouraud on llvmpipe, out of the controller's order.
 //   2 Gouraud: the BRDF's direct light and the irradiance ambient per vertex,
 //              with the material's factors; textures still per pixel. No
 //              normal map, no specular image-based light.
@@ -41,15 +42,20 @@ layout(location = 5) in vec4 aColor;
 #else
 #define VARYING in
 #endif
+#if SHADING == 1
+#define LIGHT_VARYING flat VARYING
+#else
+#define LIGHT_VARYING VARYING
+#endif
 VARYING vec3 vWorld;
 VARYING vec3 vNormal;
 VARYING vec4 vTangent;
 VARYING vec2 vTexcoord0;
 VARYING vec2 vTexcoord1;
 VARYING vec4 vColor;
-VARYING vec3 vDiffuseLight;   // Gouraud: what multiplies the diffuse colour
-VARYING vec3 vSpecularLight;  // Gouraud: the direct highlight
-VARYING vec3 vBackDiffuseLight, vBackSpecularLight;  // Gouraud, double-sided: the same for back faces
+LIGHT_VARYING vec3 vDiffuseLight;   // Flat, Gouraud: what multiplies the diffuse colour
+LIGHT_VARYING vec3 vSpecularLight;  // Flat, Gouraud: the direct highlight
+LIGHT_VARYING vec3 vBackDiffuseLight, vBackSpecularLight;  // the same for back faces of double-sided ones
 
 uniform mat4 uModel;
 uniform mat4 uViewProjection;
@@ -133,7 +139,7 @@ void main() {
     vTexcoord0 = aTexcoord0;
     vTexcoord1 = aTexcoord1;
     vColor = aColor;
-#if SHADING == 2
+#if SHADING == 1 || SHADING == 2
     vec3 v = normalize(uEye - vWorld);
     vec3 base = uBaseColor.rgb * aColor.rgb;
     vec3 f0 = mix(vec3(0.04), base, uMetallic);
@@ -227,14 +233,7 @@ void main() {
     vec3 diffuseColor = base.rgb * (1.0 - metallic);
     vec3 f0 = mix(vec3(0.04), base.rgb, metallic);
     vec3 v = normalize(uEye - vWorld);
-#if SHADING == 1
-    vec3 n = normalize(cross(dFdx(vWorld), dFdy(vWorld)));
-    if (dot(n, v) < 0.0) n = -n;
-    vec3 diffuse, specular;
-    directLight(n, v, f0, roughness, diffuse, specular);
-    vec3 ambient = diffuseIrradiance(n);
-    vec3 lit = diffuseColor * (diffuse + ambient) + specular + f0 * ambient;
-#elif SHADING == 2
+#if SHADING == 1 || SHADING == 2
     vec3 lit = gl_FrontFacing ? diffuseColor * vDiffuseLight + vSpecularLight
                               : diffuseColor * vBackDiffuseLight + vBackSpecularLight;
 #else
@@ -475,7 +474,9 @@ void Renderer::drawItem(const Scene& scene, const DrawItem& item, const View& vi
     glUniform4f(p.baseColor, base.r, base.g, base.b, base.a);
     glUniform1f(p.metallic, m.metallic);
     glUniform1f(p.roughness, m.roughness);
-    const glm::vec3 emissive = settings.coverageOnly ? glm::vec3(0.0f) : m.emissive * m.emissiveStrength;
+    // KHR_materials_unlit draws the base colour alone: its emission is
+    // ignored, as the extension says and three.js does.
+    const glm::vec3 emissive = settings.coverageOnly || m.unlit ? glm::vec3(0.0f) : m.emissive * m.emissiveStrength;
     glUniform3f(p.emissive, emissive.r, emissive.g, emissive.b);
     glUniform1f(p.normalScale, m.normalScale);
     glUniform1f(p.occlusionStrength, m.occlusionStrength);

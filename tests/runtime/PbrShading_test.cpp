@@ -128,20 +128,26 @@ constexpr Shading kLevels[] = {Shading::Unlit, Shading::Flat, Shading::Gouraud, 
 
 } // namespace
 
-// The third-party car: KHR_materials_unlit, black base, colours in emission.
-TEST_P(PbrShading, unlitBlackBaseWithEmissionDrawsTheEmissiveColour) {
+// The third-party car: black base colours, the colours in emission. A lit
+// material shows its emission at every level; a KHR_materials_unlit one
+// shows its base colour alone, as the extension says and three.js draws it.
+TEST_P(PbrShading, blackBaseWithEmissionDrawsTheEmissiveColourUnlessUnlit) {
     const glm::vec3 emissive{0.2f, 0.6f, 1.0f};
     for (Shading level : kLevels) {
-        const Image img = render(
-            [&](Scene& s) {
-                addAt(s, {}, makeSquare(), {.name = "test", .baseColor = {0, 0, 0, 1}, .emissive = emissive, .unlit = true});
-            },
-            {.shading = level});
-        const Pixel p = at(img, 48, 48);
-        EXPECT_NEAR(p.r, encoded(emissive.r), 2) << toString(level);
-        EXPECT_NEAR(p.g, encoded(emissive.g), 2) << toString(level);
-        EXPECT_NEAR(p.b, encoded(emissive.b), 2) << toString(level);
-        saveOnFailure(img, "pbr-unlit-emissive");
+        for (bool unlit : {false, true}) {
+            const Image img = render(
+                [&](Scene& s) {
+                    addAt(s, {}, makeSquare(), {.name = "test", .baseColor = {0, 0, 0, 1}, .emissive = emissive, .unlit = unlit});
+                },
+                {.shading = level, .settings = {.lightIntensity = 0.0f, .environmentIntensity = 0.0f}});
+            const Pixel p = at(img, 48, 48);
+            const glm::vec3 expected = unlit ? glm::vec3(0.0f) : emissive;
+            EXPECT_NEAR(p.r, encoded(expected.r), 2) << toString(level) << (unlit ? ", unlit" : "");
+            EXPECT_NEAR(p.g, encoded(expected.g), 2) << toString(level) << (unlit ? ", unlit" : "");
+            EXPECT_NEAR(p.b, encoded(expected.b), 2) << toString(level) << (unlit ? ", unlit" : "");
+            EXPECT_EQ(p.a, 255);
+            saveOnFailure(img, unlit ? "pbr-unlit-emissive" : "pbr-lit-emissive");
+        }
     }
 }
 
