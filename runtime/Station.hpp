@@ -3,7 +3,7 @@
 // pipeline, each stage a class of its own:
 //   capture -> matte -> people's depths -> update -> select -> budget
 //   -> backdrop -> contact shadows -> render -> holdout -> composite -> output
-// (CaptureStage, MatteStage, PersonDepthStage, moveObjects, select,
+// (CaptureStage, MatteStage, PersonDepthStage, moveObjects and animateObjects, select,
 // BudgetStage, Compositor, ShadowCatcher, Renderer and PointCloudLayer,
 // HoldoutStage, Compositor, OutputStage), and it records
 // each stage's milliseconds in stats() (runtime/FrameStats.hpp).

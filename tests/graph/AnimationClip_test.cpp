@@ -197,3 +197,12 @@ TEST(AnimationPlayer, worldMatricesAndBoundsFollowAfterUpdate) {
     EXPECT_NEAR(s.scene.worldBound(s.node).center.x, 2.0f, 1e-5f);
     EXPECT_NEAR(s.scene.bound().center.x, 2.0f, 1e-5f);
 }
+
+TEST(AnimationSample, headerExample) {
+    // graph/animation/AnimationClip.hpp
+    AnimationChannel c{.target = 0, .path = AnimationPath::Translation,
+                       .interpolation = Interpolation::Linear,
+                       .times = {0.0f, 1.0f}, .values = {{0, 0, 0, 0}, {2, 0, 0, 0}}};
+    glm::vec4 v = sample(c, 0.25f);   // (0.5, 0, 0, 0)
+    EXPECT_EQ(v, glm::vec4(0.5f, 0, 0, 0));
+}
