@@ -6,6 +6,7 @@
 
 #include <iostream>
 #include <memory>
+#include <set>
 
 namespace arcomp {
 namespace {
@@ -21,6 +22,22 @@ const char* kindName(NodeKind k) {
     case NodeKind::PointCloud: return "point-cloud";
     }
     return "?";
+}
+
+// A model's animations (index, name, channels, length, interpolations) and
+// skins (name, joints), so an integrator can pick the `animation:` to play.
+void printAnimations(const SceneFile& file) {
+    for (std::size_t i = 0; i < file.animations.size(); ++i) {
+        const AnimationClip& clip = file.animations[i].clip;
+        std::set<Interpolation> used;
+        for (const AnimationChannel& c : clip.channels) used.insert(c.interpolation);
+        std::cout << "animation " << i << " '" << clip.name << "': " << clip.channels.size() << " channels, "
+                  << clip.duration() << " s";
+        for (Interpolation mode : used) std::cout << ", " << interpolationName(mode);
+        std::cout << "\n";
+    }
+    for (const Skin& skin : file.skins)
+        std::cout << "skin '" << skin.name << "': " << skin.joints.size() << " joints (drawn in bind pose)\n";
 }
 
 int inspect(const std::string& path) {
@@ -49,6 +66,7 @@ int inspect(const std::string& path) {
               << ", images " << scene.images().size() << "\n";
     if (b.empty()) std::cout << "bounds: empty\n";
     else std::cout << "bounds: centre (" << b.center.x << ", " << b.center.y << ", " << b.center.z << "), radius " << b.radius << "\n";
+    printAnimations(file);
     for (const std::string& w : file.warnings) std::cout << "warning: " << w << "\n";
     return kExitOk;
 }
