@@ -66,8 +66,10 @@ public:
     static void preflight(const StationConfig& cfg);
 
     // Movers and the gaze track run on this clock: the video's own
-    // timestamps in replay (deterministic), wall time since `start` live. A
-    // reloaded live station keeps the previous one's start.
+    // timestamps in replay (deterministic), wall time since `start` live;
+    // model animations on the shown frame's capture time since `start`
+    // (CaptureStage::frameSeconds). A reloaded live station keeps the
+    // previous one's start.
     void setClockStart(std::chrono::steady_clock::time_point start) { capture_.setClockStart(start); }
     std::chrono::steady_clock::time_point clockStart() const { return capture_.clockStart(); }
     ~Station();

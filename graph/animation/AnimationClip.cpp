@@ -102,7 +102,9 @@ glm::vec4 sample(const AnimationChannel& c, float t) {
     if (keys == 0) return rotation ? glm::vec4(0, 0, 0, 1) : glm::vec4(0.0f);
     if (t <= c.times.front()) return keyValue(c, 0);
     if (t >= c.times.back()) return keyValue(c, keys - 1);
-    // The key interval [times[k], times[k+1]) that holds t.
+    // glTF 2.0 specification, Appendix C: within the key interval
+    // [times[k], times[k+1]) that holds t, STEP keeps key k's value, LINEAR
+    // lerps (slerp below for rotations), CUBICSPLINE is hermite() below.
     const std::size_t k = static_cast<std::size_t>(std::upper_bound(c.times.begin(), c.times.end(), t) - c.times.begin()) - 1;
     const float td = c.times[k + 1] - c.times[k];
     const float u = (t - c.times[k]) / td;
