@@ -161,6 +161,36 @@ TEST(ObjectAnimationConfig, theNamedOrIndexedClipIsBoundWithItsOptions) {
     EXPECT_FALSE(movesOverTime(world, world.scene.root()));
 }
 
+// Inside a grouping node the animated object is regrouped as a mover is:
+// the grouping tree sees its new box (here twice the size, "grow" held at
+// its last key).
+TEST(ObjectAnimationConfig, anAnimatedObjectInAGroupingNodeHasItsBoxRefreshed) {
+    TempDir dir;
+    dir.write("slide.gltf", slidingTriangle());
+    StationConfig cfg = loadStationConfig(dir.write("s.yaml", objectYaml("      animation: grow\n      loop: false\n")));
+    ObjectConfig box;
+    box.name = "box";
+    box.shape = "box";
+    box.position = {5.0f, 0.0f, 0.0f};
+    cfg.objects.push_back(box);
+    cfg.grouping.enabled = true;
+    cfg.grouping.objects = true;
+    World world;
+    std::vector<std::string> warnings;
+    buildScene(cfg, world, warnings);
+    ASSERT_TRUE(warnings.empty()) << warnings[0];
+    ASSERT_EQ(world.animations.size(), 1u);
+    const ObjectAnimation& a = world.animations[0];
+    ASSERT_NE(a.groupingNode, kNoNode);
+    const GroupingNode& grouping = world.grouping.nodes[world.scene.payload(a.groupingNode)];
+    ASSERT_EQ(grouping.objects.at(a.groupingObject), a.node);
+    const glm::vec3 rest = grouping.tree.item(a.groupingObject).box.size();
+    animateObjects(world, 5.0);
+    const glm::vec3 grown = grouping.tree.item(a.groupingObject).box.size();
+    EXPECT_NEAR(grown.x, 2.0f * rest.x, 1e-5f);
+    EXPECT_NEAR(grown.y, 2.0f * rest.y, 1e-5f);
+}
+
 namespace {
 
 StationConfig slidingStation(const std::filesystem::path& model, bool animated) {
