@@ -4,6 +4,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <thread>
 
 namespace arcomp {
@@ -41,6 +42,11 @@ double CaptureStage::seconds() const {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - clockStart_).count();
 }
 
+double CaptureStage::frameSeconds() const {
+    if (input_.replay) return videoSeconds_;
+    return std::max(0.0, std::chrono::duration<double>(liveCaptured_ - clockStart_).count());
+}
+
 bool CaptureStage::grab() {
     std::optional<Frame> f;
     if (input_.replay) {
@@ -63,6 +69,13 @@ bool CaptureStage::grab() {
         }
     }
     newFrame_ = f.has_value();
+    if (f && !input_.replay) {
+        // A source that does not stamp its frames is taken as capturing now;
+        // a fallback source's frames may not come in order with the last
+        // camera frame, and animation time must not run backwards.
+        const auto captured = f->captured == std::chrono::steady_clock::time_point{} ? std::chrono::steady_clock::now() : f->captured;
+        liveCaptured_ = std::max(liveCaptured_, captured);
+    }
     if (f) {
         if (!frame_.empty() && f->image.size() != frame_.size())
             cv::resize(f->image, frame_, frame_.size(), 0, 0, cv::INTER_AREA);  // a fallback of another size

@@ -52,6 +52,11 @@ public:
     // video's own timestamp in replay (deterministic), the wall time since
     // clockStart() live. A reloaded live station keeps the previous start.
     double seconds() const;
+    // The time of the frame on screen, which model animations run on: as
+    // seconds() in replay; live, when the camera captured that frame, on the
+    // same clock. So the CG moves with the video it is composited into and
+    // holds still while the camera has nothing new.
+    double frameSeconds() const;
     void setClockStart(std::chrono::steady_clock::time_point start) { clockStart_ = start; }
     std::chrono::steady_clock::time_point clockStart() const { return clockStart_; }
 
@@ -79,6 +84,7 @@ private:
     SourceState replayState_{SourceStatus::Opening, ""};
     std::chrono::steady_clock::time_point clockStart_ = std::chrono::steady_clock::now();
     double videoSeconds_ = 0.0;
+    std::chrono::steady_clock::time_point liveCaptured_{};  // the newest live frame's capture time
 };
 
 } // namespace arcomp

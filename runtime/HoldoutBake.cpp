@@ -8,17 +8,6 @@
 
 namespace arcomp {
 
-namespace {
-
-bool moves(const World& world, NodeId n) {
-    for (; n != kNoNode; n = world.scene.parent(n))
-        for (const ObjectMotion& m : world.motions)
-            if (m.node == n) return true;
-    return false;
-}
-
-} // namespace
-
 HoldoutBake bakeHoldouts(World& world, const View& view, const CompositorConfig& config,
                          const std::filesystem::path& cacheFolder, const std::filesystem::path& configFile) {
     Scene& scene = world.scene;
@@ -47,7 +36,7 @@ HoldoutBake bakeHoldouts(World& world, const View& view, const CompositorConfig&
         }
         const Geometry& g = scene.geometry(scene.meshPart(n).geometry);
         std::vector<ViewRegion> regions;
-        if (!full && !moves(world, n)) regions.push_back(ViewRegion::fromVertices(corners));
+        if (!full && !movesOverTime(world, n)) regions.push_back(ViewRegion::fromVertices(corners));
         if (bake.folder.empty()) {
             world.holdouts.add(scene, n, bakeSilhouetteMesh(g.positions, g.indices, regions), material);
             ++bake.baked;

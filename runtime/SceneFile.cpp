@@ -63,12 +63,25 @@ BakeTally buildScene(const StationConfig& cfg, World& world, std::vector<std::st
                 addLodLevels(scene, lodTable, parent, part, std::move(l.levels), lodSettings(o));
             };
         if (!o.model.empty()) {
+            const std::string object = cfg.file.string() + ":" + std::to_string(o.line) + ": object '" + o.name + "' skipped: ";
             try {
-                const LoadedModel loaded = loadModel(o.model, scene, place, placeMesh);
+                ParsedModel parsed = parseModel(o.model);
+                // Checked before placing, so that a wrong name leaves no
+                // unanimated copy in the scene.
+                std::optional<std::size_t> clip;
+                if (!o.animation.empty() && !(clip = findAnimation(parsed.animations, o.animation))) {
+                    warnings.push_back(object + "model '" + o.model.string() + "' has no animation '" + o.animation +
+                                       "'; its animations: " + listAnimations(parsed.animations));
+                    continue;
+                }
+                const LoadedModel loaded = placeModel(std::move(parsed), scene, place, o.model.stem().string(), placeMesh);
                 for (const std::string& w : loaded.warnings) warnings.push_back(o.model.string() + ": " + w);
+                if (clip)
+                    world.animations.push_back({.player = AnimationPlayer(loaded.animations[*clip],
+                                                                          {.loop = o.animationLoop, .speed = o.animationSpeed}),
+                                                .node = place});
             } catch (const ModelError& e) {
-                warnings.push_back(cfg.file.string() + ":" + std::to_string(o.line) + ": object '" + o.name +
-                                   "' skipped: " + e.what());
+                warnings.push_back(object + e.what());
             }
             continue;
         }
@@ -82,7 +95,7 @@ BakeTally buildScene(const StationConfig& cfg, World& world, std::vector<std::st
         else scene.addMesh(place, part, o.name);
     }
     finishGrouping(cfg.grouping, scene, groupingNode, world.grouping, lodTable);
-    // A mover inside the grouping node rebuilds only its own branch.
+    // A mover or an animated object inside the grouping node rebuilds only its own branch.
     if (groupingNode != kNoNode && objectParent == groupingNode) {
         const std::vector<NodeId>& objects = world.grouping.nodes[scene.payload(groupingNode)].objects;
         for (ObjectMotion& motion : world.motions) {
@@ -90,6 +103,12 @@ BakeTally buildScene(const StationConfig& cfg, World& world, std::vector<std::st
             if (it == objects.end()) continue;
             motion.groupingNode = groupingNode;
             motion.groupingObject = static_cast<std::uint32_t>(it - objects.begin());
+        }
+        for (ObjectAnimation& animation : world.animations) {
+            const auto it = std::find(objects.begin(), objects.end(), animation.node);
+            if (it == objects.end()) continue;
+            animation.groupingNode = groupingNode;
+            animation.groupingObject = static_cast<std::uint32_t>(it - objects.begin());
         }
     }
     addPointClouds(cfg.pointClouds, cfg.file, scene, world.pointClouds, warnings);
@@ -109,8 +128,10 @@ SceneFile loadSceneFile(const fs::path& file) {
         out.environmentIntensity = cfg.render.environmentIntensity;
         return out;
     }
-    const LoadedModel loaded = loadModel(file, out.world.scene, out.world.scene.root());
-    out.warnings = loaded.warnings;
+    LoadedModel loaded = loadModel(file, out.world.scene, out.world.scene.root());
+    out.warnings = std::move(loaded.warnings);
+    out.animations = std::move(loaded.animations);
+    out.skins = std::move(loaded.skins);
     out.background = glm::vec4(0.0f);
     return out;
 }

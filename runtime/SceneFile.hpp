@@ -5,6 +5,7 @@
 //   SceneFile f = loadSceneFile("bunny.obj");          // throws ModelError
 //   SceneFile g = loadSceneFile("station.yaml");       // throws ConfigError
 
+#include "graph/animation/Skin.hpp"
 #include "graph/core/World.hpp"
 #include "graph/core/View.hpp"
 #include "runtime/BakeCache.hpp"
@@ -26,11 +27,16 @@ struct SceneFile {
     // Models a config names that could not be loaded are skipped, each with
     // a line here: the station goes on with the rest.
     std::vector<std::string> warnings;
+    // A model file's glTF animations and skins (a config's objects play
+    // theirs through world.animations instead).
+    std::vector<ModelAnimation> animations;
+    std::vector<Skin> skins;
 };
 
 SceneFile loadSceneFile(const std::filesystem::path& file);
 // Adds the config's objects to the world; failures become warnings. Objects
-// with `lod` get an LOD node per mesh, objects with `motion` a mover, and
+// with `lod` get an LOD node per mesh, objects with `motion` a mover, those
+// with `animation` a player (an unknown animation skips the object), and
 // the grouping and point_clouds sections their nodes. The LOD levels are
 // generated at load, or loaded from `bakeCache` when they were generated
 // there before from the same mesh and ratios (runtime/BakeCache.hpp);

@@ -99,6 +99,7 @@ bool Station::frame() {
 
     const double seconds = capture_.seconds();
     moveObjects(world_, seconds);
+    animateObjects(world_, capture_.frameSeconds());
     world_.scene.update();
     stats_.updateMs = clock.lap();
 

@@ -3,7 +3,7 @@
 // pipeline, each stage a class of its own:
 //   capture -> matte -> people's depths -> update -> select -> budget
 //   -> backdrop -> contact shadows -> render -> holdout -> composite -> output
-// (CaptureStage, MatteStage, PersonDepthStage, moveObjects, select,
+// (CaptureStage, MatteStage, PersonDepthStage, moveObjects and animateObjects, select,
 // BudgetStage, Compositor, ShadowCatcher, Renderer and PointCloudLayer,
 // HoldoutStage, Compositor, OutputStage), and it records
 // each stage's milliseconds in stats() (runtime/FrameStats.hpp).
@@ -66,8 +66,10 @@ public:
     static void preflight(const StationConfig& cfg);
 
     // Movers and the gaze track run on this clock: the video's own
-    // timestamps in replay (deterministic), wall time since `start` live. A
-    // reloaded live station keeps the previous one's start.
+    // timestamps in replay (deterministic), wall time since `start` live;
+    // model animations on the shown frame's capture time since `start`
+    // (CaptureStage::frameSeconds). A reloaded live station keeps the
+    // previous one's start.
     void setClockStart(std::chrono::steady_clock::time_point start) { capture_.setClockStart(start); }
     std::chrono::steady_clock::time_point clockStart() const { return capture_.clockStart(); }
     ~Station();

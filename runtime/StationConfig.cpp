@@ -77,6 +77,19 @@ ObjectConfig readObject(YamlMap& m, std::size_t index) {
         if (glm::length(o.velocity) == 0.0f) motion.report().add(motion.mark(), motion.where() + ".velocity: must not be zero");
         motion.finish();
     }
+    // Which animation exists is known once the model is loaded (buildScene,
+    // and so `arcomp check`); here only the shape of the keys.
+    if (m.has("animation")) {
+        if (!hasModel) m.report().add(m.mark(), m.where() + ".animation: only a model has animations");
+        m.text("animation", o.animation, Required::Yes);
+        if (o.animation.empty()) m.report().add(m.mark(), m.where() + ".animation: give an animation's name or index");
+    }
+    for (const char* key : {"loop", "speed"})
+        if (m.has(key) && !m.has("animation"))
+            m.report().add(m.mark(), m.where() + "." + key + ": only with 'animation'");
+    m.boolean("loop", o.animationLoop);
+    // Backwards play is not supported: a loop would need its own start.
+    m.number("speed", o.animationSpeed, 1e-3, 1e3);
     for (int i = 0; i < 4; ++i)
         if (o.color[i] < 0.0f || o.color[i] > 1.0f) {
             m.report().add(m.mark(), m.where() + ".color: components must lie in 0..1 (linear RGBA)");

@@ -45,6 +45,11 @@ struct ObjectConfig {
     // A mover (graph/core/ObjectMotion.hpp): back and forth along the velocity.
     glm::vec3 velocity{0.0f};
     float rangeMetres = 0.0f;
+    // A glTF animation of the model to play on the video's clock, by name or
+    // index; empty: none plays, even when the model has some.
+    std::string animation;
+    bool animationLoop = true;
+    float animationSpeed = 1.0f;
     int line = 0;  // where it was declared, for messages about it later
 };
 

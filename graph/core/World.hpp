@@ -15,6 +15,7 @@
 //   DrawList list;
 //   select(world, view, {.shading = Shading::Phong, .timeSeconds = t}, list);
 
+#include "graph/animation/AnimationPlayer.hpp"
 #include "graph/core/ObjectMotion.hpp"
 #include "graph/core/Scene.hpp"
 #include "graph/grouping/GroupingNodes.hpp"
@@ -27,6 +28,17 @@
 
 namespace arcomp {
 
+// A config object's model animation: the player, and the object's placing
+// transform, whose subtree the animation changes.
+struct ObjectAnimation {
+    AnimationPlayer player;
+    NodeId node = kNoNode;
+    // As for a mover: the grouping node that holds the object, and its index
+    // among that node's objects, so only its branch is rebuilt.
+    NodeId groupingNode = kNoNode;
+    std::uint32_t groupingObject = 0;
+};
+
 struct World {
     Scene scene;
     LodTable lods;                       // NodeKind::Lod
@@ -35,10 +47,17 @@ struct World {
     PointCloudNodes pointClouds;         // NodeKind::PointCloud
     HoldoutMeshes holdouts;              // per mesh node that cuts people out of the video
     std::vector<ObjectMotion> motions;   // the config's movers
+    std::vector<ObjectAnimation> animations;  // the config's animated models
 };
 
 // Puts every mover where it is at `timeSeconds`, updates the scene and
 // rebuilds only the grouping branches that hold a mover.
 void moveObjects(World& world, double timeSeconds);
+// Poses every animated object for `timeSeconds` (the video frame's time),
+// updates the scene and rebuilds the grouping branches that hold one.
+void animateObjects(World& world, double timeSeconds);
+// Whether node n or one of its ancestors is a mover or an animated object:
+// its shape on screen changes from frame to frame.
+bool movesOverTime(const World& world, NodeId n);
 
 } // namespace arcomp

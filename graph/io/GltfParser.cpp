@@ -3,6 +3,7 @@
 // the node graph to the caller.
 
 #include "graph/io/ContainedPath.hpp"
+#include "graph/io/GltfAnimation.hpp"
 #include "graph/io/ModelLoader.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -899,6 +900,7 @@ ParsedModel parseGltf(const fs::path& file) {
     for (std::size_t m = 0; m < model.meshes.size(); ++m) partsOfMesh.push_back(primitiveParts(static_cast<int>(m)));
 
     // Parents before children, as ParsedModel promises.
+    std::vector<int> parsedOf(nodeCount, -1);  // glTF node -> its index in out.nodes
     std::vector<std::pair<int, int>> stack;  // glTF node, parsed parent
     for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({*it, -1});
     while (!stack.empty()) {
@@ -909,6 +911,7 @@ ParsedModel parseGltf(const fs::path& file) {
         ModelNode node;
         node.parent = parent;
         node.local = nodeMatrix(src, i, reader);
+        node.trs = authoredTrs(src);
         node.name = src.name;
         if (src.mesh >= 0) {
             if (static_cast<std::size_t>(src.mesh) >= partsOfMesh.size())
@@ -916,9 +919,13 @@ ParsedModel parseGltf(const fs::path& file) {
             node.parts = partsOfMesh[static_cast<std::size_t>(src.mesh)];
         }
         const int self = static_cast<int>(out.nodes.size());
+        parsedOf[i] = self;
         out.nodes.push_back(std::move(node));
         for (auto c = src.children.rbegin(); c != src.children.rend(); ++c) stack.push_back({*c, self});
     }
+    readGltfAnimation(model, name, [&reader](std::size_t index, const std::string& use, int type, const std::vector<int>& components) {
+        return reader.readFloats(index, use, type, components);
+    }, parsedOf, out);
     return out;
 }
 

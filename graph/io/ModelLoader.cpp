@@ -16,8 +16,26 @@ bool hasGlbMagic(const fs::path& file) {
     return in.gcount() == 4 && std::equal(magic, magic + 4, "glTF");
 }
 
+// A clip with node indices of the parsed model, bound to the placed nodes:
+// each animated node once, with the pose the file gave it.
+ModelAnimation retarget(AnimationClip clip, const ParsedModel& model, const std::vector<NodeId>& ids) {
+    ModelAnimation out;
+    std::vector<std::uint32_t> slotOf(model.nodes.size(), kNoJoint);
+    for (AnimationChannel& c : clip.channels) {
+        if (slotOf[c.target] == kNoJoint) {
+            slotOf[c.target] = static_cast<std::uint32_t>(out.nodes.size());
+            // The parser refuses channels on nodes without TRS.
+            out.nodes.push_back({ids[c.target], model.nodes[c.target].trs.value_or(Trs{})});
+        }
+        c.target = slotOf[c.target];
+    }
+    out.clip = std::move(clip);
+    return out;
+}
+
 // Appending cannot fail: by now every index in the parsed model was checked.
-NodeId append(ParsedModel& model, Scene& scene, NodeId parent, const std::string& name, const MeshPlacer& placeMesh) {
+NodeId append(ParsedModel& model, Scene& scene, NodeId parent, const std::string& name, const MeshPlacer& placeMesh,
+              LoadedModel& loaded) {
     const auto geometryBase = static_cast<std::uint32_t>(scene.geometries().size());
     const auto materialBase = static_cast<std::uint32_t>(scene.materials().size());
     const auto imageBase = static_cast<int>(scene.images().size());
@@ -40,25 +58,39 @@ NodeId append(ParsedModel& model, Scene& scene, NodeId parent, const std::string
             else scene.addMesh(ids[i], placed);
         }
     }
+    for (AnimationClip& clip : model.animations) loaded.animations.push_back(retarget(std::move(clip), model, ids));
+    const auto placed = [&](std::uint32_t n) { return n == kNoJoint ? kNoNode : ids[n]; };
+    for (Skin& skin : model.skins) {
+        for (std::uint32_t& j : skin.joints) j = placed(j);
+        for (std::uint32_t& u : skin.users) u = placed(u);
+        skin.skeleton = placed(skin.skeleton);
+        loaded.skins.push_back(std::move(skin));
+    }
     return root;
 }
 
 } // namespace
 
-LoadedModel loadModel(const fs::path& file, Scene& scene, NodeId parent, const MeshPlacer& placeMesh) {
+ParsedModel parseModel(const fs::path& file) {
     std::error_code ec;
     if (!fs::is_regular_file(file, ec))
         throw ModelError(file.string(), "", fs::exists(file, ec) ? "is not a regular file" : "no such file");
     std::string ext = file.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    ParsedModel model;
-    if (ext == ".gltf" || ext == ".glb" || hasGlbMagic(file)) model = parseGltf(file);
-    else if (ext == ".obj") model = parseObj(file);
-    else throw ModelError(file.string(), "", "unknown model format '" + ext + "'; expected .gltf, .glb or .obj");
+    if (ext == ".gltf" || ext == ".glb" || hasGlbMagic(file)) return parseGltf(file);
+    if (ext == ".obj") return parseObj(file);
+    throw ModelError(file.string(), "", "unknown model format '" + ext + "'; expected .gltf, .glb or .obj");
+}
+
+LoadedModel placeModel(ParsedModel model, Scene& scene, NodeId parent, const std::string& name, const MeshPlacer& placeMesh) {
     LoadedModel out;
-    out.root = append(model, scene, parent, file.stem().string(), placeMesh);
+    out.root = append(model, scene, parent, name, placeMesh, out);
     out.warnings = std::move(model.warnings);
     return out;
+}
+
+LoadedModel loadModel(const fs::path& file, Scene& scene, NodeId parent, const MeshPlacer& placeMesh) {
+    return placeModel(parseModel(file), scene, parent, file.stem().string(), placeMesh);
 }
 
 } // namespace arcomp

@@ -6,6 +6,7 @@
 //   // m.root is a group named after the file; m.warnings lists what was
 //   // skipped (points and lines, images that do not decode, textures on a
 //   // TEXCOORD_n the primitive lacks, ...)
+//   AnimationPlayer player(m.animations[0]);   // glTF animations, if any
 //
 // glTF normal maps on primitives without TANGENT get tangents generated
 // (computeTangents, Geometry::tangentsGenerated).
@@ -15,11 +16,14 @@
 // not support, URIs leaving the model's folder) throws ModelError and leaves
 // the scene exactly as it was.
 
+#include "graph/animation/ModelAnimation.hpp"
+#include "graph/animation/Skin.hpp"
 #include "graph/io/ModelError.hpp"
 #include "graph/core/Scene.hpp"
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +32,11 @@ namespace arcomp {
 struct LoadedModel {
     NodeId root = kNoNode;
     std::vector<std::string> warnings;
+    // glTF animations, their channels bound to the placed nodes
+    // (graph/animation/AnimationPlayer.hpp plays one).
+    std::vector<ModelAnimation> animations;
+    // glTF skins with joints and users as NodeIds; not applied yet.
+    std::vector<Skin> skins;
 };
 
 // Each of the model's mesh parts becomes a Mesh node under its transform,
@@ -41,6 +50,11 @@ LoadedModel loadModel(const std::filesystem::path& file, Scene& scene, NodeId pa
 struct ModelNode {
     int parent = -1;  // index into nodes, -1 for the model's root
     glm::mat4 local{1.0f};
+    // The authored translation, rotation and scale that make `local`; an
+    // animation channel replaces one of them. None for a node that gives a
+    // matrix, which is why such a node may not be animated.
+    std::optional<Trs> trs = Trs{};
+    int skin = -1;  // index into the model's skins
     std::vector<MeshPart> parts;  // indices into the model's geometries and materials
     std::string name;
 };
@@ -51,7 +65,15 @@ struct ParsedModel {
     std::vector<Material> materials;
     std::vector<Image> images;
     std::vector<std::string> warnings;
+    std::vector<AnimationClip> animations;  // channel targets index `nodes`
+    std::vector<Skin> skins;                // joints and users index `nodes`
 };
+
+// The two halves of loadModel, for a caller that looks at a model before
+// placing it (a station config checks the animation it names).
+ParsedModel parseModel(const std::filesystem::path& file);
+LoadedModel placeModel(ParsedModel model, Scene& scene, NodeId parent, const std::string& name,
+                       const MeshPlacer& placeMesh = {});
 
 ParsedModel parseGltf(const std::filesystem::path& file);
 ParsedModel parseObj(const std::filesystem::path& file);

@@ -101,6 +101,22 @@ void printMaterials(const Scene& scene) {
     }
 }
 
+// A model's animations (index, name, channels, length, interpolations) and
+// skins (name, joints), so an integrator can pick the `animation:` to play.
+void printAnimations(const SceneFile& file) {
+    for (std::size_t i = 0; i < file.animations.size(); ++i) {
+        const AnimationClip& clip = file.animations[i].clip;
+        std::set<Interpolation> used;
+        for (const AnimationChannel& c : clip.channels) used.insert(c.interpolation);
+        std::cout << "animation " << i << " '" << clip.name << "': " << clip.channels.size() << " channels, "
+                  << clip.duration() << " s";
+        for (Interpolation mode : used) std::cout << ", " << interpolationName(mode);
+        std::cout << "\n";
+    }
+    for (const Skin& skin : file.skins)
+        std::cout << "skin '" << skin.name << "': " << skin.joints.size() << " joints (drawn in bind pose)\n";
+}
+
 int inspect(const std::string& path) {
     SceneFile file = loadSceneFile(path);
     Scene& scene = file.world.scene;
@@ -128,6 +144,7 @@ int inspect(const std::string& path) {
     if (b.empty()) std::cout << "bounds: empty\n";
     else std::cout << "bounds: centre (" << b.center.x << ", " << b.center.y << ", " << b.center.z << "), radius " << b.radius << "\n";
     printMaterials(scene);
+    printAnimations(file);
     for (const std::string& w : file.warnings) std::cout << "warning: " << w << "\n";
     return kExitOk;
 }
