@@ -98,7 +98,8 @@ TEST(Cli, benchLoadPrintsOneJsonLineLast) {
 
 // What a reference renderer is told must reach arcomp too: the field of view
 // (a narrower one fills more of the frame) and the light's direction (a
-// quad lit from behind its viewer shows only the ambient term).
+// quad lit from behind its viewer shows only the environment's light, which
+// for the neutral studio is about three quarters of the front-lit quad's).
 TEST(Cli, renderTakesFieldOfViewAndLightDirection) {
     TempDir dir;
     const std::string quad = dir.write("quad.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n").string();
@@ -117,7 +118,7 @@ TEST(Cli, renderTakesFieldOfViewAndLightDirection) {
     };
     const double front = brightness(render("front.png", "--light-direction 0,0,1"));
     const double behind = brightness(render("behind.png", "--light-direction 0,0,-1"));
-    EXPECT_GT(front, 1.5 * behind);
+    EXPECT_GT(front, 1.25 * behind);
     const ShellResult zero = arcompCommand("render " + quad + " --out x.png --light-direction 0,0,0");
     EXPECT_EQ(zero.code, 2);
     EXPECT_NE(zero.out.find("--light-direction"), std::string::npos) << zero.out;
