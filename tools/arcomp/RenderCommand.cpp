@@ -1,6 +1,7 @@
 // arcomp render <scene> --out F.png: one headless frame of a model or a
 // station config's scene. arcomp environment --out F.hdr: the light it uses.
 
+#include "graph/animation/AnimationPlayer.hpp"
 #include "graph/core/SelectPass.hpp"
 #include "runtime/Environment.hpp"
 #include "runtime/GlContext.hpp"
@@ -13,6 +14,7 @@
 #include "tools/arcomp/CliParse.hpp"
 #include "tools/arcomp/Command.hpp"
 
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -21,11 +23,46 @@ namespace arcomp {
 namespace {
 
 struct RenderOptions {
-    std::string scene, out, size = "640x480", eye, target, shading = "phong", gl = "auto", lightDirection, environment;
+    std::string scene, out, size = "640x480", eye, target, shading = "phong", gl = "auto", lightDirection, lightColor,
+        environment, animation;
     float fovy = 0.0f;  // 0: the station camera's, else 45
     std::optional<float> environmentIntensity;
     float lightIntensity = RenderSettings{}.lightIntensity;
+    double time = -1.0;  // below zero: not given
 };
+
+// --time poses a config's animated objects as a station would at that frame
+// time, or one of a model file's animations (--animation, the first by
+// default).
+void pose(SceneFile& file, const RenderOptions& o) {
+    if (o.time < 0.0) {
+        if (!o.animation.empty()) throw InputError("--animation needs --time");
+        return;
+    }
+    if (!file.world.animations.empty()) {
+        if (!o.animation.empty()) throw InputError("--animation: a station config names each object's animation itself");
+        animateObjects(file.world, o.time);
+        return;
+    }
+    if (file.animations.empty()) throw InputError("--time: " + o.scene + " has no animations");
+    std::size_t chosen = 0;
+    if (!o.animation.empty()) {
+        const auto named = std::find_if(file.animations.begin(), file.animations.end(),
+                                        [&](const ModelAnimation& a) { return a.clip.name == o.animation; });
+        if (named != file.animations.end()) {
+            chosen = static_cast<std::size_t>(named - file.animations.begin());
+        } else if (std::all_of(o.animation.begin(), o.animation.end(), [](char c) { return c >= '0' && c <= '9'; }) &&
+                   o.animation.size() < 6 && std::stoul(o.animation) < file.animations.size()) {
+            chosen = std::stoul(o.animation);
+        } else {
+            throw InputError("--animation '" + o.animation + "': " + o.scene + " has " +
+                             std::to_string(file.animations.size()) + " animations; `arcomp inspect` lists them");
+        }
+    }
+    // A still at a time: past the clip's end it holds the last pose, as a
+    // viewer's timeline does (a station loops by default instead).
+    AnimationPlayer(file.animations[chosen], {.loop = false}).apply(file.world.scene, o.time);
+}
 
 int render(const RenderOptions& o) {
     const glm::ivec2 size = parseSize(o.size, "--size");
@@ -39,6 +76,7 @@ int render(const RenderOptions& o) {
     }
     SceneFile file = loadSceneFile(o.scene);
     for (const std::string& w : file.warnings) std::cerr << "warning: " << w << "\n";
+    pose(file, o);
     World& world = file.world;
     Scene& scene = world.scene;
     scene.update();
@@ -62,6 +100,11 @@ int render(const RenderOptions& o) {
         const glm::vec3 towards = parseVec3(o.lightDirection, "--light-direction");
         if (glm::length(towards) == 0.0f) throw InputError("--light-direction: the zero vector has no direction");
         settings.lightDirection = glm::normalize(towards);
+    }
+    if (!o.lightColor.empty()) {
+        settings.lightColor = parseVec3(o.lightColor, "--light-color");
+        if (glm::any(glm::lessThan(settings.lightColor, glm::vec3(0.0f))))
+            throw InputError("--light-color '" + o.lightColor + "': expected linear R,G,B, none below 0");
     }
 
     auto context = HeadlessContext::create(request);
@@ -106,6 +149,10 @@ const bool registered = registerCommand(
          line.option("--fovy", o->fovy, "Vertical field of view in degrees (default: the station camera's, else 45)")
              .range(1.0, 179.0);
          line.option("--light-direction", o->lightDirection, "Direction towards the light X,Y,Z, world space (default: from above, left and front)");
+         line.option("--light-color", o->lightColor, "The directional light's linear colour R,G,B (default: white)");
+         line.option("--time", o->time, "Pose animations at this many seconds: a config's objects, or a model's --animation")
+             .range(0.0, 1e9);
+         line.option("--animation", o->animation, "A model file's animation to pose at --time, by name or index (default: the first)");
          line.option("--shading", o->shading, "unlit, flat, gouraud or phong").showDefault();
          line.option("--gl", o->gl, "OpenGL API: auto, gl33 or es3").showDefault();
          line.option("--environment", o->environment,

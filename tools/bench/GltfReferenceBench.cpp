@@ -12,9 +12,11 @@
 //  - `ssim` is the whole image's, as issue #22 states its target (0.9);
 //    `ssim_object` the same SSIM map averaged only where either renderer
 //    drew (grown by 5 pixels), since a background that matches trivially
-//    lifts the whole-image figure of a small object towards 1; and
-//    `diff_object`, the mean absolute difference there (0-255), as SSIM
-//    forgives a smooth surface of the wrong colour.
+//    lifts the whole-image figure of a small object towards 1 (a model
+//    passes when both reach the threshold); and `diff_object`, the mean
+//    absolute difference there (0-255), as SSIM forgives a smooth surface
+//    of the wrong colour.
+//  - The environment is arcomp's neutral studio, written as .hdr.
 //  - DIR gets models/ (the .gltf files and the .hdr), three/ and
 //    arcomp-<api>/ (the renders), and strip-<model>.png: three.js | each
 //    arcomp API | |three.js - first API| x4.
@@ -24,6 +26,7 @@
 //
 //   tools/gltf-reference/setup && arcomp bench gltf-reference --out build/bench-gltf-reference
 
+#include "runtime/Environment.hpp"
 #include "tools/arcomp/CliParse.hpp"
 #include "tools/arcomp/Command.hpp"
 #include "tools/bench/BenchJson.hpp"
@@ -115,27 +118,11 @@ std::string missingReference(const Options& o) {
     return {};
 }
 
-// The neutral environment: a grey sky brightening towards the zenith over a
-// darker grey ground, no hue, so that image-based light shows shape and
-// roughness without tinting. When arcomp's built-in neutral environment can
-// be exported as .hdr, write that here instead, so that both renderers light
-// with the environment arcomp ships.
-void writeNeutralEnvironment(const fs::path& file) {
-    const int width = 256, height = 128;
-    cv::Mat3f image(height, width);
-    for (int row = 0; row < height; ++row) {
-        // Equirectangular: the top row looks straight up.
-        const float up = std::sin((0.5f - (static_cast<float>(row) + 0.5f) / height) * 3.14159265f);
-        const float radiance = up >= 0.0f ? 0.35f + 0.25f * up : 0.35f + 0.2f * up;
-        image.row(row).setTo(cv::Vec3f(radiance, radiance, radiance));
-    }
-    if (!cv::imwrite(file.string(), image)) throw std::runtime_error("cannot write environment " + file.string());
-}
-
 fs::path environmentFile(const std::string& name, const fs::path& folder) {
     if (name != "neutral") throw std::logic_error("feature model environment '" + name + "' is not one the bench makes");
     const fs::path file = folder / "neutral.hdr";
-    if (!fs::exists(file)) writeNeutralEnvironment(file);
+    // The neutral studio arcomp lights with, so that both renderers see it.
+    if (!fs::exists(file)) writeRadianceHdr(file, neutralEnvironment());
     return file;
 }
 
@@ -143,38 +130,21 @@ std::string vec3(const glm::vec3& v) {
     return BenchJson::number(v.x) + "," + BenchJson::number(v.y) + "," + BenchJson::number(v.z);
 }
 
-// What arcomp is told for one image: THE place to change when `arcomp
-// render` gains options. `render --help` is read once; an input arcomp has
-// no option for yet is left out, and named in `missing`, which the JSON line
-// reports (the renderer then uses its own light or none).
+// What arcomp is told for one image: the camera, light, environment and
+// time the three.js page is given.
 std::string arcompRenderArgs(const Job& job, const fs::path& model, const fs::path& environment, const std::string& api,
-                             glm::ivec2 size, const fs::path& png, const std::string& renderHelp,
-                             std::vector<std::string>& missing) {
+                             glm::ivec2 size, const fs::path& png) {
     const FeatureModel& m = *job.model;
-    const auto has = [&](const std::string& option) {
-        for (std::size_t at = renderHelp.find(option); at != std::string::npos; at = renderHelp.find(option, at + 1)) {
-            const std::size_t end = at + option.size();
-            if (end == renderHelp.size() || !(std::isalnum(static_cast<unsigned char>(renderHelp[end])) || renderHelp[end] == '-'))
-                return true;
-        }
-        return false;
-    };
     std::string args = "render " + shellQuote(model.string()) + " --out " + shellQuote(png.string()) + " --size " +
                        std::to_string(size.x) + "x" + std::to_string(size.y) + " --gl " + (api == "es30" ? "es3" : api) +
-                       " --eye " + vec3(m.camera.eye) + " --target " + vec3(m.camera.target);
-    const auto optional = [&](const std::string& option, const std::string& value) {
-        if (has(option)) args += " " + option + " " + value;
-        else if (std::find(missing.begin(), missing.end(), option) == missing.end()) missing.push_back(option);
-    };
-    optional("--fovy", BenchJson::number(m.camera.fovyDegrees));
-    optional("--light-direction", vec3(m.light.direction));
-    optional("--light-color", vec3(m.light.color));
-    optional("--light-intensity", BenchJson::number(m.light.intensity));
-    if (!environment.empty()) {
-        optional("--environment", shellQuote(environment.string()));
-        optional("--environment-intensity", BenchJson::number(m.environmentIntensity));
-    }
-    if (job.time) optional("--time", BenchJson::number(*job.time));
+                       " --eye " + vec3(m.camera.eye) + " --target " + vec3(m.camera.target) +
+                       " --fovy " + BenchJson::number(m.camera.fovyDegrees) + " --light-direction " + vec3(m.light.direction) +
+                       " --light-color " + vec3(m.light.color) + " --light-intensity " + BenchJson::number(m.light.intensity);
+    if (!environment.empty())
+        args += " --environment " + shellQuote(environment.string()) + " --environment-intensity " +
+                BenchJson::number(m.environmentIntensity);
+    else args += " --environment-intensity 0";
+    if (job.time) args += " --time " + BenchJson::number(*job.time);
     return args;
 }
 
@@ -315,8 +285,6 @@ int run(const Options& o) {
     }
 
     const std::string self = fs::read_symlink("/proc/self/exe").string();
-    const std::string renderHelp = runCommand(shellQuote(self) + " render --help").output;
-    std::vector<std::string> missing;
     struct Score {
         std::vector<std::optional<double>> ssim;    // per API, the whole image
         std::vector<std::optional<double>> object;  // per API, where either renderer drew (and 5 pixels around)
@@ -338,7 +306,7 @@ int run(const Options& o) {
             std::cerr << "gltf-reference: arcomp " << api << " renders " << job.id << "\n";
             const Ran ran = runCommand(shellQuote(self) + " " +
                                        arcompRenderArgs(job, fs::absolute(models / (m.name + ".gltf")), environment, api,
-                                                        size, png, renderHelp, missing));
+                                                        size, png));
             if (ran.status != 0) {
                 score.ssim.push_back(std::nullopt);
                 score.object.push_back(std::nullopt);
@@ -396,9 +364,6 @@ int run(const Options& o) {
     j.field("threshold", o.threshold);
     j.beginArray("apis");
     for (const std::string& api : apis) j.value(api);
-    j.end();
-    j.beginArray("arcomp_options_missing");
-    for (const std::string& option : missing) j.value(option);
     j.end();
     double lowest = 1.0, lowestObject = 1.0;
     int passed = 0;
