@@ -1,3 +1,4 @@
+#include "graph/io/Base64.hpp"
 #include "graph/io/ModelLoader.hpp"
 
 #include "../support/TempDir.hpp"
@@ -10,20 +11,6 @@ using namespace arcomp;
 using arcomp::test::TempDir;
 
 namespace {
-
-std::string base64(const std::vector<unsigned char>& bytes) {
-    static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (std::size_t i = 0; i < bytes.size(); i += 3) {
-        const unsigned v = (bytes[i] << 16) | ((i + 1 < bytes.size() ? bytes[i + 1] : 0) << 8) |
-                           (i + 2 < bytes.size() ? bytes[i + 2] : 0);
-        out += table[(v >> 18) & 63];
-        out += table[(v >> 12) & 63];
-        out += i + 1 < bytes.size() ? table[(v >> 6) & 63] : '=';
-        out += i + 2 < bytes.size() ? table[v & 63] : '=';
-    }
-    return out;
-}
 
 // One triangle: 3 float positions (36 bytes) then 3 u16 indices (6 bytes).
 std::vector<unsigned char> triangleBytes(std::uint16_t lastIndex = 2) {
@@ -47,7 +34,7 @@ std::string triangleGltf(const std::string& bufferUri, const std::string& extra 
 }
 
 std::string dataUri(const std::vector<unsigned char>& bytes) {
-    return "data:application/octet-stream;base64," + base64(bytes);
+    return "data:application/octet-stream;base64," + arcomp::base64(bytes);
 }
 
 void expectRejected(const std::filesystem::path& file, const std::string& where, const std::string& reasonPart) {

@@ -9,26 +9,13 @@
 //   f.animations = R"([{"samplers": [...], "channels": [...]}])";
 //   dir.write("model.gltf", f.json());
 
+#include "graph/io/Base64.hpp"
 #include <cstdint>
 #include <cstring>
 #include <string>
 #include <vector>
 
 namespace arcomp::test {
-
-inline std::string base64(const std::vector<unsigned char>& bytes) {
-    static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (std::size_t i = 0; i < bytes.size(); i += 3) {
-        const unsigned v = (bytes[i] << 16) | ((i + 1 < bytes.size() ? bytes[i + 1] : 0) << 8) |
-                           (i + 2 < bytes.size() ? bytes[i + 2] : 0);
-        out += table[(v >> 18) & 63];
-        out += table[(v >> 12) & 63];
-        out += i + 1 < bytes.size() ? table[(v >> 6) & 63] : '=';
-        out += i + 2 < bytes.size() ? table[v & 63] : '=';
-    }
-    return out;
-}
 
 struct GltfFile {
     std::vector<unsigned char> bin;

@@ -17,6 +17,7 @@
 //   6 COLOR_0 VEC4 normalized unsigned shorts      7 TANGENT: -x at twice unit length, w -0.5
 //   8 COLOR_0 VEC4 unsigned bytes, not normalized   9 indices (two triangles, counter-clockwise)
 
+#include "graph/io/Base64.hpp"
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -27,20 +28,6 @@ namespace arcomp::test {
 // A 2x2 RGBA PNG: red, green / blue, half-transparent white.
 inline const char* kTinyPng =
     "iVBORw0KGgoAAAANSUhEUgAAAAIAAAACCAYAAABytg0kAAAAE0lEQVR4nGP4z8DwHwyBNAg0AABJSQl4KKDbdwAAAABJRU5ErkJggg==";
-
-inline std::string base64(const std::vector<unsigned char>& bytes) {
-    static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (std::size_t i = 0; i < bytes.size(); i += 3) {
-        const unsigned v = (bytes[i] << 16) | ((i + 1 < bytes.size() ? bytes[i + 1] : 0) << 8) |
-                           (i + 2 < bytes.size() ? bytes[i + 2] : 0);
-        out += table[(v >> 18) & 63];
-        out += table[(v >> 12) & 63];
-        out += i + 1 < bytes.size() ? table[(v >> 6) & 63] : '=';
-        out += i + 2 < bytes.size() ? table[v & 63] : '=';
-    }
-    return out;
-}
 
 struct QuadGltf {
     std::string primitives =

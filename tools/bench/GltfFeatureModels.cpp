@@ -1,5 +1,6 @@
 #include "tools/bench/GltfFeatureModels.hpp"
 
+#include "graph/io/Base64.hpp"
 #include "tools/bench/BenchJson.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -21,21 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 constexpr float kPi = std::numbers::pi_v<float>;
-
-std::string base64(const std::uint8_t* data, std::size_t size) {
-    static constexpr char kDigits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    out.reserve((size + 2) / 3 * 4);
-    for (std::size_t i = 0; i < size; i += 3) {
-        const std::uint32_t a = data[i], b = i + 1 < size ? data[i + 1] : 0, c = i + 2 < size ? data[i + 2] : 0;
-        const std::uint32_t triple = a << 16 | b << 8 | c;
-        out += kDigits[triple >> 18 & 63];
-        out += kDigits[triple >> 12 & 63];
-        out += i + 1 < size ? kDigits[triple >> 6 & 63] : '=';
-        out += i + 2 < size ? kDigits[triple & 63] : '=';
-    }
-    return out;
-}
 
 std::string num(float x) { return BenchJson::number(x); }
 std::string vec(std::initializer_list<float> xs) {
