@@ -10,6 +10,7 @@
 #include "runtime/StationConfig.hpp"
 #include "video/TestPatternSource.hpp"
 
+#include "../support/ConfigIssues.hpp"
 #include "../support/GltfFile.hpp"
 #include "../support/TempDir.hpp"
 
@@ -18,6 +19,9 @@
 using namespace arcomp;
 using arcomp::test::GltfFile;
 using arcomp::test::TempDir;
+using arcomp::test::configIssues;
+using arcomp::test::describe;
+using arcomp::test::hasIssue;
 
 namespace {
 
@@ -36,27 +40,6 @@ std::string slidingTriangle() {
     f.animations = "[" + channel(slide, "translation").insert(1, R"("name": "slide", )") + ", " +
                    channel(grow, "scale").insert(1, R"("name": "grow", )") + "]";
     return f.json();
-}
-
-std::vector<ConfigIssue> issuesOf(const std::filesystem::path& file) {
-    try {
-        loadStationConfig(file);
-    } catch (const ConfigError& e) {
-        return e.issues;
-    }
-    return {};
-}
-
-bool hasIssue(const std::vector<ConfigIssue>& issues, int line, const std::string& part) {
-    for (const ConfigIssue& i : issues)
-        if (i.line == line && i.message.find(part) != std::string::npos) return true;
-    return false;
-}
-
-std::string describe(const std::vector<ConfigIssue>& issues) {
-    std::string s;
-    for (const ConfigIssue& i : issues) s += i.format() + "\n";
-    return s;
 }
 
 std::string objectYaml(const std::string& keys) {
@@ -84,7 +67,7 @@ TEST(ObjectAnimationConfig, readsAnimationLoopAndSpeed) {
 TEST(ObjectAnimationConfig, reportsMisplacedAndOutOfRangeKeys) {
     TempDir dir;
     dir.write("slide.gltf", slidingTriangle());
-    const auto issues = issuesOf(dir.write("bad.yaml", R"(scene:
+    const auto issues = configIssues(dir.write("bad.yaml", R"(scene:
   objects:
     - shape: box
       animation: slide

@@ -3,35 +3,18 @@
 #include "runtime/ConfigError.hpp"
 #include "runtime/StationConfig.hpp"
 
+#include "../support/ConfigIssues.hpp"
 #include "../support/TempDir.hpp"
 
 #include <gtest/gtest.h>
 
 using namespace arcomp;
 using arcomp::test::TempDir;
+using arcomp::test::configIssues;
+using arcomp::test::describe;
+using arcomp::test::hasIssue;
 
 namespace {
-
-std::vector<ConfigIssue> issuesOf(const std::filesystem::path& file) {
-    try {
-        loadStationConfig(file);
-    } catch (const ConfigError& e) {
-        return e.issues;
-    }
-    return {};
-}
-
-bool hasIssue(const std::vector<ConfigIssue>& issues, int line, int column, const std::string& part) {
-    for (const ConfigIssue& i : issues)
-        if (i.line == line && i.column == column && i.message.find(part) != std::string::npos) return true;
-    return false;
-}
-
-std::string describe(const std::vector<ConfigIssue>& issues) {
-    std::string s;
-    for (const ConfigIssue& i : issues) s += i.format() + "\n";
-    return s;
-}
 
 } // namespace
 
@@ -79,18 +62,18 @@ camera:
 render:
   shading: shiny
 )");
-    const auto issues = issuesOf(file);
-    EXPECT_TRUE(hasIssue(issues, 3, 14, "does not exist")) << describe(issues);          // missing file
-    EXPECT_TRUE(hasIssue(issues, 4, 7, "unknown key")) << describe(issues);              // unknown key
-    EXPECT_TRUE(hasIssue(issues, 6, 13, "expected a list of 3 numbers")) << describe(issues);  // wrong type
-    EXPECT_TRUE(hasIssue(issues, 10, 13, "out of range")) << describe(issues);           // bad number
-    EXPECT_TRUE(hasIssue(issues, 12, 12, "is not one of unlit, flat, gouraud, phong")) << describe(issues);
+    const auto issues = configIssues(file);
+    EXPECT_TRUE(hasIssue(issues, 3, "does not exist", 14)) << describe(issues);          // missing file
+    EXPECT_TRUE(hasIssue(issues, 4, "unknown key", 7)) << describe(issues);              // unknown key
+    EXPECT_TRUE(hasIssue(issues, 6, "expected a list of 3 numbers", 13)) << describe(issues);  // wrong type
+    EXPECT_TRUE(hasIssue(issues, 10, "out of range", 13)) << describe(issues);           // bad number
+    EXPECT_TRUE(hasIssue(issues, 12, "is not one of unlit, flat, gouraud, phong", 12)) << describe(issues);
     EXPECT_EQ(issues.size(), 5u) << describe(issues);
 }
 
 TEST(StationConfig, reportsAMissingRequiredKeyAtItsParent) {
     TempDir dir;
-    const auto issues = issuesOf(dir.write("nokeys.yaml", "render:\n  shading: flat\n"));
+    const auto issues = configIssues(dir.write("nokeys.yaml", "render:\n  shading: flat\n"));
     ASSERT_EQ(issues.size(), 1u) << describe(issues);
     EXPECT_NE(issues[0].message.find("scene: required key is missing"), std::string::npos);
     EXPECT_EQ(issues[0].line, 1);
@@ -98,14 +81,14 @@ TEST(StationConfig, reportsAMissingRequiredKeyAtItsParent) {
 
 TEST(StationConfig, reportsSyntaxErrorsAndUnreadableFiles) {
     TempDir dir;
-    const auto syntax = issuesOf(dir.write("syntax.yaml", "scene:\n  objects: [\n"));
+    const auto syntax = configIssues(dir.write("syntax.yaml", "scene:\n  objects: [\n"));
     ASSERT_EQ(syntax.size(), 1u);
     EXPECT_NE(syntax[0].message.find("YAML syntax"), std::string::npos);
     EXPECT_GT(syntax[0].line, 0);
-    const auto missing = issuesOf(dir.path() / "nope.yaml");
+    const auto missing = configIssues(dir.path() / "nope.yaml");
     ASSERT_EQ(missing.size(), 1u);
     EXPECT_NE(missing[0].format().find("nope.yaml: cannot be read"), std::string::npos);
-    const auto notMap = issuesOf(dir.write("list.yaml", "- 1\n- 2\n"));
+    const auto notMap = configIssues(dir.write("list.yaml", "- 1\n- 2\n"));
     ASSERT_EQ(notMap.size(), 1u);
 }
 
@@ -133,7 +116,7 @@ gaze: {source: track, track: gaze.csv}
 
 TEST(StationConfig, reportsInconsistentLodAndMissingGazeTrack) {
     TempDir dir;
-    const auto issues = issuesOf(dir.write("bad.yaml", R"(scene:
+    const auto issues = configIssues(dir.write("bad.yaml", R"(scene:
   objects:
     - shape: box
       lod: {ratios: [1, 0.5], thresholds: [10, 20]}
@@ -141,8 +124,8 @@ TEST(StationConfig, reportsInconsistentLodAndMissingGazeTrack) {
       lod: {policy: distance, ratios: [1, 2]}
 gaze: {source: track, track: nowhere.csv}
 )"));
-    EXPECT_TRUE(hasIssue(issues, 4, 12, "one threshold fewer")) << describe(issues);
-    EXPECT_TRUE(hasIssue(issues, 6, 43, "ratios: expected numbers from 0.0001 to 1")) << describe(issues);
-    EXPECT_TRUE(hasIssue(issues, 6, 12, "'thresholds' is required")) << describe(issues);
-    EXPECT_TRUE(hasIssue(issues, 7, 30, "nowhere.csv' does not exist")) << describe(issues);
+    EXPECT_TRUE(hasIssue(issues, 4, "one threshold fewer", 12)) << describe(issues);
+    EXPECT_TRUE(hasIssue(issues, 6, "ratios: expected numbers from 0.0001 to 1", 43)) << describe(issues);
+    EXPECT_TRUE(hasIssue(issues, 6, "'thresholds' is required", 12)) << describe(issues);
+    EXPECT_TRUE(hasIssue(issues, 7, "nowhere.csv' does not exist", 30)) << describe(issues);
 }
