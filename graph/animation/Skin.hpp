@@ -18,7 +18,7 @@ inline constexpr std::uint32_t kNoJoint = ~std::uint32_t{0};
 // The most joints one skinned draw can have: the renderer keeps the joint
 // matrices in a uniform array of mat3x4 (three vectors each), and 64 of them
 // take 192 of the 256 vertex uniform vectors OpenGL ES 3.0 guarantees,
-// leaving the rest of the vertex shader's uniforms (about 40) room. A skin
+// leaving room for the rest of the vertex stage's uniforms (30 vectors). A skin
 // with more joints is drawn in its bind pose, with a warning at load.
 inline constexpr std::size_t kMaxJointsPerDraw = 64;
 

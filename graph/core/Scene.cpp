@@ -85,8 +85,11 @@ std::span<const glm::mat4> Scene::jointMatrices(std::uint32_t skin) const {
     return std::span<const glm::mat4>(jointMatrix_).subspan(skinFirst_[skin], skinFirst_[skin + 1] - skinFirst_[skin]);
 }
 
-// glTF 2.0, 3.7.3.1 (joint hierarchy): jointMatrix(j) =
-// inverse(globalTransform(mesh node)) * globalTransform(joint j) * inverseBindMatrix(j).
+// glTF 2.0, 3.7.3 (skins): the joints' world transforms place a skinned mesh
+// and the mesh node's own is ignored. As the Khronos glTF tutorial on skins
+// writes it: jointMatrix(j) = inverse(globalTransform(mesh node)) *
+// globalTransform(joint j) * inverseBindMatrix(j); the renderer's model
+// matrix, the mesh node's world, then cancels the first factor.
 void Scene::updateJointMatrices() {
     for (std::size_t s = 0; s < skinMesh_.size(); ++s) {
         const glm::mat4 toMesh = glm::inverse(world_[skinMesh_[s]]);

@@ -92,10 +92,9 @@ public:
 
     std::size_t skinCount() const { return skinMesh_.size(); }
     std::span<const NodeId> skinJoints(std::uint32_t skin) const;
-    // After update(): per joint, inverse(world(mesh)) * world(joint) *
-    // inverseBind, which takes a vertex of the mesh, in the mesh's space, to
-    // where joint j puts it, in the mesh's space again; the renderer then
-    // applies the mesh node's world matrix as for any mesh.
+    // After update(): per joint, the matrix (Scene.cpp) that takes a vertex
+    // in the mesh node's space to where joint j puts it, in the same space;
+    // the renderer then applies the mesh node's world matrix as for any mesh.
     std::span<const glm::mat4> jointMatrices(std::uint32_t skin) const;
 
     // Bounds of everything under the root; empty when nothing is.
