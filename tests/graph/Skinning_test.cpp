@@ -1,8 +1,10 @@
 // glTF skinning on the CPU side: JOINTS_0 and WEIGHTS_0 read and checked
 // with their JSON pointers, the scene's joint matrices for a two-joint chain
-// and a vertex posed by them, against numbers worked by hand.
+// and a vertex posed by them, against numbers worked by hand, and the
+// grouping box of a posed object.
 
 #include "graph/animation/Skinning.hpp"
+#include "graph/grouping/GroupingNodes.hpp"
 #include "graph/io/ModelLoader.hpp"
 
 #include "../support/GltfFile.hpp"
@@ -229,4 +231,32 @@ TEST(SkinJoints, aPosedVertexIsTheWeightedSumOfItsJointsAndIgnoresTheMeshNodesPl
     const glm::vec3 moved = glm::vec3(c.scene.world(c.mesh) * glm::vec4(skinPositions(g, c.scene.jointMatrices(c.skin))[0], 1.0f));
     EXPECT_NEAR(moved.x, 0.0f, 1e-5f);
     EXPECT_NEAR(moved.y, 1.0f, 1e-5f);
+}
+
+// The grouping tree's box of a skinned object is where its joints put it:
+// here the one joint stands 5 units along x from the mesh node, so the bind
+// pose's box (around the origin) would miss the drawn square entirely.
+TEST(SkinJoints, aSkinnedObjectsGroupingBoxHoldsItsPosedMesh) {
+    Scene scene;
+    Geometry g;
+    g.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+    g.indices = {0, 1, 2, 0, 2, 3};
+    g.joints.assign(4, {0, 0, 0, 0});
+    g.weights.assign(4, {1, 0, 0, 0});
+    g.finalize();
+    const NodeId place = scene.addTransform(scene.root(), glm::mat4(1.0f));
+    const NodeId joint[1] = {scene.addTransform(scene.root(), glm::translate(glm::mat4(1.0f), {5, 0, 0}))};
+    const glm::mat4 bind[1] = {glm::mat4(1.0f)};
+    const std::uint32_t skin = scene.addSkin(place, joint, bind);
+    const NodeId mesh = scene.addMesh(place, {scene.addGeometry(std::move(g)), scene.addMaterial({}), skin});
+    const NodeId meshes[1] = {mesh};
+    fitPosedBounds(scene, meshes, {});
+    const Box box = groupingItemOf(scene, place).box;
+    for (const glm::vec3& p : skinPositions(scene.geometry(scene.meshPart(mesh).geometry), scene.jointMatrices(skin))) {
+        EXPECT_GE(p.x, box.min.x);
+        EXPECT_LE(p.x, box.max.x);
+        EXPECT_GE(p.y, box.min.y);
+        EXPECT_LE(p.y, box.max.y);
+    }
+    EXPECT_GT(box.min.x, 3.0f) << "the box is around the posed square, not the bind pose";
 }
