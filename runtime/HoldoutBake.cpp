@@ -34,6 +34,12 @@ HoldoutBake bakeHoldouts(World& world, const View& view, const CompositorConfig&
             const glm::vec3 offset((i & 1) ? r : -r, (i & 2) ? r : -r, (i & 4) ? r : -r);
             corners.push_back(glm::vec3(toLocal * glm::vec4(view.eye + offset, 1.0f)));
         }
+        if (scene.meshPart(n).skin != kNoSkin) {
+            // Posed on the GPU like its CG: nothing to bake or cache.
+            world.holdouts.addPosed(scene, n, material);
+            ++bake.baked;
+            continue;
+        }
         const Geometry& g = scene.geometry(scene.meshPart(n).geometry);
         std::vector<ViewRegion> regions;
         if (!full && !movesOverTime(world, n)) regions.push_back(ViewRegion::fromVertices(corners));

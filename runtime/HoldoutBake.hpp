@@ -24,8 +24,9 @@ struct HoldoutBake : BakeTally {
 
 // Adds the holdouts to world.holdouts. A mover leaves the region it was
 // baked for, so its holdout is its full mesh; so is every holdout with
-// `holdout: full`. Cached in `cacheFolder` (empty: none); `configFile`
-// names the cache files.
+// `holdout: full`. A skinned mesh's holdout is its own mesh with its skin
+// (HoldoutMeshes::addPosed), posed as the CG is. Cached in `cacheFolder`
+// (empty: none); `configFile` names the cache files.
 HoldoutBake bakeHoldouts(World& world, const View& view, const CompositorConfig& config,
                          const std::filesystem::path& cacheFolder, const std::filesystem::path& configFile);
 

@@ -3,6 +3,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <span>
 
 namespace arcomp {
 
@@ -31,6 +32,9 @@ const char* const kMeshShader = R"(
 //              the indirect light.
 // Emission is added at every level. Lighting is in linear light; the output
 // is premultiplied and sRGB-encoded (Renderer.hpp).
+// SKINNED (with MAX_JOINTS) compiles the variant for skinned meshes: the
+// vertex is posed by its joints before anything else, so unskinned draws
+// run the shader without it.
 #ifdef VERTEX
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
@@ -38,6 +42,15 @@ layout(location = 2) in vec2 aTexcoord0;
 layout(location = 3) in vec2 aTexcoord1;
 layout(location = 4) in vec4 aTangent;
 layout(location = 5) in vec4 aColor;
+#ifdef SKINNED
+layout(location = 6) in vec4 aJoints;   // indices into uJointMatrices, as floats (exact below 2^24)
+layout(location = 7) in vec4 aWeights;  // summing to 1
+// Joint matrices (Scene::jointMatrices) are affine: only their top three
+// rows are kept, as the columns of a mat3x4, so that a joint takes three
+// uniform vectors rather than four (Skin.hpp, kMaxJointsPerDraw).
+// vec4(p, 1.0) * uJointMatrices[j] is (jointMatrix * vec4(p, 1.0)).xyz.
+uniform mat3x4 uJointMatrices[MAX_JOINTS];
+#endif
 #define VARYING out
 #else
 #define VARYING in
@@ -132,10 +145,21 @@ vec3 diffuseIrradiance(vec3 n) {
 
 #ifdef VERTEX
 void main() {
-    vec4 world = uModel * vec4(aPosition, 1.0);
+    vec3 position = aPosition, normal = aNormal, tangent = aTangent.xyz;
+#ifdef SKINNED
+    // glTF 2.0, 3.7.3.3: the skin matrix is sum_i weight_i * jointMatrix[joint_i].
+    // Normals and tangents go through it too, as three.js does (exact for
+    // rigid joints; the normal matrix below handles the node's scale).
+    mat3x4 skin = aWeights.x * uJointMatrices[int(aJoints.x)] + aWeights.y * uJointMatrices[int(aJoints.y)] +
+                  aWeights.z * uJointMatrices[int(aJoints.z)] + aWeights.w * uJointMatrices[int(aJoints.w)];
+    position = vec4(position, 1.0) * skin;
+    normal = vec4(normal, 0.0) * skin;
+    tangent = vec4(tangent, 0.0) * skin;
+#endif
+    vec4 world = uModel * vec4(position, 1.0);
     vWorld = world.xyz;
-    vNormal = normalize(uNormalMatrix * aNormal);
-    vTangent = vec4(mat3(uModel) * aTangent.xyz, aTangent.w);
+    vNormal = normalize(uNormalMatrix * normal);
+    vTangent = vec4(mat3(uModel) * tangent, aTangent.w);
     vTexcoord0 = aTexcoord0;
     vTexcoord1 = aTexcoord1;
     vColor = aColor;
@@ -302,8 +326,9 @@ const ImageBasedLight& neutralLight() {
 
 // Lighting's uniforms are read only where a level lights, and the compiler
 // drops them elsewhere: those may be -1. The rest every level reads.
-Renderer::MeshProgram::MeshProgram(Shading shading)
-    : program(kMeshShader, "#define SHADING " + std::to_string(static_cast<int>(shading)) + "\n"),
+Renderer::MeshProgram::MeshProgram(Shading shading, bool skinned)
+    : program(kMeshShader, "#define SHADING " + std::to_string(static_cast<int>(shading)) + "\n" +
+                               (skinned ? "#define SKINNED\n#define MAX_JOINTS " + std::to_string(kMaxJointsPerDraw) + "\n" : "")),
       model(program.requiredLocation("uModel")),
       viewProjection(program.requiredLocation("uViewProjection")),
       normalMatrix(program.location("uNormalMatrix")),
@@ -327,7 +352,8 @@ Renderer::MeshProgram::MeshProgram(Shading shading)
       doubleSided(program.location("uDoubleSided")),
       hasTangents(program.location("uHasTangents")),
       texCoord(program.requiredLocation("uTexCoord")),
-      uvTransform(program.requiredLocation("uUvTransform")) {
+      uvTransform(program.requiredLocation("uUvTransform")),
+      jointMatrices(skinned ? program.requiredLocation("uJointMatrices") : -1) {
     const char* const samplers[kSlotCount] = {"uBaseColorTexture", "uMetallicRoughnessTexture", "uNormalTexture",
                                               "uOcclusionTexture", "uEmissiveTexture"};
     // Each sampler uniform keeps its unit for the program's life.
@@ -338,7 +364,7 @@ Renderer::MeshProgram::MeshProgram(Shading shading)
 }
 
 Renderer::Renderer() {
-    for (int s = 0; s < kShadingCount; ++s) programs_[static_cast<std::size_t>(s)].emplace(static_cast<Shading>(s));
+    for (int s = 0; s < kShadingCount; ++s) programs_[static_cast<std::size_t>(s)].emplace(static_cast<Shading>(s), false);
     const SplitSumTable& table = sharedSplitSum();
     splitSum_ = GlTexture::generate();
     glBindTexture(GL_TEXTURE_2D, splitSum_.get());
@@ -370,6 +396,13 @@ void Renderer::setEnvironment(const ImageBasedLight& light) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
+const Renderer::MeshProgram& Renderer::program(Shading shading, bool skinned) {
+    auto& slot = (skinned ? skinnedPrograms_ : programs_)[static_cast<std::size_t>(shading)];
+    // A skinned variant is compiled on its first draw: a scene without skins never pays for it.
+    if (!slot) slot.emplace(shading, skinned);
+    return *slot;
+}
+
 void Renderer::forget() {
     geometries_.clear();
     textures_.clear();
@@ -387,8 +420,10 @@ const Renderer::GpuGeometry& Renderer::geometry(const Scene& scene, std::uint32_
     const bool uv0 = g.texcoords.size() == n, uv1 = g.texcoords1.size() == n;
     gpu.hasTangents = g.tangents.size() == n && n > 0;
     gpu.hasColors = g.colors.size() == n && n > 0;
-    const std::array<std::pair<bool, int>, 6> attributes{{{true, 3}, {true, 3}, {uv0, 2}, {uv1, 2},
-                                                          {gpu.hasTangents, 4}, {gpu.hasColors, 4}}};
+    gpu.hasSkinInfluences = g.hasSkinInfluences();
+    const std::array<std::pair<bool, int>, 8> attributes{{{true, 3}, {true, 3}, {uv0, 2}, {uv1, 2},
+                                                          {gpu.hasTangents, 4}, {gpu.hasColors, 4},
+                                                          {gpu.hasSkinInfluences, 4}, {gpu.hasSkinInfluences, 4}}};
     int floatsPerVertex = 0;
     for (const auto& [present, size] : attributes) floatsPerVertex += present ? size : 0;
     std::vector<float> vertices;
@@ -400,6 +435,11 @@ const Renderer::GpuGeometry& Renderer::geometry(const Scene& scene, std::uint32_
         if (uv1) vertices.insert(vertices.end(), {g.texcoords1[i].x, g.texcoords1[i].y});
         if (gpu.hasTangents) vertices.insert(vertices.end(), {g.tangents[i].x, g.tangents[i].y, g.tangents[i].z, g.tangents[i].w});
         if (gpu.hasColors) vertices.insert(vertices.end(), {g.colors[i].r, g.colors[i].g, g.colors[i].b, g.colors[i].a});
+        if (gpu.hasSkinInfluences) {
+            const glm::vec4 joints(g.joints[i]);
+            vertices.insert(vertices.end(), {joints.x, joints.y, joints.z, joints.w, g.weights[i].x, g.weights[i].y,
+                                             g.weights[i].z, g.weights[i].w});
+        }
     }
     gpu.vao = GlVertexArray::generate();
     glBindVertexArray(gpu.vao.get());
@@ -451,7 +491,9 @@ GLuint Renderer::texture(const Scene& scene, const TextureRef& ref, bool srgb) {
 void Renderer::drawItem(const Scene& scene, const DrawItem& item, const View& view, const RenderSettings& settings) {
     const Material& m = scene.material(item.part.material);
     const Shading shading = m.unlit || settings.coverageOnly ? Shading::Unlit : item.shading;
-    const MeshProgram& p = *programs_[static_cast<std::size_t>(shading)];
+    const GpuGeometry& g = geometry(scene, item.part.geometry);
+    const bool skinned = item.part.skin != kNoSkin && g.hasSkinInfluences && item.part.skin < scene.skinCount();
+    const MeshProgram& p = program(shading, skinned);
     p.program.use();
     const glm::mat4& model = item.model ? *item.model : scene.world(item.node);
     const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(model)));
@@ -506,9 +548,21 @@ void Renderer::drawItem(const Scene& scene, const DrawItem& item, const View& vi
     glBindTexture(GL_TEXTURE_2D, splitSum_.get());
     glActiveTexture(GL_TEXTURE0);
 
+    if (skinned) {
+        // The top three rows of each joint matrix, as the shader's mat3x4
+        // columns: the first 12 floats of its transpose.
+        const std::span<const glm::mat4> joints = scene.jointMatrices(item.part.skin);
+        const std::size_t count = std::min(joints.size(), kMaxJointsPerDraw);
+        jointRows_.resize(count * 12);
+        for (std::size_t j = 0; j < count; ++j) {
+            const glm::mat4 rows = glm::transpose(joints[j]);
+            std::copy_n(glm::value_ptr(rows), 12, jointRows_.data() + j * 12);
+        }
+        glUniformMatrix3x4fv(p.jointMatrices, static_cast<GLsizei>(count), GL_FALSE, jointRows_.data());
+    }
+
     if (m.doubleSided) glDisable(GL_CULL_FACE);
     else glEnable(GL_CULL_FACE);
-    const GpuGeometry& g = geometry(scene, item.part.geometry);
     glUniform1i(p.hasTangents, g.hasTangents ? 1 : 0);
     // What an absent attribute reads: generic values are context state, not
     // the vertex array's, so they are set for every draw.

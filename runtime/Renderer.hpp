@@ -5,7 +5,8 @@
 // Renderer.cpp). Geometry and textures go to the GPU the first time they are
 // drawn and stay there. Light: one directional light plus image-based light
 // from an environment (built-in neutral studio unless setEnvironment says
-// otherwise).
+// otherwise). A mesh part with a skin (MeshPart::skin) is posed on the GPU by
+// the scene's joint matrices, up to kMaxJointsPerDraw joints.
 //
 //   Renderer renderer;                       // a context must be current
 //   renderer.setEnvironment(prefilterEnvironment(loadEnvironment("hall.hdr")));  // optional
@@ -18,6 +19,7 @@
 // with "over" directly. There is no tone mapping: what exceeds 1 clips, as
 // in three.js with NoToneMapping and sRGB output.
 
+#include "graph/animation/Skin.hpp"
 #include "graph/core/DrawList.hpp"
 #include "graph/core/View.hpp"
 #include "runtime/GlHandle.hpp"
@@ -67,25 +69,28 @@ private:
         GlVertexArray vao;
         GlBuffer vertices, indices;
         GLsizei indexCount = 0;
-        bool hasTangents = false, hasColors = false;
+        bool hasTangents = false, hasColors = false, hasSkinInfluences = false;
     };
     // One shading level's program and its uniforms' locations, looked up
     // once: a draw item sets a dozen uniforms.
     struct MeshProgram {
-        explicit MeshProgram(Shading shading);
+        MeshProgram(Shading shading, bool skinned);
         ShaderProgram program;
         GLint model, viewProjection, normalMatrix, eye, lightDirection, lightRadiance, irradiance,
             environmentIntensity, specularLevels, specularEnvironment, splitSum, baseColor, metallic, roughness, emissive,
-            normalScale, occlusionStrength, alphaMode, alphaCutoff, fade, doubleSided, hasTangents, texCoord, uvTransform;
+            normalScale, occlusionStrength, alphaMode, alphaCutoff, fade, doubleSided, hasTangents, texCoord, uvTransform,
+            jointMatrices;  // -1 unless skinned
     };
     // One GL texture per image, colour space and sampler: an image can be
     // both a colour (sRGB-decoded) and data, and sampled in different ways.
     using TextureKey = std::tuple<int, bool, TextureFilter, TextureFilter, TextureWrap, TextureWrap>;
     const GpuGeometry& geometry(const Scene& scene, std::uint32_t id);
+    const MeshProgram& program(Shading shading, bool skinned);
     GLuint texture(const Scene& scene, const TextureRef& ref, bool srgb);
     void drawItem(const Scene& scene, const DrawItem& item, const View& view, const RenderSettings& settings);
 
-    std::array<std::optional<MeshProgram>, kShadingCount> programs_;
+    std::array<std::optional<MeshProgram>, kShadingCount> programs_, skinnedPrograms_;
+    std::vector<float> jointRows_;  // scratch: a skinned draw's joint matrices as the shader takes them
     const Scene* scene_ = nullptr;
     std::vector<GpuGeometry> geometries_;
     std::map<TextureKey, GlTexture> textures_;

@@ -1,8 +1,8 @@
 #pragma once
-// A glTF skin as data: the joints that would deform a mesh and their
-// inverse bind matrices. arcomp does not skin yet; a skinned mesh is drawn
-// in its bind pose, and the skins are kept so `inspect` can report them and
-// a later GPU skinning step has what it needs.
+// A glTF skin as data: the joints that deform a mesh and their inverse bind
+// matrices, as the parser reads them. Placing a model turns each skinned
+// node's skin into a scene skin (Scene::addSkin), which the renderer poses
+// on the GPU (graph/animation/Skinning.hpp has the same on the CPU).
 
 #include <glm/glm.hpp>
 
@@ -14,6 +14,13 @@ namespace arcomp {
 
 // A joint or skeleton root that is not in the drawn scene.
 inline constexpr std::uint32_t kNoJoint = ~std::uint32_t{0};
+
+// The most joints one skinned draw can have: the renderer keeps the joint
+// matrices in a uniform array of mat3x4 (three vectors each), and 64 of them
+// take 192 of the 256 vertex uniform vectors OpenGL ES 3.0 guarantees,
+// leaving room for the rest of the vertex stage's uniforms (30 vectors). A skin
+// with more joints is drawn in its bind pose, with a warning at load.
+inline constexpr std::size_t kMaxJointsPerDraw = 64;
 
 struct Skin {
     std::string name;

@@ -1,13 +1,16 @@
 #pragma once
 // Triangle geometry as the renderer and the mesh tools see it: flat arrays,
 // one index list of triangles. Normals are always present after
-// finalize(); texture coordinates, tangents and colours are optional (empty).
+// finalize(); texture coordinates, tangents, colours and skin influences are
+// optional (empty).
 //
 //   Geometry g;
 //   g.positions = {...}; g.indices = {...};
 //   g.finalize();   // computes missing normals and the bounds
 
 #include "graph/core/Bounds.hpp"
+
+#include <glm/gtc/type_precision.hpp>
 
 #include <cstdint>
 #include <vector>
@@ -21,6 +24,11 @@ struct Geometry {
     std::vector<glm::vec2> texcoords1;  // TEXCOORD_1
     std::vector<glm::vec4> tangents;    // xyz tangent, w the bitangent's sign (glTF's TANGENT)
     std::vector<glm::vec4> colors;
+    // Skin influences, glTF's JOINTS_0 and WEIGHTS_0: four joints (indices
+    // into the skin's joint list) and their weights, which sum to 1; a joint
+    // whose weight is 0 is 0.
+    std::vector<glm::u16vec4> joints;
+    std::vector<glm::vec4> weights;
     std::vector<std::uint32_t> indices;
 
     Box box;
@@ -30,6 +38,7 @@ struct Geometry {
     bool tangentsGenerated = false;
 
     std::size_t triangleCount() const { return indices.size() / 3; }
+    bool hasSkinInfluences() const { return !positions.empty() && joints.size() == positions.size() && weights.size() == positions.size(); }
     // Computes area-weighted vertex normals when none were given and the
     // bounds; call once after filling the arrays.
     void finalize();

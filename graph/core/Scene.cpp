@@ -65,6 +65,39 @@ std::uint32_t Scene::addImage(Image i) {
     return static_cast<std::uint32_t>(images_.size() - 1);
 }
 
+std::uint32_t Scene::addSkin(NodeId mesh, std::span<const NodeId> joints, std::span<const glm::mat4> inverseBinds) {
+    ARCOMP_CHECK(mesh < kind_.size() && joints.size() == inverseBinds.size(), "a skin's mesh node exists and each joint has an inverse bind matrix");
+    for (const NodeId j : joints) ARCOMP_CHECK(j == kNoNode || j < kind_.size(), "a skin's joints are in the scene");
+    skinMesh_.push_back(mesh);
+    jointNode_.insert(jointNode_.end(), joints.begin(), joints.end());
+    inverseBind_.insert(inverseBind_.end(), inverseBinds.begin(), inverseBinds.end());
+    jointMatrix_.resize(jointNode_.size(), glm::mat4(1.0f));
+    skinFirst_.push_back(static_cast<std::uint32_t>(jointNode_.size()));
+    anyLocalDirty_ = true;  // the next update() works out its joint matrices
+    return static_cast<std::uint32_t>(skinMesh_.size() - 1);
+}
+
+std::span<const NodeId> Scene::skinJoints(std::uint32_t skin) const {
+    return std::span<const NodeId>(jointNode_).subspan(skinFirst_[skin], skinFirst_[skin + 1] - skinFirst_[skin]);
+}
+
+std::span<const glm::mat4> Scene::jointMatrices(std::uint32_t skin) const {
+    return std::span<const glm::mat4>(jointMatrix_).subspan(skinFirst_[skin], skinFirst_[skin + 1] - skinFirst_[skin]);
+}
+
+// glTF 2.0, 3.7.3 (skins): the joints' world transforms place a skinned mesh
+// and the mesh node's own is ignored. As the Khronos glTF tutorial on skins
+// writes it: jointMatrix(j) = inverse(globalTransform(mesh node)) *
+// globalTransform(joint j) * inverseBindMatrix(j); the renderer's model
+// matrix, the mesh node's world, then cancels the first factor.
+void Scene::updateJointMatrices() {
+    for (std::size_t s = 0; s < skinMesh_.size(); ++s) {
+        const glm::mat4 toMesh = glm::inverse(world_[skinMesh_[s]]);
+        for (std::uint32_t j = skinFirst_[s]; j < skinFirst_[s + 1]; ++j)
+            jointMatrix_[j] = jointNode_[j] == kNoNode ? glm::mat4(1.0f) : toMesh * world_[jointNode_[j]] * inverseBind_[j];
+    }
+}
+
 void Scene::setLocalBound(NodeId node, const Sphere& bound) {
     localBound_[node] = bound;
     localDirty_[node] = 1;
@@ -134,6 +167,7 @@ void Scene::update() {
         worldBound_[n] = s;
         if (parent_[n] != kNoNode) changed[parent_[n]] = 1;
     }
+    updateJointMatrices();
     anyLocalDirty_ = false;
 }
 

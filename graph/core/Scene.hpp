@@ -26,12 +26,17 @@ namespace arcomp {
 using NodeId = std::uint32_t;
 inline constexpr NodeId kNoNode = ~NodeId{0};
 
+// No skin: a mesh part drawn rigidly with its node's world matrix.
+inline constexpr std::uint32_t kNoSkin = ~std::uint32_t{0};
+
 enum class NodeKind : std::uint8_t { Group, Transform, Mesh, Lod, Grouping, SilhouetteRegion, PointCloud };
 
-// A primitive to draw: one geometry with one material.
+// A primitive to draw: one geometry with one material, and the scene skin
+// that poses it (addSkin) when the geometry has joints and weights.
 struct MeshPart {
     std::uint32_t geometry;
     std::uint32_t material;
+    std::uint32_t skin = kNoSkin;
 };
 
 class Scene {
@@ -48,6 +53,12 @@ public:
     std::uint32_t addGeometry(Geometry g);
     std::uint32_t addMaterial(Material m);
     std::uint32_t addImage(Image i);
+    // A skin placed in the scene (glTF 2.0, 3.7.3 Skins): `joints` are the
+    // nodes whose world matrices pose the vertices, one inverse bind matrix
+    // each (kNoNode: a joint outside the scene, which leaves its vertices
+    // in the bind pose); `mesh` is the node that holds the skinned mesh,
+    // whose own transform the joints replace. A MeshPart names the result.
+    std::uint32_t addSkin(NodeId mesh, std::span<const NodeId> joints, std::span<const glm::mat4> inverseBinds);
 
     void setLocal(NodeId node, const glm::mat4& local);
     // The bounds of a node's own content in its local space (a mesh's is its
@@ -79,6 +90,13 @@ public:
     const Geometry& geometry(std::uint32_t i) const { return geometries_[i]; }
     const Material& material(std::uint32_t i) const { return materials_[i]; }
 
+    std::size_t skinCount() const { return skinMesh_.size(); }
+    std::span<const NodeId> skinJoints(std::uint32_t skin) const;
+    // After update(): per joint, the matrix (Scene.cpp) that takes a vertex
+    // in the mesh node's space to where joint j puts it, in the same space;
+    // the renderer then applies the mesh node's world matrix as for any mesh.
+    std::span<const glm::mat4> jointMatrices(std::uint32_t skin) const;
+
     // Bounds of everything under the root; empty when nothing is.
     Sphere bound() const { return worldBound_[0]; }
 
@@ -105,6 +123,14 @@ private:
     std::vector<Geometry> geometries_;
     std::vector<Material> materials_;
     std::vector<Image> images_;
+
+    // Skins: skin s owns [skinFirst_[s], skinFirst_[s + 1]) of the joint arrays.
+    std::vector<NodeId> skinMesh_;
+    std::vector<std::uint32_t> skinFirst_{0};
+    std::vector<NodeId> jointNode_;
+    std::vector<glm::mat4> inverseBind_;
+    std::vector<glm::mat4> jointMatrix_;
+    void updateJointMatrices();
 };
 
 } // namespace arcomp

@@ -54,7 +54,14 @@ GroupingItem groupingItemOf(const Scene& scene, NodeId subtree) {
         if (scene.kind(n) == NodeKind::Mesh) {
             const MeshPart& part = scene.meshPart(n);
             const Geometry& g = scene.geometry(part.geometry);
-            box.expand(transformed(g.box, scene.world(n)));
+            if (part.skin == kNoSkin) {
+                box.expand(transformed(g.box, scene.world(n)));
+            } else {
+                // Its joints, not its node, place a skinned mesh: the box
+                // around its bound, fitted over its poses (Skinning.hpp).
+                const Sphere& s = scene.worldBound(n);
+                if (!s.empty()) box.expand(Box{s.center - s.radius, s.center + s.radius});
+            }
             const float a = surfaceArea(g);
             color += glm::vec3(scene.material(part.material).baseColor) * a;
             area += a;

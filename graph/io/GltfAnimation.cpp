@@ -63,9 +63,6 @@ public:
             out_.nodes[static_cast<std::size_t>(parsed)].skin = s;
             Skin& skin = out_.skins[static_cast<std::size_t>(s)];
             skin.users.push_back(static_cast<std::uint32_t>(parsed));
-            if (model_.nodes[n].mesh >= 0)
-                out_.warnings.push_back(at("nodes", n) + ": skinned by skin " + std::to_string(s) + " '" + skin.name +
-                                        "'; drawn in its bind pose, as arcomp does not skin meshes yet");
         }
     }
 

@@ -360,6 +360,45 @@ private:
     const tinygltf::Model& model_;
 };
 
+// What a skinned node's primitives must agree with its skin on: every joint
+// that carries weight is one of the skin's (glTF 2.0, 3.7.3.3), or the file
+// is refused. What arcomp cannot skin is drawn in its bind pose, and said:
+// primitives without JOINTS_0 and WEIGHTS_0, and skins with more joints than
+// one draw takes (kMaxJointsPerDraw). placeModel reads the same conditions.
+void checkSkinnedMeshes(const tinygltf::Model& model, const std::vector<int>& parsedOf,
+                        const std::vector<std::string>& geometrySource, const GltfReader& reader, ParsedModel& out) {
+    for (std::size_t n = 0; n < model.nodes.size(); ++n) {
+        const int parsed = parsedOf[n];
+        if (parsed < 0) continue;
+        const ModelNode& node = out.nodes[static_cast<std::size_t>(parsed)];
+        if (node.skin < 0 || node.parts.empty()) continue;
+        const Skin& skin = out.skins[static_cast<std::size_t>(node.skin)];
+        const std::string skinLabel = "skin " + std::to_string(node.skin) + " '" + skin.name + "'";
+        if (skin.joints.size() > kMaxJointsPerDraw) {
+            out.warnings.push_back(ptr("nodes", n) + ": " + skinLabel + " has " + std::to_string(skin.joints.size()) +
+                                   " joints, more than the " + std::to_string(kMaxJointsPerDraw) +
+                                   " arcomp skins in one draw; drawn in its bind pose");
+            continue;
+        }
+        for (const MeshPart& part : node.parts) {
+            const Geometry& g = out.geometries[part.geometry];
+            const std::string& source = geometrySource[part.geometry];
+            if (!g.hasSkinInfluences()) {
+                out.warnings.push_back(source + ": skinned by " + skinLabel + " (" + ptr("nodes", n) +
+                                       ") but has no skin influences to pose it; drawn in its bind pose");
+                continue;
+            }
+            for (std::size_t v = 0; v < g.joints.size(); ++v)
+                for (int k = 0; k < 4; ++k)
+                    if (g.weights[v][k] > 0.0f && g.joints[v][k] >= skin.joints.size())
+                        reader.fail(source + "/attributes/JOINTS_0",
+                                    "vertex " + std::to_string(v) + " uses joint " + std::to_string(g.joints[v][k]) + ", but " +
+                                        skinLabel + " of " + ptr("nodes", n) + " has " + std::to_string(skin.joints.size()) +
+                                        " joints");
+        }
+    }
+}
+
 glm::mat4 nodeMatrix(const tinygltf::Node& node, std::size_t index, const GltfReader& reader) {
     const std::string where = ptr("nodes", index);
     auto finite = [&](const std::vector<double>& v, const char* field) {
@@ -752,9 +791,80 @@ ParsedModel parseGltf(const fs::path& file) {
         return at->second;
     };
 
+    // JOINTS_0 and WEIGHTS_0 (glTF 2.0, 3.7.3.3): joints unsigned bytes or
+    // shorts; weights floats or normalized unsigned bytes or shorts, summing
+    // to 1. A joint with no weight is set to 0, so that it indexes inside any
+    // skin; the joints with weight are checked against the node's skin once
+    // nodes are read. Weights that do not sum to 1 are rescaled (quantized
+    // ones rarely do exactly); only a sum far from 1 is worth a warning. A
+    // vertex with no weight at all has no pose: the validator passes such
+    // files (placeholder accessors of zeros), so the primitive is drawn
+    // unskinned rather than refused.
+    auto readSkinInfluences = [&](const tinygltf::Primitive& prim, const std::string& where, std::size_t vertexCount,
+                                  Geometry& g) {
+        const auto joints = prim.attributes.find("JOINTS_0");
+        const auto weights = prim.attributes.find("WEIGHTS_0");
+        for (const char* second : {"JOINTS_1", "WEIGHTS_1"})
+            if (prim.attributes.count(second))
+                out.warnings.push_back(where + "/attributes/" + second +
+                                       ": ignored; arcomp skins with the first four influences (JOINTS_0, WEIGHTS_0)");
+        if (joints == prim.attributes.end() && weights == prim.attributes.end()) return;
+        if (joints == prim.attributes.end() || weights == prim.attributes.end())
+            reader.fail(where + "/attributes", std::string("has ") + (joints == prim.attributes.end() ? "WEIGHTS_0" : "JOINTS_0") +
+                                                   " without " + (joints == prim.attributes.end() ? "JOINTS_0" : "WEIGHTS_0"));
+        const std::string jointsUse = where + "/attributes/JOINTS_0", weightsUse = where + "/attributes/WEIGHTS_0";
+        const auto jointsIndex = static_cast<std::size_t>(joints->second), weightsIndex = static_cast<std::size_t>(weights->second);
+        for (const auto& [index, use] : {std::pair{jointsIndex, jointsUse}, std::pair{weightsIndex, weightsUse}})
+            if (reader.count(index, use) != vertexCount)
+                reader.fail(use, "has " + std::to_string(reader.count(index, use)) + " elements, POSITION has " +
+                                     std::to_string(vertexCount));
+        if (reader.describe(jointsIndex, jointsUse).normalized)
+            reader.fail(ptr("accessors", jointsIndex, "normalized"), "is true; joint indices are not normalized (used by " + jointsUse + ")");
+        const tinygltf::Accessor& w = reader.describe(weightsIndex, weightsUse);
+        if (w.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !w.normalized)
+            reader.fail(ptr("accessors", weightsIndex, "normalized"),
+                        "is false; unsigned byte or short weights must be normalized (used by " + weightsUse + ")");
+        const auto j = reader.readFloats(jointsIndex, jointsUse, TINYGLTF_TYPE_VEC4,
+                                         {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
+        const auto v = reader.readFloats(weightsIndex, weightsUse, TINYGLTF_TYPE_VEC4,
+                                         {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                          TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
+        g.joints.resize(vertexCount);
+        g.weights.resize(vertexCount);
+        std::size_t farOff = 0, firstFarOff = 0, weightless = 0, firstWeightless = 0;
+        for (std::size_t i = 0; i < vertexCount; ++i) {
+            glm::vec4 weight(v[i * 4], v[i * 4 + 1], v[i * 4 + 2], v[i * 4 + 3]);
+            if (glm::any(glm::lessThan(weight, glm::vec4(0.0f))))
+                reader.fail(weightsUse, "vertex " + std::to_string(i) + " has a negative weight");
+            const float sum = weight.x + weight.y + weight.z + weight.w;
+            if (!(sum > 0.0f)) {
+                if (weightless++ == 0) firstWeightless = i;
+                continue;
+            }
+            if (std::abs(sum - 1.0f) > 0.01f && farOff++ == 0) firstFarOff = i;
+            weight /= sum;
+            glm::u16vec4 joint(0);
+            for (int k = 0; k < 4; ++k)
+                if (weight[k] > 0.0f) joint[k] = static_cast<std::uint16_t>(j[i * 4 + static_cast<std::size_t>(k)]);
+            g.joints[i] = joint;
+            g.weights[i] = weight;
+        }
+        if (weightless > 0) {
+            out.warnings.push_back(weightsUse + ": " + std::to_string(weightless) + " vertices (the first vertex " +
+                                   std::to_string(firstWeightless) + ") have no weight on any joint; the primitive is not skinned");
+            g.joints.clear();
+            g.weights.clear();
+            return;
+        }
+        if (farOff > 0)
+            out.warnings.push_back(weightsUse + ": the weights of " + std::to_string(farOff) + " vertices (the first vertex " +
+                                   std::to_string(firstFarOff) + ") do not sum to 1; rescaled so they do");
+    };
+
     // Each (mesh, primitive) becomes one geometry, shared by every node that
     // uses the mesh. Every mesh is checked, used or not: a file that holds
     // unsafe data anywhere is not one to trust.
+    std::vector<std::string> geometrySource;  // per geometry: its primitive's JSON pointer
     auto primitiveParts = [&](int meshIndex) {
         std::vector<MeshPart> parts;
         const tinygltf::Mesh& mesh = model.meshes[static_cast<std::size_t>(meshIndex)];
@@ -874,6 +984,7 @@ ParsedModel parseGltf(const fs::path& file) {
                     }
                 }
             }
+            readSkinInfluences(prim, where, vertexCount, g);
             std::vector<std::uint32_t> indices;
             if (prim.indices >= 0) {
                 indices = reader.readIndices(static_cast<std::size_t>(prim.indices), where + "/indices", vertexCount);
@@ -891,6 +1002,7 @@ ParsedModel parseGltf(const fs::path& file) {
             }
             const auto id = static_cast<std::uint32_t>(out.geometries.size());
             out.geometries.push_back(std::move(g));
+            geometrySource.push_back(where);
             parts.push_back({id, material});
         }
         return parts;
@@ -926,6 +1038,7 @@ ParsedModel parseGltf(const fs::path& file) {
     readGltfAnimation(model, name, [&reader](std::size_t index, const std::string& use, int type, const std::vector<int>& components) {
         return reader.readFloats(index, use, type, components);
     }, parsedOf, out);
+    checkSkinnedMeshes(model, parsedOf, geometrySource, reader, out);
     return out;
 }
 

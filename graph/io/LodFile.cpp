@@ -124,6 +124,7 @@ LoadedOrSimplified loadOrSimplifyLevels(const std::filesystem::path& baked, cons
                                         std::span<const float> ratios) {
     if (ratios.empty() || ratios[0] != 1.0f) return {simplifyLevels(mesh, ratios), false, "no ratio 1 first: not cached"};
     if (!mesh.colors.empty()) return {simplifyLevels(mesh, ratios), false, "vertex colours, which .lod does not hold: not cached"};
+    if (!mesh.joints.empty()) return {simplifyLevels(mesh, ratios), false, "skin joints and weights, which .lod does not hold: not cached"};
     std::string note;
     std::error_code ec;
     if (std::filesystem::exists(baked, ec)) {

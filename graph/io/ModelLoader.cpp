@@ -1,4 +1,5 @@
 #include "graph/io/ModelLoader.hpp"
+#include "graph/animation/Skinning.hpp"
 
 #include <algorithm>
 #include <fstream>
@@ -48,17 +49,41 @@ NodeId append(ParsedModel& model, Scene& scene, NodeId parent, const std::string
     for (Geometry& g : model.geometries) scene.addGeometry(std::move(g));
     const NodeId root = scene.addGroup(parent, name);
     std::vector<NodeId> ids(model.nodes.size());
+    // Each skinned node gets a scene skin of its own (its joint matrices undo
+    // its own world matrix), added once every joint is placed; its parts name
+    // it already. A part is skinned where the parser found nothing against
+    // it (checkSkinnedMeshes warned about the rest).
+    std::vector<std::size_t> skinnedNodes;
     for (std::size_t i = 0; i < model.nodes.size(); ++i) {
         const ModelNode& n = model.nodes[i];
         const NodeId p = n.parent < 0 ? root : ids[static_cast<std::size_t>(n.parent)];
         ids[i] = scene.addTransform(p, n.local, n.name);
+        const bool skinnable = n.skin >= 0 && model.skins[static_cast<std::size_t>(n.skin)].joints.size() <= kMaxJointsPerDraw;
+        const auto sceneSkin = static_cast<std::uint32_t>(scene.skinCount() + skinnedNodes.size());
+        bool skinned = false;
         for (const MeshPart& part : n.parts) {
-            const MeshPart placed{part.geometry + geometryBase, part.material + materialBase};
+            MeshPart placed{part.geometry + geometryBase, part.material + materialBase};
+            if (skinnable && scene.geometry(placed.geometry).hasSkinInfluences()) {
+                placed.skin = sceneSkin;
+                skinned = true;
+            }
             if (placeMesh) placeMesh(ids[i], placed);
             else scene.addMesh(ids[i], placed);
         }
+        if (skinned) skinnedNodes.push_back(i);
+    }
+    for (const std::size_t i : skinnedNodes) {
+        const Skin& skin = model.skins[static_cast<std::size_t>(model.nodes[i].skin)];
+        std::vector<NodeId> joints;
+        for (const std::uint32_t j : skin.joints) joints.push_back(j == kNoJoint ? kNoNode : ids[j]);
+        scene.addSkin(ids[i], joints, skin.inverseBindMatrices);
     }
     for (AnimationClip& clip : model.animations) loaded.animations.push_back(retarget(std::move(clip), model, ids));
+    if (!skinnedNodes.empty()) {
+        std::vector<NodeId> placedNodes(scene.nodeCount() - root);
+        for (std::size_t k = 0; k < placedNodes.size(); ++k) placedNodes[k] = root + static_cast<NodeId>(k);
+        fitPosedBounds(scene, placedNodes, loaded.animations);
+    }
     const auto placed = [&](std::uint32_t n) { return n == kNoJoint ? kNoNode : ids[n]; };
     for (Skin& skin : model.skins) {
         for (std::uint32_t& j : skin.joints) j = placed(j);

@@ -35,7 +35,8 @@ struct LoadedModel {
     // glTF animations, their channels bound to the placed nodes
     // (graph/animation/AnimationPlayer.hpp plays one).
     std::vector<ModelAnimation> animations;
-    // glTF skins with joints and users as NodeIds; not applied yet.
+    // glTF skins with joints and users as NodeIds, as the file has them; what
+    // poses the meshes are the scene skins their parts name (Scene::addSkin).
     std::vector<Skin> skins;
 };
 

@@ -25,6 +25,8 @@ Geometry compacted(const Geometry& g, const std::vector<std::uint32_t>& indices)
             if (!g.texcoords1.empty()) out.texcoords1.push_back(g.texcoords1[i]);
             if (!g.tangents.empty()) out.tangents.push_back(g.tangents[i]);
             if (!g.colors.empty()) out.colors.push_back(g.colors[i]);
+            if (!g.joints.empty()) out.joints.push_back(g.joints[i]);
+            if (!g.weights.empty()) out.weights.push_back(g.weights[i]);
         }
         out.indices.push_back(remap[i]);
     }
@@ -84,7 +86,9 @@ NodeId addLodLevels(Scene& scene, LodTable& lods, NodeId parent, MeshPart part, 
     const NodeId lod = scene.addNode(parent, NodeKind::Lod, lods.add(node));
     for (LodLevel& level : levels) {
         const std::uint32_t g = level.ratio == 1.0f ? part.geometry : scene.addGeometry(std::move(level.geometry));
-        scene.addMesh(lod, {g, part.material});
+        // Every level keeps the part's skin: compacted() carried the joints
+        // and weights of the vertices it kept.
+        scene.addMesh(lod, {g, part.material, part.skin});
     }
     return lod;
 }

@@ -14,6 +14,19 @@ void HoldoutMeshes::add(Scene& scene, NodeId mesh, const SilhouetteMesh& silhoue
     entries_.push_back(std::move(entry));
 }
 
+void HoldoutMeshes::addPosed(const Scene& scene, NodeId mesh, std::uint32_t material) {
+    const MeshPart& cg = scene.meshPart(mesh);
+    const auto indexCount = static_cast<std::uint32_t>(scene.geometry(cg.geometry).indices.size());
+    SilhouetteNode entry{{cg.geometry, material, cg.skin}, {0, indexCount}, {}, {}};
+    if (mesh >= slot_.size()) slot_.resize(mesh + 1, kNone);
+    if (slot_[mesh] != kNone) {
+        entries_[slot_[mesh]] = std::move(entry);
+        return;
+    }
+    slot_[mesh] = static_cast<std::uint32_t>(entries_.size());
+    entries_.push_back(std::move(entry));
+}
+
 std::optional<DrawItem> HoldoutMeshes::itemFor(const Scene& scene, const DrawItem& cg, const View& view) const {
     if (!has(cg.node)) return std::nullopt;
     const SilhouetteNode& s = entries_[slot_[cg.node]];

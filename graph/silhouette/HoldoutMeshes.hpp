@@ -28,6 +28,11 @@ public:
     // node `mesh`, drawn with `material`. A second add for the same node
     // replaces the first.
     void add(Scene& scene, NodeId mesh, const SilhouetteMesh& silhouette, std::uint32_t material);
+    // The holdout of a skinned mesh node: its own geometry, whole, with its
+    // skin, so the renderer poses the holdout as it poses the CG. A silhouette
+    // baked for the bind pose would not fit any other pose, and its welded
+    // vertices would have lost their joints.
+    void addPosed(const Scene& scene, NodeId mesh, std::uint32_t material);
     bool has(NodeId mesh) const { return mesh < slot_.size() && slot_[mesh] != kNone; }
     // The holdout item for a CG item whose node has an entry: the index
     // range of the region holding the eye (in the node's local space), the

@@ -105,3 +105,33 @@ TEST(HoldoutMeshes, eachLodLevelHasItsOwnHoldoutAndTheChosenOneIsBinned) {
         EXPECT_EQ(cut->indexCount, silhouettes[static_cast<std::size_t>(level)].full.indexCount) << distance;
     }
 }
+
+// A skinned mesh's holdout is its own geometry, whole, posed by the same
+// skin, so the cut-out follows the pose the CG is drawn in.
+TEST(HoldoutMeshes, aSkinnedMeshsHoldoutIsItsWholeMeshWithItsSkin) {
+    World world;
+    Scene& scene = world.scene;
+    Geometry g = makeUvSphere(1.0f, 16, 8);
+    g.joints.assign(g.positions.size(), {0, 0, 0, 0});
+    g.weights.assign(g.positions.size(), {1, 0, 0, 0});
+    const NodeId place = scene.addTransform(scene.root(), glm::translate(glm::mat4(1.0f), {10, 0, 0}));
+    const NodeId joint[1] = {scene.addTransform(scene.root(), glm::mat4(1.0f))};
+    const glm::mat4 bind[1] = {glm::mat4(1.0f)};
+    const std::uint32_t skin = scene.addSkin(place, joint, bind);
+    const std::uint32_t indexCount = static_cast<std::uint32_t>(g.indices.size());
+    const NodeId mesh = scene.addMesh(place, {scene.addGeometry(std::move(g)), scene.addMaterial({}), skin});
+    const std::uint32_t holdoutMaterial = scene.addMaterial({});
+    world.holdouts.addPosed(scene, mesh, holdoutMaterial);
+    scene.update();
+    DrawList list;
+    const View view = lookingAtX10From(3.5f);
+    select(world, view, {}, list);
+    ASSERT_EQ(list.holdouts.size(), 1u);
+    const std::optional<DrawItem> cut = world.holdouts.itemFor(scene, list.items[list.holdouts[0].cgItem], view);
+    ASSERT_TRUE(cut);
+    EXPECT_EQ(cut->part.geometry, scene.meshPart(mesh).geometry);
+    EXPECT_EQ(cut->part.material, holdoutMaterial);
+    EXPECT_EQ(cut->part.skin, skin);
+    EXPECT_EQ(cut->firstIndex, 0u);
+    EXPECT_EQ(cut->indexCount, indexCount);
+}

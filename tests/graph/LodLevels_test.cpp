@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -232,4 +233,44 @@ TEST(LodFile, aCacheMadeBeforeTheMeshHadTangentsIsMadeAgain) {
     EXPECT_TRUE(cached.loaded) << cached.note;
     EXPECT_EQ(cached.levels[1].geometry.tangents, again.levels[1].geometry.tangents);
     std::filesystem::remove(file);
+}
+
+// A skinned mesh's levels are skinned too: each kept vertex keeps its
+// joints and weights, each level's mesh node the part's skin, and the
+// levels are simplified afresh rather than cached without them.
+TEST(LodLevels, levelsOfASkinnedMeshKeepJointsWeightsAndTheSkin) {
+    Geometry sphere = makeUvSphere(1.0f, 32, 16);
+    // Weights from height, so that each position has its own: (upper, lower).
+    for (const glm::vec3& p : sphere.positions) {
+        const float up = (p.y + 1.0f) * 0.5f;
+        sphere.joints.push_back({0, 1, 0, 0});
+        sphere.weights.push_back({up, 1.0f - up, 0, 0});
+    }
+    Scene scene;
+    const std::uint32_t sourceId = scene.addGeometry(sphere);
+    const NodeId joints[2] = {scene.addTransform(scene.root(), glm::mat4(1.0f)), scene.addTransform(scene.root(), glm::mat4(1.0f))};
+    const glm::mat4 binds[2] = {glm::mat4(1.0f), glm::mat4(1.0f)};
+    const std::uint32_t skin = scene.addSkin(scene.root(), joints, binds);
+    const MeshPart part{sourceId, scene.addMaterial({}), skin};
+    LodTable lods;
+    LodNode settings;
+    settings.setThresholds({10.0f, 40.0f});
+    const NodeId lod = addGeneratedLod(scene, lods, scene.root(), part, kRatios, settings);
+    const Geometry& source = scene.geometry(sourceId);  // after the levels were added to the scene's geometries
+    for (const NodeId level : scene.children(lod)) {
+        EXPECT_EQ(scene.meshPart(level).skin, skin);
+        const Geometry& g = scene.geometry(scene.meshPart(level).geometry);
+        ASSERT_TRUE(g.hasSkinInfluences());
+        for (std::size_t v = 0; v < g.positions.size(); ++v) {
+            const auto from = std::find(source.positions.begin(), source.positions.end(), g.positions[v]) - source.positions.begin();
+            ASSERT_LT(static_cast<std::size_t>(from), source.positions.size());
+            EXPECT_EQ(g.joints[v], source.joints[static_cast<std::size_t>(from)]);
+            EXPECT_EQ(g.weights[v], source.weights[static_cast<std::size_t>(from)]);
+        }
+    }
+    const auto file = std::filesystem::temp_directory_path() / ("lod_skin_test_" + std::to_string(::getpid()) + ".lod");
+    const LoadedOrSimplified cached = loadOrSimplifyLevels(file, source, kRatios);
+    EXPECT_FALSE(cached.loaded);
+    EXPECT_FALSE(std::filesystem::exists(file)) << ".lod holds no joints: a skinned mesh's levels are not written";
+    EXPECT_TRUE(cached.levels[1].geometry.hasSkinInfluences());
 }

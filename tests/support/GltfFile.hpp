@@ -23,6 +23,8 @@ struct GltfFile {
     std::string nodes = R"([{"name": "spinner", "mesh": 0}])";
     std::string animations = "[]";
     std::string skins;
+    // More of the mesh's attributes, as JSON members after POSITION: `, "JOINTS_0": 2`.
+    std::string attributes;
 
     GltfFile() {
         add({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
@@ -57,7 +59,8 @@ struct GltfFile {
             return out + "]";
         };
         return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": )" + nodes +
-               R"(, "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}], "animations": )" +
+               R"(, "meshes": [{"primitives": [{"attributes": {"POSITION": 0)" + attributes +
+               R"(}, "indices": 1}]}], "animations": )" +
                animations + (skins.empty() ? "" : R"(, "skins": )" + skins) + R"(, "accessors": )" + list(accessors) +
                R"(, "bufferViews": )" + list(views) + R"(, "buffers": [{"byteLength": )" + std::to_string(bin.size()) +
                R"(, "uri": "data:application/octet-stream;base64,)" + base64(bin) + "\"}]}";

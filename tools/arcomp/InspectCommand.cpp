@@ -113,8 +113,12 @@ void printAnimations(const SceneFile& file) {
         for (Interpolation mode : used) std::cout << ", " << interpolationName(mode);
         std::cout << "\n";
     }
-    for (const Skin& skin : file.skins)
-        std::cout << "skin '" << skin.name << "': " << skin.joints.size() << " joints (drawn in bind pose)\n";
+    for (const Skin& skin : file.skins) {
+        std::cout << "skin '" << skin.name << "': " << skin.joints.size() << " joints";
+        if (skin.joints.size() > kMaxJointsPerDraw)
+            std::cout << " (drawn in bind pose: a draw skins at most " << kMaxJointsPerDraw << ")";
+        std::cout << "\n";
+    }
 }
 
 int inspect(const std::string& path) {
