@@ -5,6 +5,8 @@
 
 #include "graph/io/GltfAnimation.hpp"
 
+#include "graph/io/GltfReader.hpp"
+
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -38,13 +40,11 @@ struct SamplerKeys {
 
 class AnimationReader {
 public:
-    AnimationReader(const tinygltf::Model& model, const std::string& file, const GltfFloatReader& readFloats,
-                    const std::vector<int>& parsedOf, ParsedModel& out)
-        : model_(model), file_(file), readFloats_(readFloats), parsedOf_(parsedOf), out_(out) {}
+    AnimationReader(const tinygltf::Model& model, const gltf::GltfReader& reader, const std::vector<int>& parsedOf,
+                    ParsedModel& out)
+        : model_(model), reader_(reader), parsedOf_(parsedOf), out_(out) {}
 
-    [[noreturn]] void fail(const std::string& where, const std::string& reason) const {
-        throw ModelError(file_, where, reason);
-    }
+    [[noreturn]] void fail(const std::string& where, const std::string& reason) const { reader_.fail(where, reason); }
 
     void animations() {
         for (std::size_t a = 0; a < model_.animations.size(); ++a) out_.animations.push_back(animation(a));
@@ -84,7 +84,7 @@ private:
             fail(where + "/interpolation", "unknown interpolation '" + src.interpolation + "'; expected LINEAR, STEP or CUBICSPLINE");
         keys.interpolation = *interpolation;
         if (src.input < 0) fail(where + "/input", "has no accessor");
-        keys.times = readFloats_(static_cast<std::size_t>(src.input), where + "/input", TINYGLTF_TYPE_SCALAR,
+        keys.times = reader_.readFloats(static_cast<std::size_t>(src.input), where + "/input", TINYGLTF_TYPE_SCALAR,
                                  {TINYGLTF_COMPONENT_TYPE_FLOAT});
         if (placeholder(src.input)) return keys;  // all zeros: the channels using it are skipped
         for (std::size_t k = 0; k < keys.times.size(); ++k) {
@@ -118,7 +118,7 @@ private:
                                         TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT}
                      : std::vector<int>{TINYGLTF_COMPONENT_TYPE_FLOAT};
         const std::vector<float> raw =
-            readFloats_(output, where, rotation ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3, components);
+            reader_.readFloats(output, where, rotation ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3, components);
         const tinygltf::Accessor& accessor = model_.accessors[output];
         if (accessor.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !accessor.normalized)
             fail(at("accessors", output) + "/normalized",
@@ -214,7 +214,7 @@ private:
         out.inverseBindMatrices.assign(out.joints.size(), glm::mat4(1.0f));
         if (src.inverseBindMatrices >= 0) {
             const std::string pointer = where + "/inverseBindMatrices";
-            const std::vector<float> m = readFloats_(static_cast<std::size_t>(src.inverseBindMatrices), pointer,
+            const std::vector<float> m = reader_.readFloats(static_cast<std::size_t>(src.inverseBindMatrices), pointer,
                                                      TINYGLTF_TYPE_MAT4, {TINYGLTF_COMPONENT_TYPE_FLOAT});
             if (m.size() / 16 < out.joints.size())
                 fail(pointer, "has " + std::to_string(m.size() / 16) + " matrices for " + std::to_string(out.joints.size()) + " joints");
@@ -225,8 +225,7 @@ private:
     }
 
     const tinygltf::Model& model_;
-    std::string file_;
-    const GltfFloatReader& readFloats_;
+    const gltf::GltfReader& reader_;
     const std::vector<int>& parsedOf_;
     ParsedModel& out_;
 };
@@ -249,11 +248,11 @@ std::optional<Trs> authoredTrs(const tinygltf::Node& node) {
     return trs;
 }
 
-void readGltfAnimation(const tinygltf::Model& model, const std::string& file, const GltfFloatReader& readFloats,
-                       const std::vector<int>& parsedOf, ParsedModel& out) {
-    AnimationReader reader(model, file, readFloats, parsedOf, out);
-    reader.skins();
-    reader.animations();
+void readGltfAnimation(const tinygltf::Model& model, const gltf::GltfReader& reader, const std::vector<int>& parsedOf,
+                       ParsedModel& out) {
+    AnimationReader animations(model, reader, parsedOf, out);
+    animations.skins();
+    animations.animations();
 }
 
 } // namespace arcomp

@@ -3,13 +3,12 @@
 // apart from meshes and materials. Internal to graph/io: it sees tinygltf.
 //
 // parseGltf() calls readGltfAnimation() once the node tree is parsed, with
-// the accessor reader it checks mesh data with, so that animation data is
-// held to the same bounds and type checks, and failures carry the same
-// JSON pointers.
+// the accessor reader it checks mesh data with (GltfReader.hpp), so that
+// animation data is held to the same bounds and type checks, and failures
+// carry the same JSON pointers.
 
 #include "graph/io/ModelLoader.hpp"
 
-#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,12 +18,11 @@ class Model;
 class Node;
 }
 
-namespace arcomp {
+namespace arcomp::gltf {
+class GltfReader;
+}
 
-// Reads accessor `index` as floats, `type` wide (a TINYGLTF_TYPE_*), with
-// one of `componentTypes`, or throws ModelError; `usePointer` names the use.
-using GltfFloatReader =
-    std::function<std::vector<float>(std::size_t index, const std::string& usePointer, int type, const std::vector<int>& componentTypes)>;
+namespace arcomp {
 
 // The pose a node's translation, rotation and scale give; none when the node
 // gives a matrix. The node's fields must have been checked (nodeMatrix does).
@@ -33,7 +31,7 @@ std::optional<Trs> authoredTrs(const tinygltf::Node& node);
 // Fills `out.animations` and `out.skins` and sets each parsed node's skin.
 // `parsedOf[i]` is glTF node i's index in out.nodes, -1 when it is not in the
 // drawn scene. Throws ModelError naming the file and a JSON pointer.
-void readGltfAnimation(const tinygltf::Model& model, const std::string& file, const GltfFloatReader& readFloats,
-                       const std::vector<int>& parsedOf, ParsedModel& out);
+void readGltfAnimation(const tinygltf::Model& model, const gltf::GltfReader& reader, const std::vector<int>& parsedOf,
+                       ParsedModel& out);
 
 } // namespace arcomp

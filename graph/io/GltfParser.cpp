@@ -4,6 +4,8 @@
 
 #include "graph/io/ContainedPath.hpp"
 #include "graph/io/GltfAnimation.hpp"
+#include "graph/io/GltfMaterial.hpp"
+#include "graph/io/GltfReader.hpp"
 #include "graph/io/ModelLoader.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -21,7 +23,7 @@
 
 namespace arcomp {
 
-namespace fs = std::filesystem;
+using namespace gltf;
 
 namespace {
 
@@ -30,15 +32,7 @@ namespace {
 const std::set<std::string> kSupportedRequired{"KHR_materials_unlit", "KHR_mesh_quantization", "KHR_texture_transform",
                                                "KHR_materials_emissive_strength"};
 
-// The largest element count we accept for an accessor without a buffer view
-// (all zeros, possibly sparse): real data is bounded by its buffer's size.
-constexpr std::size_t kMaxElements = std::size_t{1} << 26;
 
-std::string ptr(const char* array, std::size_t index, const char* field = nullptr) {
-    std::string p = std::string("/") + array + "/" + std::to_string(index);
-    if (field) p += std::string("/") + field;
-    return p;
-}
 
 struct FileAccess {
     fs::path folder;
@@ -119,246 +113,6 @@ bool lenientImage(tinygltf::Image* image, const int index, std::string* err, std
     return drawnWithout("does not decode: " + localErr);
 }
 
-int componentCount(int type) {
-    switch (type) {
-    case TINYGLTF_TYPE_SCALAR: return 1;
-    case TINYGLTF_TYPE_VEC2: return 2;
-    case TINYGLTF_TYPE_VEC3: return 3;
-    case TINYGLTF_TYPE_VEC4: return 4;
-    case TINYGLTF_TYPE_MAT2: return 4;
-    case TINYGLTF_TYPE_MAT3: return 9;
-    case TINYGLTF_TYPE_MAT4: return 16;
-    default: return 0;
-    }
-}
-
-int componentSize(int componentType) {
-    switch (componentType) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
-    case TINYGLTF_COMPONENT_TYPE_SHORT:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
-    default: return 0;
-    }
-}
-
-const char* typeName(int type) {
-    switch (type) {
-    case TINYGLTF_TYPE_SCALAR: return "SCALAR";
-    case TINYGLTF_TYPE_VEC2: return "VEC2";
-    case TINYGLTF_TYPE_VEC3: return "VEC3";
-    case TINYGLTF_TYPE_VEC4: return "VEC4";
-    default: return "a matrix type";
-    }
-}
-
-class GltfReader {
-public:
-    GltfReader(const fs::path& file, tinygltf::Model& model) : file_(file.string()), model_(model) {}
-
-    [[noreturn]] void fail(const std::string& where, const std::string& reason) const {
-        throw ModelError(file_, where, reason);
-    }
-
-    // Reads `count` elements of `accessor` as floats, each `components` wide,
-    // checking every byte it touches. Integer components are converted as
-    // the spec says: normalized ones to [0,1] or [-1,1], others as values.
-    std::vector<float> readFloats(std::size_t index, const std::string& usePointer, int wantType,
-                                  const std::vector<int>& allowedComponents) const {
-        const tinygltf::Accessor& a = accessor(index, usePointer);
-        const std::string where = ptr("accessors", index);
-        if (a.type != wantType)
-            fail(where + "/type", std::string("is ") + typeName(a.type) + ", expected " + typeName(wantType) +
-                                       " (used by " + usePointer + ")");
-        if (std::find(allowedComponents.begin(), allowedComponents.end(), a.componentType) ==
-            allowedComponents.end())
-            fail(where + "/componentType", "component type " + std::to_string(a.componentType) +
-                                               " is not allowed for " + usePointer);
-        const int n = componentCount(a.type);
-        std::vector<float> out(a.count * static_cast<std::size_t>(n), 0.0f);
-        if (a.bufferView >= 0) {
-            const auto [data, stride] = elements(a, index);
-            const int size = componentSize(a.componentType);
-            for (std::size_t e = 0; e < a.count; ++e)
-                for (int c = 0; c < n; ++c)
-                    out[e * n + c] = convert(data + e * stride + static_cast<std::size_t>(c * size), a);
-        }
-        if (a.sparse.isSparse) applySparse(a, index, out, n);
-        for (std::size_t i = 0; i < out.size(); ++i)
-            if (!std::isfinite(out[i]))
-                fail(where, "element " + std::to_string(i / n) + " is not a finite number");
-        return out;
-    }
-
-    std::vector<std::uint32_t> readIndices(std::size_t index, const std::string& usePointer,
-                                           std::size_t vertexCount) const {
-        const tinygltf::Accessor& a = accessor(index, usePointer);
-        const std::string where = ptr("accessors", index);
-        if (a.type != TINYGLTF_TYPE_SCALAR) fail(where + "/type", "indices must be SCALAR");
-        if (a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-            a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-            a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
-            fail(where + "/componentType", "indices must be unsigned byte, short or int, not " +
-                                               std::to_string(a.componentType));
-        if (a.sparse.isSparse) fail(where + "/sparse", "sparse index accessors are not supported");
-        if (a.bufferView < 0) fail(where, "index accessor has no buffer view");
-        const auto [data, stride] = elements(a, index);
-        std::vector<std::uint32_t> out(a.count);
-        for (std::size_t e = 0; e < a.count; ++e) {
-            out[e] = readUnsigned(data + e * stride, a.componentType);
-            if (out[e] >= vertexCount)
-                fail(where, "index " + std::to_string(out[e]) + " at element " + std::to_string(e) +
-                                " is out of range for " + std::to_string(vertexCount) + " vertices");
-        }
-        return out;
-    }
-
-    // Every buffer view must lie inside its buffer, used or not.
-    void checkView(std::size_t index) const {
-        std::size_t stride = 0;
-        view(static_cast<int>(index), ptr("bufferViews", index), stride);
-    }
-
-    std::size_t count(std::size_t index, const std::string& usePointer) const {
-        return accessor(index, usePointer).count;
-    }
-
-    // The accessor, checked as readFloats checks it, for attributes that come
-    // in more than one shape (COLOR_0: VEC3 or VEC4, normalized integers).
-    const tinygltf::Accessor& describe(std::size_t index, const std::string& usePointer) const {
-        return accessor(index, usePointer);
-    }
-
-private:
-    const tinygltf::Accessor& accessor(std::size_t index, const std::string& usePointer) const {
-        if (index >= model_.accessors.size())
-            fail(usePointer, "accessor " + std::to_string(index) + " does not exist (" +
-                                 std::to_string(model_.accessors.size()) + " accessors)");
-        const tinygltf::Accessor& a = model_.accessors[index];
-        if (componentCount(a.type) == 0) fail(ptr("accessors", index, "type"), "unknown accessor type");
-        if (componentSize(a.componentType) == 0)
-            fail(ptr("accessors", index, "componentType"), "unknown component type " + std::to_string(a.componentType));
-        // The schema's minimum: an empty accessor would also hand null data on.
-        if (a.count == 0) fail(ptr("accessors", index, "count"), "count is 0; an accessor holds at least 1 element");
-        if (a.bufferView < 0 && a.count > kMaxElements)
-            fail(ptr("accessors", index, "count"), "count " + std::to_string(a.count) + " is larger than supported");
-        return a;
-    }
-
-    // The bytes of a buffer view, after checking it lies inside its buffer.
-    std::pair<const unsigned char*, std::size_t> view(int viewIndex, const std::string& usePointer,
-                                                      std::size_t& byteStride) const {
-        if (viewIndex < 0 || static_cast<std::size_t>(viewIndex) >= model_.bufferViews.size())
-            fail(usePointer, "buffer view " + std::to_string(viewIndex) + " does not exist (" +
-                                 std::to_string(model_.bufferViews.size()) + " buffer views)");
-        const tinygltf::BufferView& v = model_.bufferViews[static_cast<std::size_t>(viewIndex)];
-        const std::string where = ptr("bufferViews", static_cast<std::size_t>(viewIndex));
-        if (v.buffer < 0 || static_cast<std::size_t>(v.buffer) >= model_.buffers.size())
-            fail(where + "/buffer", "buffer " + std::to_string(v.buffer) + " does not exist");
-        const auto& data = model_.buffers[static_cast<std::size_t>(v.buffer)].data;
-        if (v.byteOffset > data.size() || v.byteLength > data.size() - v.byteOffset)
-            fail(where, "bytes " + std::to_string(v.byteOffset) + "+" + std::to_string(v.byteLength) +
-                            " lie outside buffer " + std::to_string(v.buffer) + " of " + std::to_string(data.size()) +
-                            " bytes");
-        byteStride = v.byteStride;
-        return {data.data() + v.byteOffset, v.byteLength};
-    }
-
-    std::pair<const unsigned char*, std::size_t> elements(const tinygltf::Accessor& a, std::size_t index) const {
-        const std::string where = ptr("accessors", index);
-        std::size_t stride = 0;
-        const auto [bytes, length] = view(a.bufferView, where + "/bufferView", stride);
-        const std::size_t elementSize =
-            static_cast<std::size_t>(componentCount(a.type)) * static_cast<std::size_t>(componentSize(a.componentType));
-        if (stride == 0) stride = elementSize;
-        if (stride < elementSize)
-            fail(ptr("bufferViews", static_cast<std::size_t>(a.bufferView), "byteStride"),
-                 "stride " + std::to_string(stride) + " is smaller than an element (" + std::to_string(elementSize) +
-                     " bytes)");
-        if (a.count == 0) return {bytes, stride};
-        // count - 1 strides plus one element must fit, without overflow.
-        if (a.byteOffset > length || (a.count - 1) > (length - a.byteOffset) / stride ||
-            (a.count - 1) * stride + elementSize > length - a.byteOffset)
-            fail(where, std::to_string(a.count) + " elements from byte " + std::to_string(a.byteOffset) +
-                            " do not fit in buffer view " + std::to_string(a.bufferView) + " of " +
-                            std::to_string(length) + " bytes");
-        if (a.byteOffset % static_cast<std::size_t>(componentSize(a.componentType)) != 0)
-            fail(where + "/byteOffset", "is not a multiple of the component size");
-        return {bytes + a.byteOffset, stride};
-    }
-
-    static std::uint32_t readUnsigned(const unsigned char* p, int componentType) {
-        switch (componentType) {
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return *p;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { std::uint16_t v; std::memcpy(&v, p, 2); return v; }
-        default: { std::uint32_t v; std::memcpy(&v, p, 4); return v; }
-        }
-    }
-
-    static float convert(const unsigned char* p, const tinygltf::Accessor& a) {
-        switch (a.componentType) {
-        case TINYGLTF_COMPONENT_TYPE_FLOAT: { float v; std::memcpy(&v, p, 4); return v; }
-        case TINYGLTF_COMPONENT_TYPE_BYTE: {
-            const auto v = static_cast<std::int8_t>(*p);
-            return a.normalized ? std::max(static_cast<float>(v) / 127.0f, -1.0f) : static_cast<float>(v);
-        }
-        case TINYGLTF_COMPONENT_TYPE_SHORT: {
-            std::int16_t v;
-            std::memcpy(&v, p, 2);
-            return a.normalized ? std::max(static_cast<float>(v) / 32767.0f, -1.0f) : static_cast<float>(v);
-        }
-        default: {
-            const std::uint32_t v = readUnsigned(p, a.componentType);
-            if (!a.normalized) return static_cast<float>(v);
-            const float max = a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ? 255.0f
-                              : a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 65535.0f
-                                                                                           : 4294967295.0f;
-            return static_cast<float>(v) / max;
-        }
-        }
-    }
-
-    void applySparse(const tinygltf::Accessor& a, std::size_t index, std::vector<float>& out, int n) const {
-        const std::string where = ptr("accessors", index) + "/sparse";
-        if (a.sparse.count < 0 || static_cast<std::size_t>(a.sparse.count) > a.count)
-            fail(where + "/count", "sparse count " + std::to_string(a.sparse.count) + " exceeds the accessor's " +
-                                       std::to_string(a.count));
-        const auto count = static_cast<std::size_t>(a.sparse.count);
-        const int indexType = a.sparse.indices.componentType;
-        if (indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-            indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
-            fail(where + "/indices/componentType", "must be unsigned byte, short or int");
-        auto region = [&](int viewIndex, int byteOffset, std::size_t elementSize, const std::string& p) {
-            std::size_t stride = 0;
-            const auto [bytes, length] = view(viewIndex, p + "/bufferView", stride);
-            if (byteOffset < 0 || static_cast<std::size_t>(byteOffset) > length ||
-                count * elementSize > length - static_cast<std::size_t>(byteOffset))
-                fail(p, std::to_string(count) + " sparse elements do not fit in buffer view " +
-                            std::to_string(viewIndex));
-            return bytes + byteOffset;
-        };
-        const unsigned char* indices =
-            region(a.sparse.indices.bufferView, a.sparse.indices.byteOffset, static_cast<std::size_t>(componentSize(indexType)),
-                   where + "/indices");
-        const std::size_t valueSize = static_cast<std::size_t>(n * componentSize(a.componentType));
-        const unsigned char* values = region(a.sparse.values.bufferView, a.sparse.values.byteOffset, valueSize,
-                                             where + "/values");
-        for (std::size_t s = 0; s < count; ++s) {
-            const std::uint32_t target = readUnsigned(indices + s * static_cast<std::size_t>(componentSize(indexType)), indexType);
-            if (target >= a.count)
-                fail(where + "/indices", "index " + std::to_string(target) + " is out of range for " +
-                                             std::to_string(a.count) + " elements");
-            for (int c = 0; c < n; ++c)
-                out[target * static_cast<std::size_t>(n) + static_cast<std::size_t>(c)] =
-                    convert(values + s * valueSize + static_cast<std::size_t>(c * componentSize(a.componentType)), a);
-        }
-    }
-
-    std::string file_;
-    const tinygltf::Model& model_;
-};
 
 // What a skinned node's primitives must agree with its skin on: every joint
 // that carries weight is one of the skin's (glTF 2.0, 3.7.3.3), or the file
@@ -481,189 +235,6 @@ Image toRgba8(const tinygltf::Image& src) {
 }
 
 
-// The GL enum values glTF's samplers hold.
-constexpr int kGlNearest = 9728, kGlLinear = 9729, kGlNearestMipmapNearest = 9984, kGlLinearMipmapNearest = 9985,
-              kGlNearestMipmapLinear = 9986, kGlLinearMipmapLinear = 9987;
-constexpr int kGlClampToEdge = 33071, kGlMirroredRepeat = 33648, kGlRepeat = 10497;
-
-// glTF leaves an absent filter to the implementation (tinygltf: -1), which
-// takes Sampler's defaults. A value outside the spec's list fails, as the
-// validator makes it an error (VALUE_NOT_IN_LIST): such a file was not
-// written by a tool that knew what it meant.
-Sampler toSampler(const tinygltf::Sampler& src, std::size_t index, const GltfReader& reader) {
-    const std::string where = ptr("samplers", index);
-    Sampler out;
-    const auto filter = [&](int gl, const char* field, bool minification, TextureFilter& to) {
-        switch (gl) {
-        case -1: return;
-        case kGlNearest: to = TextureFilter::Nearest; return;
-        case kGlLinear: to = TextureFilter::Linear; return;
-        default: break;
-        }
-        if (minification) {
-            switch (gl) {
-            case kGlNearestMipmapNearest: to = TextureFilter::NearestMipmapNearest; return;
-            case kGlLinearMipmapNearest: to = TextureFilter::LinearMipmapNearest; return;
-            case kGlNearestMipmapLinear: to = TextureFilter::NearestMipmapLinear; return;
-            case kGlLinearMipmapLinear: to = TextureFilter::LinearMipmapLinear; return;
-            default: break;
-            }
-        }
-        reader.fail(where + "/" + field, "is " + std::to_string(gl) + ", expected " +
-                                             (minification ? "9728, 9729 or 9984 to 9987 (NEAREST, LINEAR or a mipmap filter)"
-                                                           : "9728 (NEAREST) or 9729 (LINEAR)"));
-    };
-    const auto wrap = [&](int gl, const char* field) {
-        switch (gl) {
-        case -1:  // tinygltf's "unset", as for the filters: the default
-        case kGlRepeat: return TextureWrap::Repeat;
-        case kGlClampToEdge: return TextureWrap::ClampToEdge;
-        case kGlMirroredRepeat: return TextureWrap::MirroredRepeat;
-        default:
-            reader.fail(where + "/" + field, "is " + std::to_string(gl) +
-                                                 ", expected 10497 (REPEAT), 33071 (CLAMP_TO_EDGE) or 33648 (MIRRORED_REPEAT)");
-        }
-    };
-    filter(src.magFilter, "magFilter", false, out.magFilter);
-    filter(src.minFilter, "minFilter", true, out.minFilter);
-    out.wrapS = wrap(src.wrapS, "wrapS");
-    out.wrapT = wrap(src.wrapT, "wrapT");
-    return out;
-}
-
-float finiteNumber(const tinygltf::Value& v, const std::string& where, const GltfReader& reader) {
-    if (!v.IsNumber() || !std::isfinite(v.GetNumberAsDouble())) reader.fail(where, "must be a finite number");
-    return static_cast<float>(v.GetNumberAsDouble());
-}
-
-glm::vec2 finitePair(const tinygltf::Value& v, const std::string& where, const GltfReader& reader) {
-    if (!v.IsArray() || v.ArrayLen() != 2) reader.fail(where, "must be an array of 2 numbers");
-    return {finiteNumber(v.Get(0), where + "/0", reader), finiteNumber(v.Get(1), where + "/1", reader)};
-}
-
-int texCoordSet(const tinygltf::Value& v, const std::string& where, const GltfReader& reader) {
-    const double d = v.IsNumber() ? v.GetNumberAsDouble() : -1.0;
-    if (!(d >= 0.0 && d <= 1e6 && d == std::floor(d)))
-        reader.fail(where, "must be an integer of 0 or more (the n of TEXCOORD_n)");
-    return static_cast<int>(d);
-}
-
-// KHR_texture_transform on one textureInfo; its texCoord replaces the
-// textureInfo's own.
-TextureTransform readTransform(const tinygltf::Value& ext, const std::string& where, int& texCoord,
-                               const GltfReader& reader) {
-    if (!ext.IsObject()) reader.fail(where, "must be an object");
-    TextureTransform t;
-    if (ext.Has("offset")) t.offset = finitePair(ext.Get("offset"), where + "/offset", reader);
-    if (ext.Has("rotation")) t.rotation = finiteNumber(ext.Get("rotation"), where + "/rotation", reader);
-    if (ext.Has("scale")) t.scale = finitePair(ext.Get("scale"), where + "/scale", reader);
-    if (ext.Has("texCoord")) texCoord = texCoordSet(ext.Get("texCoord"), where + "/texCoord", reader);
-    return t;
-}
-
-// The JSON names of Material::textures()'s slots, in its order, and how
-// inspect and warnings call them.
-constexpr std::array<const char*, 5> kSlotPointers{"pbrMetallicRoughness/baseColorTexture",
-                                                   "pbrMetallicRoughness/metallicRoughnessTexture", "normalTexture",
-                                                   "occlusionTexture", "emissiveTexture"};
-constexpr std::array<const char*, 5> kSlotNames{"base colour", "metallic-roughness", "normal", "occlusion", "emissive"};
-
-// What every material's textures need, checked once: each texture's image
-// and sampler exist, and the samplers in arcomp's terms.
-struct TextureTables {
-    const tinygltf::Model& model;
-    const std::vector<Image>& images;
-    std::vector<Sampler> samplers;
-};
-
-TextureTables textureTables(const tinygltf::Model& model, const std::vector<Image>& images, const GltfReader& reader) {
-    TextureTables tables{model, images, {}};
-    for (std::size_t i = 0; i < model.samplers.size(); ++i) tables.samplers.push_back(toSampler(model.samplers[i], i, reader));
-    for (std::size_t i = 0; i < model.textures.size(); ++i) {
-        const tinygltf::Texture& t = model.textures[i];
-        if (t.source < -1 || t.source >= static_cast<int>(images.size()))
-            reader.fail(ptr("textures", i, "source"), "image " + std::to_string(t.source) + " does not exist (" +
-                                                          std::to_string(images.size()) + " images)");
-        if (t.sampler < -1 || t.sampler >= static_cast<int>(tables.samplers.size()))
-            reader.fail(ptr("textures", i, "sampler"), "sampler " + std::to_string(t.sampler) + " does not exist (" +
-                                                           std::to_string(tables.samplers.size()) + " samplers)");
-    }
-    return tables;
-}
-
-// Any slot's textureInfo (tinygltf has a type for plain, normal and
-// occlusion ones). `where` points at the textureInfo. An image that did not
-// decode leaves the slot empty; its warning was given when it failed.
-template <class Info>
-TextureRef readTexture(const Info& info, const std::string& where, const TextureTables& tables, const GltfReader& reader) {
-    TextureRef ref;
-    if (info.index == -1) return ref;  // tinygltf's "no such textureInfo"
-    if (info.index < 0 || static_cast<std::size_t>(info.index) >= tables.model.textures.size())
-        reader.fail(where + "/index", "texture " + std::to_string(info.index) + " does not exist (" +
-                                          std::to_string(tables.model.textures.size()) + " textures)");
-    if (info.texCoord < 0)
-        reader.fail(where + "/texCoord", "is " + std::to_string(info.texCoord) + ", expected 0 or more (the n of TEXCOORD_n)");
-    ref.texCoord = info.texCoord;
-    if (const auto e = info.extensions.find("KHR_texture_transform"); e != info.extensions.end())
-        ref.transform = readTransform(e->second, where + "/extensions/KHR_texture_transform", ref.texCoord, reader);
-    const tinygltf::Texture& texture = tables.model.textures[static_cast<std::size_t>(info.index)];
-    if (texture.sampler >= 0) ref.sampler = tables.samplers[static_cast<std::size_t>(texture.sampler)];
-    if (texture.source >= 0 && !tables.images[static_cast<std::size_t>(texture.source)].rgba.empty())
-        ref.image = texture.source;
-    return ref;
-}
-
-std::string materialLabel(std::size_t index, const std::string& name) {
-    return "material " + std::to_string(index) + (name.empty() ? "" : " ('" + name + "')");
-}
-
-Material readMaterial(const tinygltf::Material& src, std::size_t index, const TextureTables& tables,
-                      const GltfReader& reader, std::vector<std::string>& warnings) {
-    const std::string where = ptr("materials", index);
-    Material m;
-    m.name = src.name;
-    const auto& pbr = src.pbrMetallicRoughness;
-    if (pbr.baseColorFactor.size() == 4)
-        m.baseColor = glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2],
-                                pbr.baseColorFactor[3]);
-    m.metallic = static_cast<float>(pbr.metallicFactor);
-    m.roughness = static_cast<float>(pbr.roughnessFactor);
-    m.baseColorTexture = readTexture(pbr.baseColorTexture, where + "/" + kSlotPointers[0], tables, reader);
-    m.metallicRoughnessTexture = readTexture(pbr.metallicRoughnessTexture, where + "/" + kSlotPointers[1], tables, reader);
-    m.normalTexture = readTexture(src.normalTexture, where + "/" + kSlotPointers[2], tables, reader);
-    m.normalScale = static_cast<float>(src.normalTexture.scale);
-    m.occlusionTexture = readTexture(src.occlusionTexture, where + "/" + kSlotPointers[3], tables, reader);
-    m.occlusionStrength = static_cast<float>(src.occlusionTexture.strength);
-    m.emissiveTexture = readTexture(src.emissiveTexture, where + "/" + kSlotPointers[4], tables, reader);
-    if (src.emissiveFactor.size() == 3)
-        m.emissive = glm::vec3(src.emissiveFactor[0], src.emissiveFactor[1], src.emissiveFactor[2]);
-    if (const auto e = src.extensions.find("KHR_materials_emissive_strength"); e != src.extensions.end()) {
-        const std::string at = where + "/extensions/KHR_materials_emissive_strength";
-        if (!e->second.IsObject()) reader.fail(at, "must be an object");
-        if (e->second.Has("emissiveStrength")) {
-            m.emissiveStrength = finiteNumber(e->second.Get("emissiveStrength"), at + "/emissiveStrength", reader);
-            if (m.emissiveStrength < 0.0f) reader.fail(at + "/emissiveStrength", "is negative, expected 0 or more");
-        }
-    }
-    m.alphaMode = src.alphaMode == "BLEND" ? AlphaMode::Blend : src.alphaMode == "MASK" ? AlphaMode::Mask
-                                                                                        : AlphaMode::Opaque;
-    m.alphaCutoff = static_cast<float>(src.alphaCutoff);
-    m.doubleSided = src.doubleSided;
-    m.unlit = src.extensions.count("KHR_materials_unlit") > 0;
-
-    // Geometry carries TEXCOORD_0 and TEXCOORD_1 only; a texture mapped by
-    // another set is drawn as if absent rather than with the wrong uvs.
-    const auto slots = m.textures();
-    for (std::size_t k = 0; k < slots.size(); ++k) {
-        if (slots[k]->texCoord <= 1) continue;
-        if (slots[k]->present())
-            warnings.push_back(where + "/" + kSlotPointers[k] + ": reads TEXCOORD_" + std::to_string(slots[k]->texCoord) +
-                               ", arcomp reads TEXCOORD_0 and TEXCOORD_1 only; " + materialLabel(index, m.name) +
-                               " drawn without its " + kSlotNames[k] + " texture");
-        *slots[k] = TextureRef{};
-    }
-    return m;
-}
 
 } // namespace
 
@@ -714,9 +285,7 @@ ParsedModel parseGltf(const fs::path& file) {
 
     // Materials; a default one serves primitives that name none. Every
     // texture and sampler is checked, used or not, like the meshes below.
-    const TextureTables textures = textureTables(model, out.images, reader);
-    for (std::size_t i = 0; i < model.materials.size(); ++i)
-        out.materials.push_back(readMaterial(model.materials[i], i, textures, reader, out.warnings));
+    out.materials = readMaterials(model, out.images, reader, out.warnings);
     const auto defaultMaterial = static_cast<std::uint32_t>(out.materials.size());
     out.materials.push_back(Material{.name = "default"});
 
@@ -1035,9 +604,7 @@ ParsedModel parseGltf(const fs::path& file) {
         out.nodes.push_back(std::move(node));
         for (auto c = src.children.rbegin(); c != src.children.rend(); ++c) stack.push_back({*c, self});
     }
-    readGltfAnimation(model, name, [&reader](std::size_t index, const std::string& use, int type, const std::vector<int>& components) {
-        return reader.readFloats(index, use, type, components);
-    }, parsedOf, out);
+    readGltfAnimation(model, reader, parsedOf, out);
     checkSkinnedMeshes(model, parsedOf, geometrySource, reader, out);
     return out;
 }
