@@ -108,7 +108,8 @@ void printAnimations(const SceneFile& file) {
         const AnimationClip& clip = file.animations[i].clip;
         std::set<Interpolation> used;
         for (const AnimationChannel& c : clip.channels) used.insert(c.interpolation);
-        std::cout << "animation " << i << " '" << clip.name << "': " << clip.channels.size() << " channels, "
+        std::cout << "animation " << i << " '" << clip.name << "': " << clip.channels.size()
+                  << (clip.channels.size() == 1 ? " channel, " : " channels, ")
                   << clip.duration() << " s";
         for (Interpolation mode : used) std::cout << ", " << interpolationName(mode);
         std::cout << "\n";
