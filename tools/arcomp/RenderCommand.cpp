@@ -167,7 +167,7 @@ const bool registered = registerCommand(
      }});
 
 // Writes an environment as a Radiance .hdr, so that a reference renderer
-// (three.js's RGBELoader) can be lit exactly as `render` lights.
+// (three.js's HDRLoader, as tools/gltf-reference uses) can be lit exactly as `render` lights.
 int writeEnvironment(const std::string& source, const std::string& out) {
     const Environment env = environmentFromOption(source);
     writeRadianceHdr(out, env);
