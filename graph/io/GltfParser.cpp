@@ -491,20 +491,17 @@ ParsedModel parseGltf(const fs::path& file) {
                     g.normals[i] = len > 0.0f ? nrm / len : glm::vec3(0, 0, 1);
                 }
             }
-            if (auto t = prim.attributes.find("TEXCOORD_0"); t != prim.attributes.end()) {
-                sameCount("TEXCOORD_0", static_cast<std::size_t>(t->second));
-                const auto v = reader.readFloats(static_cast<std::size_t>(t->second), attributePointer("TEXCOORD_0"),
+            const auto readTexcoords = [&](const char* attribute, std::vector<glm::vec2>& to) {
+                const auto t = prim.attributes.find(attribute);
+                if (t == prim.attributes.end()) return;
+                sameCount(attribute, static_cast<std::size_t>(t->second));
+                const auto v = reader.readFloats(static_cast<std::size_t>(t->second), attributePointer(attribute),
                                                  TINYGLTF_TYPE_VEC2, floatOrQuantized);
-                g.texcoords.resize(vertexCount);
-                std::memcpy(g.texcoords.data(), v.data(), v.size() * sizeof(float));
-            }
-            if (auto t = prim.attributes.find("TEXCOORD_1"); t != prim.attributes.end()) {
-                sameCount("TEXCOORD_1", static_cast<std::size_t>(t->second));
-                const auto v = reader.readFloats(static_cast<std::size_t>(t->second), attributePointer("TEXCOORD_1"),
-                                                 TINYGLTF_TYPE_VEC2, floatOrQuantized);
-                g.texcoords1.resize(vertexCount);
-                std::memcpy(g.texcoords1.data(), v.data(), v.size() * sizeof(float));
-            }
+                to.resize(vertexCount);
+                std::memcpy(to.data(), v.data(), v.size() * sizeof(float));
+            };
+            readTexcoords("TEXCOORD_0", g.texcoords);
+            readTexcoords("TEXCOORD_1", g.texcoords1);
             if (auto c = prim.attributes.find("COLOR_0"); c != prim.attributes.end()) {
                 const auto index = static_cast<std::size_t>(c->second);
                 const std::string use = attributePointer("COLOR_0");
