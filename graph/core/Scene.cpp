@@ -141,6 +141,37 @@ void Scene::rebuildOrder() {
         }
     }
     structureDirty_ = false;
+    rebuildSiblingLayout();
+}
+
+// A node's children take consecutive slots when the depth-first walk
+// reaches the node: each run of siblings is one stretch of every array, and
+// an object's own subtree follows soon after the run that holds it. Bounds
+// are filled in by update(), which recomputes them all after a change of
+// structure.
+void Scene::rebuildSiblingLayout() {
+    const std::size_t slots = order_.size();
+    layout_.centerX.assign(slots, 0.0f);
+    layout_.centerY.assign(slots, 0.0f);
+    layout_.centerZ.assign(slots, 0.0f);
+    layout_.radius.assign(slots, -1.0f);
+    layout_.kind.assign(slots, NodeKind::Group);
+    layout_.payload.assign(slots, 0);
+    layout_.node.assign(slots, kNoNode);
+    layout_.firstChild.assign(slots, 0);
+    layout_.childEnd.assign(slots, 0);
+    layout_.slotOf.assign(kind_.size(), ~std::uint32_t{0});  // nodes outside the root's tree have none
+    layout_.slotOf[root()] = 0;
+    std::uint32_t next = 1;
+    for (const NodeId n : order_) {
+        const std::uint32_t slot = layout_.slotOf[n];
+        layout_.kind[slot] = kind_[n];
+        layout_.payload[slot] = payload_[n];
+        layout_.node[slot] = n;
+        layout_.firstChild[slot] = next;
+        for (NodeId c = firstChild_[n]; c != kNoNode; c = nextSibling_[c]) layout_.slotOf[c] = next++;
+        layout_.childEnd[slot] = next;
+    }
 }
 
 void Scene::update() {
@@ -165,6 +196,7 @@ void Scene::update() {
         Sphere s = transformed(localBound_[n], world_[n]);
         for (NodeId c = firstChild_[n]; c != kNoNode; c = nextSibling_[c]) s = merged(s, worldBound_[c]);
         worldBound_[n] = s;
+        layout_.setBound(layout_.slotOf[n], s);
         if (parent_[n] != kNoNode) changed[parent_[n]] = 1;
     }
     updateJointMatrices();

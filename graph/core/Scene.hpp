@@ -1,8 +1,10 @@
 #pragma once
-// The scene graph. Nodes are rows in flat arrays indexed by NodeId; the
-// select pass walks them in depth-first order, where a node's subtree is the
-// contiguous range [position, subtreeEnd). Skipping a culled subtree is one
-// assignment, and no node is reached through a pointer.
+// The scene graph. Nodes are rows in flat arrays indexed by NodeId. In
+// depth-first order a node's subtree is the contiguous range [position,
+// subtreeEnd). The select pass walks a copy of the hot data in which each
+// node's children are contiguous instead (siblingLayout()): skipping a
+// culled subtree is not reading it, and no node is reached through a
+// pointer.
 //
 //   Scene scene;
 //   NodeId t = scene.addTransform(scene.root(), glm::translate(...));
@@ -15,6 +17,8 @@
 #include "graph/core/Bounds.hpp"
 #include "graph/core/Geometry.hpp"
 #include "graph/core/Material.hpp"
+#include "graph/core/NodeKind.hpp"
+#include "graph/core/SiblingLayout.hpp"
 
 #include <cstdint>
 #include <span>
@@ -23,13 +27,8 @@
 
 namespace arcomp {
 
-using NodeId = std::uint32_t;
-inline constexpr NodeId kNoNode = ~NodeId{0};
-
 // No skin: a mesh part drawn rigidly with its node's world matrix.
 inline constexpr std::uint32_t kNoSkin = ~std::uint32_t{0};
-
-enum class NodeKind : std::uint8_t { Group, Transform, Mesh, Lod, Grouping, SilhouetteRegion, PointCloud };
 
 // A primitive to draw: one geometry with one material, and the scene skin
 // that poses it (addSkin) when the geometry has joints and weights.
@@ -83,6 +82,9 @@ public:
     // subtreeEnd()[p] the position just past its subtree.
     std::span<const NodeId> order() const { return order_; }
     std::span<const std::uint32_t> subtreeEnd() const { return subtreeEnd_; }
+    // After update(): the select pass's copy of kinds, payloads and world
+    // bounds, with each node's children side by side (SiblingLayout.hpp).
+    const SiblingLayout& siblingLayout() const { return layout_; }
 
     const std::vector<Geometry>& geometries() const { return geometries_; }
     const std::vector<Material>& materials() const { return materials_; }
@@ -102,14 +104,17 @@ public:
 
 private:
     void rebuildOrder();
+    void rebuildSiblingLayout();
 
-    // Hot: read by the select pass.
+    // Per node. The select pass reads layout_, a copy of what it needs laid
+    // out for its walk, and world_ for the nodes that need a matrix.
     std::vector<NodeKind> kind_;
     std::vector<Sphere> worldBound_;
     std::vector<glm::mat4> world_;
     std::vector<std::uint32_t> payload_;
     std::vector<NodeId> order_;
     std::vector<std::uint32_t> subtreeEnd_;
+    SiblingLayout layout_;
     // Structure and update bookkeeping.
     std::vector<NodeId> parent_, firstChild_, lastChild_, nextSibling_;
     std::vector<glm::mat4> local_;

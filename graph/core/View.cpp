@@ -1,10 +1,10 @@
 #include "graph/core/View.hpp"
+#include "graph/core/DiscArea.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace arcomp {
 
@@ -14,11 +14,8 @@ float View::pixelScale() const {
 
 float View::projectedArea(const Sphere& s) const {
     if (s.empty()) return 0.0f;
-    const float distance = glm::length(s.center - eye);
-    const float screenArea = static_cast<float>(viewport.x) * static_cast<float>(viewport.y);
-    if (distance <= s.radius) return screenArea;
-    const float radiusPx = s.radius / distance * pixelScale();
-    return std::min(screenArea, std::numbers::pi_v<float> * radiusPx * radiusPx);
+    return projectedDiscArea(s.radius, glm::length(s.center - eye), pixelScale(),
+                             static_cast<float>(viewport.x) * static_cast<float>(viewport.y));
 }
 
 View View::lookAt(const glm::vec3& eye, const glm::vec3& target, const glm::vec3& up, float fovyDegrees,

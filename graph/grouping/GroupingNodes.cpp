@@ -80,7 +80,7 @@ void buildGrouping(Scene& scene, NodeId groupingNode, GroupingNodes& table, cons
     for (NodeId o : g.objects) items.push_back(groupingItemOf(scene, o));
     g.tree.build(items, params);
     g.omegaT = params.omegaT;
-    g.objectPosition.clear();
+    g.objectSlot.clear();
     g.impostorMaterial.clear();
     g.impostorBound.clear();
 }

@@ -50,9 +50,9 @@ struct GroupingNode {
     // Per tree node, written by the select pass: the proxy's model matrix
     // (draw items point at it until the next select).
     std::vector<glm::mat4> proxyModel;
-    // Position of object i's subtree in scene.order(); refreshed by the
+    // Slot of object i in scene.siblingLayout(); refreshed by the
     // select pass when the scene's order changed.
-    std::vector<std::uint32_t> objectPosition;
+    std::vector<std::uint32_t> objectSlot;
     // The select pass's work list: tree nodes to choose, and whether inside the frustum.
     std::vector<std::pair<std::uint32_t, bool>> pending;
 };

@@ -4,6 +4,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include <random>
+#include <vector>
+
 using namespace arcomp;
 
 TEST(Bounds, sphereAroundPointsHoldsEveryPoint) {
@@ -56,4 +59,39 @@ TEST(Frustum, classifiesSpheresInsideStraddlingAndOutside) {
     EXPECT_EQ(f.classify({{7.5f, 0, -10}, 1}), Containment::Outside);
     EXPECT_EQ(f.classify({{5.77f, 0, -10}, 1}), Containment::Intersects);
     EXPECT_EQ(f.classify(Sphere{}), Containment::Outside);
+}
+
+TEST(Frustum, runOfSpheresGetsTheAnswersOfOneAtATime) {
+    const glm::mat4 proj = glm::perspective(glm::radians(60.0f), 16.0f / 9.0f, 0.1f, 100.0f);
+    const glm::mat4 view = glm::lookAt(glm::vec3(1, 2, 3), {4, 0, -6}, {0, 1, 0});
+    const Frustum f = Frustum::fromViewProjection(proj * view);
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> coordinate(-60.0f, 60.0f), radius(-2.0f, 20.0f);
+    constexpr std::size_t kSpheres = 3 * Frustum::kMaxRun;
+    std::vector<float> x(kSpheres), y(kSpheres), z(kSpheres), r(kSpheres);
+    for (std::size_t i = 0; i < kSpheres; ++i) {
+        x[i] = coordinate(random);
+        y[i] = coordinate(random);
+        z[i] = coordinate(random);
+        r[i] = radius(random);  // some negative: empty spheres
+    }
+    int seen[3] = {0, 0, 0};
+    for (std::uint32_t first = 0; first < Frustum::kMaxRun; ++first)
+        for (std::uint32_t count = 1; count <= Frustum::kMaxRun; ++count) {
+            const RunContainment run = f.classifyRun(&x[first], &y[first], &z[first], &r[first], count);
+            for (std::uint32_t i = 0; i < count; ++i) {
+                const Containment one = f.classify({{x[first + i], y[first + i], z[first + i]}, r[first + i]});
+                ++seen[static_cast<int>(one)];
+                EXPECT_EQ((run.outside >> i) & 1u, one == Containment::Outside ? 1u : 0u) << "sphere " << first + i;
+                EXPECT_EQ((run.inside >> i) & 1u, one == Containment::Inside ? 1u : 0u) << "sphere " << first + i;
+            }
+            if (count < 32) {  // no bits past the run
+                EXPECT_EQ(run.outside >> count, 0u);
+                EXPECT_EQ(run.inside >> count, 0u);
+            }
+        }
+    // The spheres cover all three answers, so each was compared.
+    EXPECT_GT(seen[0], 0);
+    EXPECT_GT(seen[1], 0);
+    EXPECT_GT(seen[2], 0);
 }
