@@ -1,4 +1,5 @@
 #include "runtime/CostCalibration.hpp"
+#include "graph/budget/OnScreenPixels.hpp"
 
 #include "graph/lod/LodAlternatives.hpp"
 #include "graph/budget/RecursiveLeastSquares.hpp"
@@ -73,7 +74,7 @@ CostModel calibrateCosts(const Scene& scene, std::span<const NodeId> levelMeshes
                 list.items.push_back({node, scene.meshPart(node), distance, view.projectedArea(bound),
                                       static_cast<std::uint8_t>(level), shading});
                 const double ms = timeFrame(scene, list, view, renderer, timer, o) - model.overheadMs;
-                fit.add(std::array{static_cast<double>(list.items[0].screenArea), 1.0}, ms);
+                fit.add(std::array{static_cast<double>(onScreenPixels(list.items[0], scene, view)), 1.0}, ms);
             }
             // A negative slope or intercept is noise around zero.
             model.set(level, shading, {std::max(0.0, fit.parameters()[0]), std::max(0.0, fit.parameters()[1])});
@@ -123,7 +124,7 @@ CostModel fitCostsOnFrames(const Scene& scene, std::span<const DrawList> lists, 
             item.part = scene.meshPart(item.node);
             item.level = level;
             item.shading = static_cast<Shading>(pickShading(rng));
-            x[static_cast<std::size_t>(item.shading)] += item.screenArea * 1e-6;
+            x[static_cast<std::size_t>(item.shading)] += onScreenPixels(item, scene, views[i]) * 1e-6;
             x[shadings + std::min<std::size_t>(item.level, levels - 1)] += 1.0;
         }
         const double ms = timeFrame(scene, list, views[i], renderer, timer, {.repeats = 1, .clearColor = o.clearColor});

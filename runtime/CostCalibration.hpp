@@ -9,9 +9,10 @@
 //   CostModel model = calibrateCosts(scene, levelMeshes, renderer, timer, {.viewport = {1280, 720}});
 //   writeCalibration("station.calibration.yaml", model, {glDescription(), {1280, 720}});
 //
-// `pixels` is what the select pass writes into DrawItem::screenArea (the
-// projected disc of the bounding sphere), so the fit maps that very number
-// to time. A frame's overhead is the time of a frame that draws nothing.
+// `pixels` are what the controller charges (graph/budget/OnScreenPixels.hpp):
+// the projected disc of the bounding sphere, less what falls off screen, so
+// the fit maps that very number to time. A frame's overhead is the time of a
+// frame that draws nothing.
 
 #include "graph/budget/CostModel.hpp"
 #include "graph/core/Scene.hpp"

@@ -1,4 +1,5 @@
 #include "graph/budget/CostModel.hpp"
+#include "graph/budget/OnScreenPixels.hpp"
 #include "graph/core/Check.hpp"
 
 #include <algorithm>
@@ -48,9 +49,9 @@ double CostModel::itemMs(std::size_t level, Shading shading, double pixels) cons
     return c.msPerPixel * pixels + c.ms;
 }
 
-double CostModel::itemsMs(const DrawList& list) const {
+double CostModel::itemsMs(const DrawList& list, const Scene& scene, const View& view) const {
     double sum = 0.0;
-    for (const DrawItem& item : list.items) sum += itemMs(item.level, item.shading, item.screenArea);
+    for (const DrawItem& item : list.items) sum += itemMs(item.level, item.shading, onScreenPixels(item, scene, view));
     return sum;
 }
 

@@ -8,7 +8,7 @@
 //   CostModel model(3);                                   // three LOD levels
 //   model.set(0, Shading::Phong, {.msPerPixel = 2e-5, .ms = 0.9});
 //   model.overheadMs = 1.5;
-//   double itemsMs = model.itemsMs(list);                 // calibrated sum
+//   double itemsMs = model.itemsMs(list, scene, view);    // calibrated sum
 //   double frameMs = model.frameMs(itemsMs);              // with the online fit
 //   ... draw, time it ...
 //   model.observe(itemsMs, measuredMs);
@@ -25,6 +25,8 @@
 // identified by every frame that draws anything.
 
 #include "graph/core/DrawList.hpp"
+#include "graph/core/Scene.hpp"
+#include "graph/core/View.hpp"
 #include "graph/budget/RecursiveLeastSquares.hpp"
 
 #include <vector>
@@ -47,10 +49,12 @@ public:
     void set(std::size_t level, Shading shading, CostCoefficients c);
     const CostCoefficients& at(std::size_t level, Shading shading) const;
 
-    // The calibrated cost of one object, without the online fit.
+    // The calibrated cost of one object, without the online fit; `pixels`
+    // are those it covers on screen (graph/budget/OnScreenPixels.hpp).
     double itemMs(std::size_t level, Shading shading, double pixels) const;
-    // The calibrated cost of everything in the list, without the overhead.
-    double itemsMs(const DrawList& list) const;
+    // The calibrated cost of everything in the list, seen from `view`,
+    // without the overhead.
+    double itemsMs(const DrawList& list, const Scene& scene, const View& view) const;
     // Predicted frame time for objects whose calibrated costs sum to itemsMs:
     // gain · itemsMs + overheadMs; before any observation the gain is 1.
     double frameMs(double itemsMs) const;

@@ -1,4 +1,5 @@
 #include "graph/budget/FrameBudget.hpp"
+#include "graph/budget/OnScreenPixels.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -55,10 +56,11 @@ BudgetStats FrameBudget::apply(const Scene& scene, DrawList& list, const View& v
         Work& w = work_[i];
         w.item = i;
         w.object = alternatives_.object(item.node);
-        const float k1 = eccentricityAcuity(angleDegrees(towards, scene.worldBound(item.node).center - view.eye),
-                                            settings_.acuity);
+        const Sphere& bound = scene.worldBound(item.node);
+        const float k1 = eccentricityAcuity(angleDegrees(towards, bound.center - view.eye), settings_.acuity);
         const float floor = settings_.eccentricityFloor;
-        w.importance = item.screenArea * (floor + (1.0f - floor) * k1);
+        pixels_[i] = onScreenPixels(item, scene, view);
+        w.importance = pixels_[i] * (floor + (1.0f - floor) * k1);
         w.topLevel = item.level;
         w.topShading = static_cast<std::uint8_t>(item.shading);
         w.shadingSpan = settings_.changeShading ? static_cast<std::uint8_t>(w.topShading + 1) : 1;
@@ -69,7 +71,6 @@ BudgetStats FrameBudget::apply(const Scene& scene, DrawList& list, const View& v
         w.maxStep = static_cast<std::uint8_t>((coarser + 1) * w.shadingSpan - 1);
         const bool seenLastFrame = seen_[w.object] + 1 == frame_;
         w.step = seenLastFrame ? std::min(step_[w.object], w.maxStep) : 0;
-        pixels_[i] = item.screenArea;
         w.cost = costAt(w, w.step, pixels_[i]);
         total += w.cost;
     }
@@ -125,8 +126,8 @@ BudgetStats FrameBudget::apply(const Scene& scene, DrawList& list, const View& v
         step_[w.object] = w.step;
         seen_[w.object] = frame_;
         const double rank = w.maxStep == 0 ? 1.0 : 1.0 - static_cast<double>(w.step) / w.maxStep;
-        weighted += rank * item.screenArea;
-        area += item.screenArea;
+        weighted += rank * pixels_[w.item];
+        area += pixels_[w.item];
         stats_.itemsReduced += w.step > 0;
     }
     stats_.quality = area > 0.0 ? weighted / area : 1.0;

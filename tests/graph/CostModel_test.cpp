@@ -22,11 +22,15 @@ TEST(CostModel, frameIsTheSumOverItemsPlusOverhead) {
     CostModel m(1);
     m.set(0, Shading::Phong, {.msPerPixel = 1e-5, .ms = 1.0});
     m.overheadMs = 3.0;
+    Scene scene;
+    const NodeId box = scene.addMesh(scene.root(), {scene.addGeometry(makeBox({1, 1, 1})), scene.addMaterial({})});
+    scene.update();
+    const View view = View::lookAt({0, 0, 10}, {0, 0, 0}, {0, 1, 0}, 60.0f, {640, 480});
     DrawList list;
-    list.items.push_back({0, {0, 0}, 1.0f, 1e5f, 0, Shading::Phong});
-    list.items.push_back({1, {0, 0}, 1.0f, 2e5f, 0, Shading::Phong});
-    EXPECT_DOUBLE_EQ(m.itemsMs(list), 5.0);
-    EXPECT_DOUBLE_EQ(m.frameMs(m.itemsMs(list)), 8.0);
+    list.items.push_back({box, scene.meshPart(box), 10.0f, 1e5f, 0, Shading::Phong});
+    list.items.push_back({box, scene.meshPart(box), 10.0f, 2e5f, 0, Shading::Phong});
+    EXPECT_DOUBLE_EQ(m.itemsMs(list, scene, view), 5.0);
+    EXPECT_DOUBLE_EQ(m.frameMs(m.itemsMs(list, scene, view)), 8.0);
 }
 
 TEST(CostModel, refitFollowsAMachineSlowerThanCalibrated) {

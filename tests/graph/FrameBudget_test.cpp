@@ -153,7 +153,7 @@ TEST(FrameBudget, convergesOnAMachineSlowerThanItsTable) {
     for (int frame = 0; frame < 60; ++frame) {
         DrawList list = s.list(areas);
         budget.apply(s.scene, list, s.view);
-        const double ms = 1.3 * truth.itemsMs(list) + 2.5;
+        const double ms = 1.3 * truth.itemsMs(list, s.scene, s.view) + 2.5;
         const double predicted = budget.stats().predictedMs;
         budget.observe(ms);
         measured.push_back(ms);
@@ -187,7 +187,7 @@ TEST(FrameBudget, holdsTheTargetFromBothSidesWhenTheMachineChangesSpeed) {
         for (int frame = 0; frame < 80; ++frame) {
             DrawList list = s.list(areas);
             budget.apply(s.scene, list, s.view);
-            const double ms = speed * truth.itemsMs(list) + truth.overheadMs;
+            const double ms = speed * truth.itemsMs(list, s.scene, s.view) + truth.overheadMs;
             budget.observe(ms);
             if (frame >= 40) {
                 EXPECT_LE(ms, target * 1.02) << "speed " << speed << " frame " << frame;
@@ -293,5 +293,25 @@ TEST(FrameBudget, changesOnlyTheAttributesItIsAllowedTo) {
         DrawList list = s.list({1e5f, 2e5f});
         budget.apply(s.scene, list, s.view);
         for (const DrawItem& i : list.items) EXPECT_EQ(settingOf(i), (Setting{2, Shading::Phong}));
+    }
+}
+
+TEST(FrameBudget, chargesOnlyThePixelsOfAnObjectThatAreOnScreen) {
+    // Centres at 10 m on the right edge, and in the top-right corner, of a
+    // 60° x 16:9 view: about half and a quarter of each disc is on screen.
+    const float right = 10.0f * std::tan(glm::radians(30.0f)) * 16.0f / 9.0f;
+    const float top = 10.0f * std::tan(glm::radians(30.0f));
+    const Synthetic s({{0.0f, 0.0f, -10.0f}, {right, 0.0f, -10.0f}, {right, top, -10.0f}});
+    const CostModel m = table();
+    const float area = 1e4f;
+    const double expected[3] = {1.0, 0.5, 0.25};
+    for (std::size_t i = 0; i < 3; ++i) {
+        FrameBudget budget(m, {.targetMs = 1e3});
+        DrawList list = s.list({area});
+        list.items[0].node = s.level0[i];
+        const BudgetStats stats = budget.apply(s.scene, list, s.view);
+        const double charged = stats.predictedMs - m.overheadMs - m.itemMs(0, Shading::Phong, 0.0f);
+        const double full = m.itemMs(0, Shading::Phong, area) - m.itemMs(0, Shading::Phong, 0.0f);
+        EXPECT_NEAR(charged / full, expected[i], 0.03) << "object " << i;
     }
 }

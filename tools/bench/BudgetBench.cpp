@@ -49,6 +49,7 @@
 // measured) and calibration.yaml.
 
 #include "graph/budget/FrameBudget.hpp"
+#include "graph/budget/OnScreenPixels.hpp"
 #include "graph/lod/LodAlternatives.hpp"
 #include "graph/core/SelectPass.hpp"
 #include "runtime/CalibrationFile.hpp"
@@ -122,9 +123,10 @@ Series fly(FlightScene& flight, Renderer& renderer, FrameTimer& timer, int frame
         select(flight.world, view, {.shading = Shading::Phong}, list);
         double floorItems = 0.0;
         for (const DrawItem& item : list.items)
-            floorItems += table.itemMs(alternatives.levelCount(item.node) - 1u, Shading::Unlit, item.screenArea);
+            floorItems += table.itemMs(alternatives.levelCount(item.node) - 1u, Shading::Unlit,
+                                       onScreenPixels(item, flight.world.scene, view));
         s.floorItemsMs.push_back(floorItems);
-        s.itemsMs.push_back(table.itemsMs(list));
+        s.itemsMs.push_back(table.itemsMs(list, flight.world.scene, view));
         double predicted = table.frameMs(s.itemsMs.back());
         double quality = 1.0;
         std::size_t reduced = 0;
