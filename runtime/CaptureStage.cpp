@@ -24,7 +24,17 @@ StationInput StationInput::fromLive(std::unique_ptr<FrameSource> s, double fps) 
 }
 
 CaptureStage::CaptureStage(StationInput input) : input_(std::move(input)) {
-    firstPending_ = grab();
+    if (input_.pending) {
+        std::optional<Frame> first = std::move(input_.pending);
+        input_.pending.reset();
+        if (input_.replay) {
+            replayState_ = {SourceStatus::Streaming, ""};
+            videoSeconds_ = std::chrono::duration<double>(first->timestamp).count();
+        }
+        firstPending_ = accept(std::move(first));
+    } else {
+        firstPending_ = grab();
+    }
     if (!firstPending_) throw VideoError(name(), "first frame", "no frame to start from");
 }
 
@@ -68,6 +78,10 @@ bool CaptureStage::grab() {
             f = input_.live->newest();
         }
     }
+    return accept(std::move(f));
+}
+
+bool CaptureStage::accept(std::optional<Frame> f) {
     newFrame_ = f.has_value();
     if (f && !input_.replay) {
         // A source that does not stamp its frames is taken as capturing now;
@@ -77,13 +91,26 @@ bool CaptureStage::grab() {
         liveCaptured_ = std::max(liveCaptured_, captured);
     }
     if (f) {
-        if (!frame_.empty() && f->image.size() != frame_.size())
-            cv::resize(f->image, frame_, frame_.size(), 0, 0, cv::INTER_AREA);  // a fallback of another size
-        else frame_ = f->image;
+        // A new image each frame, never one written in place: a pipelined
+        // station still composites the previous one.
+        if (!frame_.empty() && f->image.size() != frame_.size()) {
+            cv::Mat scaled;
+            cv::resize(f->image, scaled, frame_.size(), 0, 0, cv::INTER_AREA);  // a fallback of another size
+            frame_ = scaled;
+        } else {
+            frame_ = f->image;
+        }
         if (!frame_.isContinuous()) frame_ = frame_.clone();
         if (lens_) lens_->apply(frame_);
+        raw_ = std::move(f);
     }
     return !frame_.empty();
+}
+
+StationInput CaptureStage::release(bool currentUnshown) {
+    if ((currentUnshown || firstPending_) && raw_) input_.pending = std::move(raw_);
+    raw_.reset();
+    return std::move(input_);
 }
 
 void CaptureStage::undistortWith(LensUndistortion lens) {

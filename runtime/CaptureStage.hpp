@@ -29,6 +29,10 @@ struct StationInput {
     std::unique_ptr<FrameGrabber> replay;
     std::unique_ptr<FrameSource> live;
     double fps = 25.0;  // for the video file output
+    // A frame taken from the input but never shown (a pipelined station
+    // reads one frame ahead): the next CaptureStage starts with it, so a
+    // reload loses no frame of a replay.
+    std::optional<Frame> pending;
 
     static StationInput fromReplay(std::unique_ptr<FrameGrabber> g, double fps);
     static StationInput fromLive(std::unique_ptr<FrameSource> s, double fps);
@@ -70,13 +74,17 @@ public:
     // before anyone sees it: a calibrated lens.
     void undistortWith(LensUndistortion lens);
     // The input, still open, for the next station after a config reload.
-    StationInput release() { return std::move(input_); }
+    // `currentUnshown`: the current frame was read ahead and never shown;
+    // the next station shows it first.
+    StationInput release(bool currentUnshown);
 
 private:
     bool grab();
+    bool accept(std::optional<Frame> f);
 
     StationInput input_;
     cv::Mat frame_;
+    std::optional<Frame> raw_;  // the current frame as the input gave it, for release()
     std::optional<LensUndistortion> lens_;
     bool firstPending_ = false;
     bool newFrame_ = false;

@@ -31,6 +31,21 @@ private:
     std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_ = start_;
 };
 
+// Waits for a future on the way out of a scope, exceptions included.
+template <class Future>
+class JoinOnExit {
+public:
+    explicit JoinOnExit(Future& future) : future_(future) {}
+    JoinOnExit(const JoinOnExit&) = delete;
+    JoinOnExit& operator=(const JoinOnExit&) = delete;
+    ~JoinOnExit() {
+        if (future_.valid()) future_.wait();
+    }
+
+private:
+    Future& future_;
+};
+
 } // namespace
 
 void Station::preflight(const StationConfig& cfg) {
@@ -86,20 +101,47 @@ Station::Station(const StationConfig& cfg, StationInput input)
 
 Station::~Station() { finish(); }
 
+Station::CapturedFrame Station::captureAndMatte() {
+    CapturedFrame f;
+    StageClock clock;
+    if (!capture_.next()) return f;
+    f.ok = true;
+    f.image = capture_.image();
+    f.newFrame = capture_.newFrame();
+    f.seconds = capture_.seconds();
+    f.frameSeconds = capture_.frameSeconds();
+    f.captureMs = clock.lap();
+    matte_.run(f.image, f.newFrame);
+    f.person = matte_.person();
+    f.matteMs = clock.lap();
+    return f;
+}
+
 bool Station::frame() {
     StageClock clock;
-    if (!capture_.next()) return false;
-    stats_.newVideoFrame = capture_.newFrame();
-    stats_.captureMs = clock.lap();
-    matte_.run(capture_.image(), capture_.newFrame());
-    stats_.matteMs = clock.lap();
-    personDepths_.run(matte_.person(), capture_.newFrame());
+    // The first frame (and any after the input ended) is captured here;
+    // every other was captured while the previous frame rendered. get()
+    // rethrows what the front threw (a damaged file), at the frame it
+    // belongs to.
+    CapturedFrame now = ahead_.valid() ? ahead_.get() : captureAndMatte();
+    if (!now.ok) return false;
+    shown_ = std::move(now);
+    // The front writes a new image and the other person layer
+    // (MatteStage), so this frame's stay as they are while it runs.
+    ahead_ = std::async(std::launch::async, [this] { return captureAndMatte(); });
+    // Whatever a stage below throws, the front is done before frame() ends.
+    const JoinOnExit join(ahead_);
+    stats_.newVideoFrame = shown_.newFrame;
+    stats_.captureMs = shown_.captureMs;
+    stats_.matteMs = shown_.matteMs;
+    clock.lap();
+    personDepths_.run(shown_.person, shown_.newFrame);
     stats_.people = static_cast<std::size_t>(personDepths_.depths().people);
     stats_.trackMs = clock.lap();
 
-    const double seconds = capture_.seconds();
+    const double seconds = shown_.seconds;
     moveObjects(world_, seconds);
-    animateObjects(world_, capture_.frameSeconds());
+    animateObjects(world_, shown_.frameSeconds);
     world_.scene.update();
     stats_.updateMs = clock.lap();
 
@@ -115,7 +157,7 @@ bool Station::frame() {
 
     const CompositorConfig& comp = cfg_.compositing.compositor;
     gpuTimes_->time(kGpuBackdrop, [&] {
-        compositor_->begin(capture_.image(), {.backdropVideo = comp.backdropVideo, .backdropColor = comp.backdropColor});
+        compositor_->begin(shown_.image, {.backdropVideo = comp.backdropVideo, .backdropColor = comp.backdropColor});
     });
     if (shadows_)
         gpuTimes_->time(kGpuShadow, [&] {
@@ -132,14 +174,15 @@ bool Station::frame() {
     const PersonDepths& people = personDepths_.depths();
     gpuTimes_->time(kGpuHoldout,
                     [&] { holdout_.cut(world_, drawList_, view_, people.farthest(), *renderer_, *compositor_, stats_); });
-    gpuTimes_->time(kGpuPerson, [&] { compositor_->person(matte_.person(), people, view_.projection); });
+    gpuTimes_->time(kGpuPerson, [&] { compositor_->person(shown_.person, people, view_.projection); });
     gpuTimes_->endFrame();
     stats_.personTiles = compositor_->personTiles();
     ++stats_.frame;
     clock.lap();
 
-    outputs_.write(compositor_->output(), matte_.person());
+    outputs_.write(compositor_->output(), shown_.person);
     stats_.outputMs = clock.lap();
+    ahead_.wait();
     stats_.totalMs = clock.total();
     return true;
 }
@@ -177,7 +220,10 @@ void Station::finish() { outputs_.finish(); }
 
 StationInput Station::releaseInput() {
     finish();
-    return capture_.release();
+    // The frame read ahead was never shown: the next station starts with it.
+    bool readAhead = false;
+    if (ahead_.valid()) readAhead = ahead_.get().ok;
+    return capture_.release(readAhead);
 }
 
 } // namespace arcomp

@@ -19,8 +19,19 @@
 // colour texture (colorTexture(), rows bottom-up as GL keeps them) in an FBO
 // (framebuffer()); a windowed driver draws it with a textured quad or blits
 // the FBO to the default framebuffer to present it.
-// Replay pulls frames in order with no thread and no drops, so the same
-// input gives bit-identical output images on the same machine.
+// Replay pulls frames in order with no drops, so the same input gives
+// bit-identical output images on the same machine.
+//
+// Pipelined: the CPU front of frame N+1 (capture with its decode, then the
+// matte) runs on a thread of its own while frame N's GL stages run here,
+// and frame() returns once both are done, so no thread runs between calls.
+// Each frame is still composited with its own video image and its own
+// matte, in order, so replay stays deterministic; the last frame of a file
+// is composited as before. The cost is one frame of latency: a live frame
+// is taken from the camera one frame() earlier than it is shown (one frame
+// period, 33 ms at 30 fps). In stats(), captureMs and matteMs are that
+// thread's times (during the previous frame); totalMs is this thread's wall
+// time, the wait for the front included, so 1000 / totalMs is the rate.
 
 #include "graph/core/DrawList.hpp"
 #include "graph/core/View.hpp"
@@ -41,6 +52,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <future>
 #include <memory>
 #include <optional>
 #include <string>
@@ -103,7 +115,7 @@ public:
     // keeps the holdout only as depth.
     Image readHoldout();
     // The last matte output (premultiplied BGRA, video size).
-    const cv::Mat& personLayer() const { return matte_.person(); }
+    const cv::Mat& personLayer() const { return shown_.person; }
     // Where the last frame's people stood (all on the person plane without a calibrated camera).
     const PersonDepths& personDepths() const { return personDepths_.depths(); }
     const std::vector<StandingPerson>& standingPeople() const { return personDepths_.standing(); }
@@ -124,6 +136,18 @@ public:
     const std::string& lastOutputError() const { return outputs_.lastError(); }
 
 private:
+    // One frame's CPU front: its video image and person layer, and the
+    // times the stage clock and the movers run on for it.
+    struct CapturedFrame {
+        bool ok = false;  // false: a replay input has ended
+        cv::Mat image;    // BGR, video size; never written after capture
+        cv::Mat person;   // premultiplied BGRA, video size
+        bool newFrame = false;
+        double seconds = 0, frameSeconds = 0;
+        double captureMs = 0, matteMs = 0;
+    };
+    CapturedFrame captureAndMatte();
+
     glm::vec3 gazeAt(double seconds);
     void collectGpuTimes();
 
@@ -148,6 +172,10 @@ private:
     std::unique_ptr<GpuStageTimes> gpuTimes_;
     std::vector<std::string> warnings_;
     FrameStats stats_;
+    CapturedFrame shown_;  // the frame last composited
+    // The next frame's front, started during this one and done when frame()
+    // returns. Last, so that it is joined before the stages it uses go.
+    std::future<CapturedFrame> ahead_;
 };
 
 } // namespace arcomp

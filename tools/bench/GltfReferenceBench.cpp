@@ -31,12 +31,12 @@
 #include "tools/arcomp/Command.hpp"
 #include "tools/bench/BenchJson.hpp"
 #include "tools/bench/GltfFeatureModels.hpp"
+#include "tools/bench/ShellCommand.hpp"
 #include "tools/bench/Ssim.hpp"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -73,36 +73,6 @@ struct Job {
     std::optional<float> time;
     std::string id;  // file stem: the model's name, "-t<seconds>" when timed
 };
-
-std::string shellQuote(const std::string& text) {
-    std::string out = "'";
-    for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
-
-struct Ran {
-    int status = -1;
-    std::string output;  // stdout and stderr together
-};
-
-Ran runCommand(const std::string& command) {
-    Ran ran;
-    std::FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    if (!pipe) throw std::runtime_error("cannot run " + command);
-    char buffer[4096];
-    while (std::fgets(buffer, sizeof buffer, pipe)) ran.output += buffer;
-    const int status = pclose(pipe);
-    ran.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return ran;
-}
-
-bool onPath(const std::string& program) {
-    const char* path = std::getenv("PATH");
-    std::istringstream dirs(path ? path : "");
-    for (std::string dir; std::getline(dirs, dir, ':');)
-        if (!dir.empty() && access((fs::path(dir) / program).c_str(), X_OK) == 0) return true;
-    return false;
-}
 
 // Why the three.js side cannot run here, or empty when it can.
 std::string missingReference(const Options& o) {
@@ -267,7 +237,7 @@ int run(const Options& o) {
     const fs::path threeDir = out / "three", jobsFile = out / "three-jobs.json";
     std::ofstream(jobsFile) << threeJobs(jobs, models, threeDir, size, o) << "\n";
     std::cerr << "gltf-reference: three.js renders " << jobs.size() << " images\n";
-    const Ran three = runCommand("node " + shellQuote((fs::path(o.referenceDir) / "render.mjs").string()) + " " +
+    const ShellResult three = runShellCommand("node " + shellQuote((fs::path(o.referenceDir) / "render.mjs").string()) + " " +
                                  shellQuote(jobsFile.string()));
     if (three.status != 0) throw std::runtime_error("three.js reference failed:\n" + three.output);
     std::string threeRevision, webgl;
@@ -304,7 +274,7 @@ int run(const Options& o) {
             fs::create_directories(png.parent_path());
             const fs::path environment = m.environment.empty() ? fs::path() : fs::absolute(environmentFile(m.environment, models));
             std::cerr << "gltf-reference: arcomp " << api << " renders " << job.id << "\n";
-            const Ran ran = runCommand(shellQuote(self) + " " +
+            const ShellResult ran = runShellCommand(shellQuote(self) + " " +
                                        arcompRenderArgs(job, fs::absolute(models / (m.name + ".gltf")), environment, api,
                                                         size, png));
             if (ran.status != 0) {
