@@ -3,6 +3,7 @@
 // exit codes.
 
 #include "graph/core/BadInput.hpp"
+#include "runtime/ResidentHeap.hpp"
 #include "tools/arcomp/Command.hpp"
 
 #include <CLI/CLI.hpp>
@@ -55,6 +56,8 @@ int main(int argc, char** argv) {
     }
     spdlog::set_level(spdlog::level::from_str(logLevel));
     spdlog::set_pattern("[%H:%M:%S.%e] [%l] %v");
+    if (!keepFreedMemoryResident())
+        spdlog::info("the C library keeps its own heap policy: frames may page-fault on memory freed by the last one");
 
     for (auto& [sub, action] : actions) {
         if (!sub->parsed()) continue;
