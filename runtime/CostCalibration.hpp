@@ -44,8 +44,9 @@ CostModel calibrateCosts(const Scene& scene, std::span<const NodeId> levelMeshes
 // Sharpens a table with whole frames of the station's own scene, so that
 // objects hiding one another, overdraw and the real mix of meshes are in
 // the fit: each of `frames` samples takes one of `lists` (a select pass's
-// output, drawn from views[i]), puts every item at a random level and
-// shading, and times it; then A per shading and B per level (a pair's A is
+// output, drawn from views[i]), draws a random mix of levels and of
+// shadings for the frame, puts each item at a setting drawn from that mix,
+// and times it; then A per shading and B per level (a pair's A is
 // its shading's, its B its level's) are fitted to all the frames at once by
 // least squares, starting from `prior` averaged over the other attribute.
 // The overhead is kept from `prior`.

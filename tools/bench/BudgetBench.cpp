@@ -44,7 +44,9 @@
 // platform's own noise as repeat_jitter_p95_pct: one view at full detail,
 // drawn 60 times. Other drivers ignore LP_NUM_THREADS.
 //
-// Writes to --out: budget_frames.csv (per frame), budget_frame_time.png
+// Writes to --out: budget_frames.csv (per frame), budget_items.csv (per
+// drawn item: its setting, pixels and calibrated cost, to study the model's
+// error offline), budget_frame_time.png
 // (unmanaged, managed, target), budget_prediction.png (managed predicted vs
 // measured) and calibration.yaml.
 
@@ -114,7 +116,8 @@ void writeFrameStats(BenchJson& j, const std::vector<double>& ms) {
 
 // Flies the path once; with a budget, each frame goes through it.
 Series fly(FlightScene& flight, Renderer& renderer, FrameTimer& timer, int frames, glm::ivec2 size,
-           const CostModel& table, FrameBudget* budget) {
+           const CostModel& table, FrameBudget* budget, std::ostream& itemsCsv) {
+    const char* run = budget ? "managed" : "unmanaged";
     Series s;
     DrawList list;
     const LodAlternatives alternatives(flight.world.scene);
@@ -138,6 +141,11 @@ Series fly(FlightScene& flight, Renderer& renderer, FrameTimer& timer, int frame
             quality = st.quality;
             reduced = st.itemsReduced;
             s.gain.push_back(budget->model().gain());
+        }
+        for (const DrawItem& item : list.items) {
+            const float px = onScreenPixels(item, flight.world.scene, view);
+            itemsCsv << run << ',' << f << ',' << alternatives.object(item.node) << ',' << int(item.level) << ','
+                     << int(item.shading) << ',' << px << ',' << table.itemMs(item.level, item.shading, px) << '\n';
         }
         timer.begin();
         renderer.draw(flight.world.scene, list, view, {.clearColor = kSky});
@@ -236,7 +244,9 @@ int run(const Options& o) {
     std::cerr << "unmanaged run, " << o.frames << " frames\n";
     CostModel tableOnly = table;
     tableOnly.enableRefit(false);
-    const Series unmanaged = fly(flight, renderer, timer, o.frames, size, tableOnly, nullptr);
+    std::ofstream itemsCsv(out / "budget_items.csv");
+    itemsCsv << "run,frame,object,level,shading,pixels,table_ms\n";
+    const Series unmanaged = fly(flight, renderer, timer, o.frames, size, tableOnly, nullptr, itemsCsv);
     // The table's error on this machine now: the median of measured over
     // predicted items time in the unmanaged run.
     std::vector<double> tableGain;
@@ -254,7 +264,8 @@ int run(const Options& o) {
     BudgetSettings settings = o.controller;
     settings.targetMs = targetMs;
     FrameBudget budget(table, settings);
-    const Series managed = fly(flight, renderer, timer, o.frames, size, tableOnly, &budget);
+    const Series managed = fly(flight, renderer, timer, o.frames, size, tableOnly, &budget, itemsCsv);
+    if (!itemsCsv) throw std::runtime_error((out / "budget_items.csv").string() + ": write failed");
 
     // Managed-run figures.
     // absDev: what a viewer sees. predictedDev: where the controller put the
