@@ -41,10 +41,10 @@
 // leaves the driver's choice. Since the station keeps the memory a frame
 // frees (runtime/ResidentHeap.hpp), frames here take a quarter of the time
 // they did (targets near 37 ms, not 140), so the same jitter in ms is a
-// larger share of the target and the floor is nearer it again (0.65-0.9).
-// The JSON reports the
-// platform's own noise as repeat_jitter_p95_pct: one view at full detail,
-// drawn 60 times. Other drivers ignore LP_NUM_THREADS.
+// larger share of the target, and the floor is often nearer it again
+// (0.5-0.9 of it in fourteen runs). The JSON reports the platform's own
+// noise as repeat_jitter_p95_pct: one view at full detail, drawn 60 times.
+// Other drivers ignore LP_NUM_THREADS.
 //
 // Writes to --out: budget_frames.csv (per frame), budget_items.csv (per
 // drawn item: its setting, pixels and calibrated cost, to study the model's
