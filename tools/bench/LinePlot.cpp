@@ -78,10 +78,19 @@ void LinePlot::writePng(const std::filesystem::path& file, int width, int height
     cv::putText(image, xLabel_, {area.x + area.width / 2, height - 15}, cv::FONT_HERSHEY_SIMPLEX, 0.5, kInk);
     cv::putText(image, yLabel_, {8, area.y - 8}, cv::FONT_HERSHEY_SIMPLEX, 0.5, kInk);
 
+    // The legend's right edge sits inside the plot whatever its names' length.
+    int nameWidth = 0;
+    auto widen = [&](const std::string& name) {
+        int baseline = 0;
+        nameWidth = std::max(nameWidth, cv::getTextSize(name, cv::FONT_HERSHEY_SIMPLEX, 0.45, 1, &baseline).width);
+    };
+    for (const Level& l : levels_) widen(l.name);
+    for (const Series& s : series_) widen(s.name);
+    const int legendX = area.x + area.width - nameWidth - 46;
     int legendY = area.y + 18;
     auto legend = [&](const std::string& name, const cv::Scalar& colour) {
-        cv::line(image, {area.x + area.width - 180, legendY - 4}, {area.x + area.width - 150, legendY - 4}, colour, 2);
-        cv::putText(image, name, {area.x + area.width - 142, legendY}, cv::FONT_HERSHEY_SIMPLEX, 0.45, kInk);
+        cv::line(image, {legendX, legendY - 4}, {legendX + 30, legendY - 4}, colour, 2);
+        cv::putText(image, name, {legendX + 38, legendY}, cv::FONT_HERSHEY_SIMPLEX, 0.45, kInk);
         legendY += 18;
     };
     for (const Level& l : levels_) {
