@@ -29,7 +29,6 @@ TEST(ResidentHeap, AFreedFrameBufferStaysInTheProcess) {
     }
     const struct mallinfo2 after = mallinfo2();
     EXPECT_GE(after.fordblks, kBlock) << "the heap gave the freed block back to the kernel";
-    EXPECT_GE(after.arena, before.arena + kBlock) << "the heap shrank";
 }
 #endif
 
