@@ -8,7 +8,7 @@ namespace arcomp {
 
 bool keepFreedMemoryResident() {
 #if defined(__GLIBC__)
-    // Blocks up to glibc's largest mmap threshold (32 MiB on 64-bit: two
+    // Blocks up to glibc's largest mmap threshold (32 MiB on 64-bit: four
     // 1080p RGBA frames) come from the heap, where freeing them keeps their
     // pages; setting it also stops glibc from moving it on its own. The top
     // pad makes the heap grow in steps of 16 MiB, not one page run at a time.
