@@ -41,7 +41,7 @@ struct Frustum {
     }
 
     // classify() for `count` (at most kMaxRun) spheres stored as separate
-    // arrays of centre coordinates and radii, four at a time with the same
+    // arrays of centre coordinates and radii, eight at a time with the same
     // arithmetic, so with the same answers.
     RunContainment classifyRun(const float* x, const float* y, const float* z, const float* radius,
                                std::uint32_t count) const;

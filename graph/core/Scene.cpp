@@ -1,4 +1,5 @@
 #include "graph/core/Scene.hpp"
+#include "graph/core/BadInput.hpp"
 #include "graph/core/Check.hpp"
 
 #include <cstdlib>
@@ -155,22 +156,22 @@ void Scene::rebuildSiblingLayout() {
     layout_.centerY.assign(slots, 0.0f);
     layout_.centerZ.assign(slots, 0.0f);
     layout_.radius.assign(slots, -1.0f);
-    layout_.kind.assign(slots, NodeKind::Group);
-    layout_.payload.assign(slots, 0);
-    layout_.node.assign(slots, kNoNode);
-    layout_.firstChild.assign(slots, 0);
-    layout_.childEnd.assign(slots, 0);
+    layout_.slots.assign(slots, {{glm::vec3(0.0f), -1.0f}, kNoNode, 0, 0, 0, NodeKind::Group});
     layout_.slotOf.assign(kind_.size(), ~std::uint32_t{0});  // nodes outside the root's tree have none
     layout_.slotOf[root()] = 0;
     std::uint32_t next = 1;
     for (const NodeId n : order_) {
-        const std::uint32_t slot = layout_.slotOf[n];
-        layout_.kind[slot] = kind_[n];
-        layout_.payload[slot] = payload_[n];
-        layout_.node[slot] = n;
-        layout_.firstChild[slot] = next;
+        SiblingLayout::Slot& slot = layout_.slots[layout_.slotOf[n]];
+        slot.kind = kind_[n];
+        slot.payload = payload_[n];
+        slot.node = n;
+        slot.firstChild = next;
         for (NodeId c = firstChild_[n]; c != kNoNode; c = nextSibling_[c]) layout_.slotOf[c] = next++;
-        layout_.childEnd[slot] = next;
+        if (next - slot.firstChild > SiblingLayout::kMaxChildren)
+            throw BadInput("scene", "node " + std::to_string(n),
+                           std::to_string(next - slot.firstChild) + " children; the select pass takes at most " +
+                               std::to_string(SiblingLayout::kMaxChildren) + " under one node: group them");
+        slot.childCount = next - slot.firstChild;
     }
 }
 

@@ -73,6 +73,8 @@ public:
     const std::string& name(NodeId n) const { return name_[n]; }
     std::uint32_t payload(NodeId n) const { return payload_[n]; }
     const MeshPart& meshPart(NodeId n) const { return meshParts_[payload_[n]]; }
+    // A mesh node's part by its payload, for walks that already hold it.
+    const MeshPart& meshPartAt(std::uint32_t payload) const { return meshParts_[payload]; }
     const glm::mat4& local(NodeId n) const { return local_[n]; }
     const glm::mat4& world(NodeId n) const { return world_[n]; }
     const Sphere& worldBound(NodeId n) const { return worldBound_[n]; }

@@ -8,18 +8,19 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 
 namespace arcomp {
 
 namespace {
 
 // Runs shorter than this are tested one sphere at a time: setting up the
-// four-lane test costs more than it saves on one or two spheres.
+// eight-lane test costs more than it saves on one or two spheres.
 constexpr std::uint32_t kShortestRun = 4;
 
 // The walk goes over the scene's SiblingLayout: a node's children are one
-// run of slots, tested together; what the walk reads per object lies in
-// flat arrays that it reads front to back.
+// run of slots, tested together from flat arrays of bounds; what the walk
+// reads of a node it goes into is that node's one Slot record.
 struct SelectPass {
     World& world;
     const Scene& scene;
@@ -32,10 +33,15 @@ struct SelectPass {
     float viewportPixels;
     glm::vec3 gaze;
 
-    // View::projectedArea with this frame's pixel scale and the eye
-    // distance the caller already has.
-    float pixelsOf(float radius, float distance) const {
-        return projectedDiscArea(radius, distance, pixelScale, viewportPixels);
+    // A bound's eye distance and View::projectedArea, with this frame's
+    // pixel scale.
+    struct OnScreen {
+        float distance, pixels;
+    };
+    OnScreen onScreen(const Sphere& s) const {
+        const glm::vec3 toCenter = s.center - view.eye;
+        const float distanceSquared = glm::dot(toCenter, toCenter);
+        return {std::sqrt(distanceSquared), projectedDiscArea(s.radius, distanceSquared, pixelScale, viewportPixels)};
     }
 
     // Visits the node in `slot` and what lies below it. Once a node lies
@@ -57,7 +63,7 @@ struct SelectPass {
     // The node's children, tested as one run of spheres unless the node
     // lies inside the frustum.
     void visitChildren(std::uint32_t slot, bool inside, std::uint8_t level, float fade) {
-        const std::uint32_t first = layout.firstChild[slot], end = layout.childEnd[slot];
+        const std::uint32_t first = layout.slots[slot].firstChild, end = layout.childEnd(slot);
         if (inside || end - first < kShortestRun) {
             for (std::uint32_t child = first; child < end; ++child) visit(child, inside, level, fade);
             return;
@@ -78,21 +84,10 @@ struct SelectPass {
 
     // A node found not outside the frustum: what to draw of it, and where to go from it.
     void visitInFrustum(std::uint32_t slot, bool inside, std::uint8_t level, float fade) {
-        switch (layout.kind[slot]) {
-        case NodeKind::Mesh:
-            {
-                const NodeId node = layout.node[slot];
-                const Sphere bound = layout.bound(slot);
-                if (world.holdouts.has(node))
-                    out.holdouts.push_back({static_cast<std::uint32_t>(out.items.size()), glm::dot(bound.center - view.eye, view.forward)});
-                const float distance = glm::length(bound.center - view.eye);
-                out.items.push_back({node, scene.meshPart(node), distance, pixelsOf(bound.radius, distance), level,
-                                     settings.shading, fade});
-            }
-            break;
-        case NodeKind::PointCloud:
-            out.pointClouds.push_back({layout.node[slot], glm::length(layout.bound(slot).center - view.eye)});
-            break;
+        const SiblingLayout::Slot& s = layout.slots[slot];
+        switch (s.kind) {
+        case NodeKind::Mesh: addMesh(s, level, fade); break;
+        case NodeKind::PointCloud: out.pointClouds.push_back({s.node, glm::length(s.bound.center - view.eye)}); break;
         case NodeKind::Lod:
             visitLod(slot, inside, fade);
             return;  // its children are levels: only the chosen ones are visited
@@ -102,23 +97,40 @@ struct SelectPass {
                 return;  // its children are reached through the grouping tree
             }
             break;
-        case NodeKind::SilhouetteRegion:
-            {
-                const NodeId node = layout.node[slot];
-                const Sphere bound = layout.bound(slot);
-                ARCOMP_CHECK(layout.payload[slot] < world.silhouettes.nodes.size(), "a silhouette node has its entry in world.silhouettes");
-                const SilhouetteNode& s = world.silhouettes.nodes[layout.payload[slot]];
-                const glm::vec3 localEye = glm::vec3(glm::inverse(scene.world(node)) * glm::vec4(view.eye, 1.0f));
-                const SilhouetteRange r = s.rangeFor(localEye);
-                const float distance = glm::length(bound.center - view.eye);
-                out.items.push_back({node, s.part, distance, pixelsOf(bound.radius, distance), level, settings.shading,
-                                     fade, r.firstIndex, r.indexCount});
-            }
-            break;
-        default:
-            break;
+        case NodeKind::SilhouetteRegion: addSilhouetteRegion(s, level, fade); break;
+        default: break;
         }
-        visitChildren(slot, inside, level, fade);
+        // One child (a transform over an object): a jump, not a loop.
+        if (s.childCount == 1) return visit(s.firstChild, inside, level, fade);
+        if (s.childCount != 0) visitChildren(slot, inside, level, fade);
+    }
+
+    void addMesh(const SiblingLayout::Slot& s, std::uint8_t level, float fade) {
+        if (world.holdouts.has(s.node))
+            out.holdouts.push_back({static_cast<std::uint32_t>(out.items.size()), glm::dot(s.bound.center - view.eye, view.forward)});
+        // Filled where it lies: a copy built beside it first stalls on
+        // forwarding its small stores to the copy's wide loads.
+        DrawItem& item = out.items.emplace_back();
+        item.node = s.node;
+        item.part = scene.meshPartAt(s.payload);
+        const OnScreen seen = onScreen(s.bound);
+        item.viewDistance = seen.distance;
+        item.screenArea = seen.pixels;
+        item.level = level;
+        item.shading = settings.shading;
+        item.fade = fade;
+    }
+
+    // Rare next to meshes, and kept out of the walk's code so that its
+    // common path stays short.
+    [[gnu::noinline]] void addSilhouetteRegion(const SiblingLayout::Slot& s, std::uint8_t level, float fade) {
+        ARCOMP_CHECK(s.payload < world.silhouettes.nodes.size(), "a silhouette node has its entry in world.silhouettes");
+        const SilhouetteNode& silhouette = world.silhouettes.nodes[s.payload];
+        const glm::vec3 localEye = glm::vec3(glm::inverse(scene.world(s.node)) * glm::vec4(view.eye, 1.0f));
+        const SilhouetteRange r = silhouette.rangeFor(localEye);
+        const OnScreen seen = onScreen(s.bound);
+        out.items.push_back({s.node, silhouette.part, seen.distance, seen.pixels, level, settings.shading, fade,
+                             r.firstIndex, r.indexCount});
     }
 
     void visitLod(std::uint32_t slot, bool inside, float fade) {
@@ -127,17 +139,18 @@ struct SelectPass {
             return;
         }
         LodTable& lods = world.lods;
-        const std::uint32_t i = layout.payload[slot];
+        const SiblingLayout::Slot& s = layout.slots[slot];
+        const std::uint32_t i = s.payload;
         ARCOMP_CHECK(i < lods.size(), "an LOD node has its entry in world.lods");
         const LodNode& n = lods.node(i);
-        const Sphere bound = layout.bound(slot);
+        const Sphere& bound = s.bound;
         LodInputs in;
         in.distance = glm::length(bound.center - view.eye);
         if (n.policy == LodPolicy::ScreenSize || n.policy == LodPolicy::ScreenSizeTimesAcuity)
             in.pixels = in.distance > bound.radius ? 2.0f * bound.radius / in.distance * pixelScale
                                                    : static_cast<float>(view.viewport.y);
         if (n.policy == LodPolicy::GazeAcuity || n.policy == LodPolicy::ScreenSizeTimesAcuity)
-            in.acuity = lods.acuity(i, scene.world(layout.node[slot]), view.eye, gaze, settings.timeSeconds);
+            in.acuity = lods.acuity(i, scene.world(s.node), view.eye, gaze, settings.timeSeconds);
         const LodChoice c = lods.choose(i, in, settings.timeSeconds);
         visitLevel(slot, c.level, inside, fade * c.fade);
         if (c.fadingLevel != kNoLevel) visitLevel(slot, c.fadingLevel, inside, fade * (1.0f - c.fade));
@@ -147,10 +160,10 @@ struct SelectPass {
     // in view whose Ω at its eye distance is below Ωt is drawn as its proxy;
     // otherwise its two children are tried; an object is visited as a
     // subtree, so its own LOD node picks its level.
-    void visitGrouping(std::uint32_t slot, bool inside, std::uint8_t level, float fade) {
-        const NodeId node = layout.node[slot];
-        ARCOMP_CHECK(layout.payload[slot] < world.grouping.nodes.size(), "a grouping node has its entry in world.grouping");
-        GroupingNode& g = world.grouping.nodes[layout.payload[slot]];
+    [[gnu::noinline]] void visitGrouping(std::uint32_t slot, bool inside, std::uint8_t level, float fade) {
+        const NodeId node = layout.slots[slot].node;
+        ARCOMP_CHECK(layout.slots[slot].payload < world.grouping.nodes.size(), "a grouping node has its entry in world.grouping");
+        GroupingNode& g = world.grouping.nodes[layout.slots[slot].payload];
         const GroupingTree& tree = g.tree;
         if (tree.objectCount() != g.objects.size()) return;  // not built: draws nothing rather than guess
         refreshObjectSlots(slot, g);
@@ -177,13 +190,13 @@ struct SelectPass {
                 }
                 in = c == Containment::Inside;
             }
-            const float leye = glm::length(s.center - view.eye);
-            if (omegaAt(tree.mergeOmega0(t), leye, params) >= g.omegaT) {
+            const OnScreen seen = onScreen(s);
+            if (omegaAt(tree.mergeOmega0(t), seen.distance, params) >= g.omegaT) {
                 stack.push_back({tree.right(t), in});
                 stack.push_back({tree.left(t), in});
                 continue;
             }
-            DrawItem item{node, g.boxPart, leye, pixelsOf(s.radius, leye), level, settings.shading, fade};
+            DrawItem item{node, g.boxPart, seen.distance, seen.pixels, level, settings.shading, fade};
             if (g.proxy == GroupingProxy::Impostor && g.impostorFits(t)) {
                 item.part = {g.quadGeometry, g.impostorMaterial[t]};
                 g.proxyModel[t] = billboardModel(s, view.eye);
@@ -201,18 +214,18 @@ struct SelectPass {
     void refreshObjectSlots(std::uint32_t slot, GroupingNode& g) {
         bool valid = g.objectSlot.size() == g.objects.size();
         for (std::size_t i = 0; valid && i < g.objects.size(); i += std::max<std::size_t>(1, g.objects.size() / 8))
-            valid = g.objectSlot[i] < layout.size() && layout.node[g.objectSlot[i]] == g.objects[i];
+            valid = g.objectSlot[i] < layout.size() && layout.slots[g.objectSlot[i]].node == g.objects[i];
         if (valid) return;
         g.objectSlot.clear();
-        for (std::uint32_t child = layout.firstChild[slot]; child < layout.childEnd[slot]; ++child) g.objectSlot.push_back(child);
+        for (std::uint32_t child = layout.slots[slot].firstChild; child < layout.childEnd(slot); ++child) g.objectSlot.push_back(child);
         for (std::size_t i = 0; i < g.objects.size(); ++i)
-            ARCOMP_CHECK(i < g.objectSlot.size() && layout.node[g.objectSlot[i]] == g.objects[i], "a grouping node's children do not change after buildGrouping");
+            ARCOMP_CHECK(i < g.objectSlot.size() && layout.slots[g.objectSlot[i]].node == g.objects[i], "a grouping node's children do not change after buildGrouping");
     }
 
     // Visits the LOD node's child number `level`, or its last child when it
     // has fewer.
     void visitLevel(std::uint32_t lodSlot, std::uint8_t level, bool inside, float fade) {
-        const std::uint32_t first = layout.firstChild[lodSlot], end = layout.childEnd[lodSlot];
+        const std::uint32_t first = layout.slots[lodSlot].firstChild, end = layout.childEnd(lodSlot);
         if (first == end) return;
         const auto shown = static_cast<std::uint8_t>(std::min<std::uint32_t>(level, end - first - 1));
         visit(first + shown, inside, shown, fade);

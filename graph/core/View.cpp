@@ -14,7 +14,8 @@ float View::pixelScale() const {
 
 float View::projectedArea(const Sphere& s) const {
     if (s.empty()) return 0.0f;
-    return projectedDiscArea(s.radius, glm::length(s.center - eye), pixelScale(),
+    const glm::vec3 toCenter = s.center - eye;
+    return projectedDiscArea(s.radius, glm::dot(toCenter, toCenter), pixelScale(),
                              static_cast<float>(viewport.x) * static_cast<float>(viewport.y));
 }
 

@@ -90,14 +90,17 @@ void expectLayoutMatchesScene(const Scene& scene) {
     for (const NodeId n : scene.order()) {
         const std::uint32_t slot = layout.slotOf[n];
         ASSERT_LT(slot, layout.size());
-        EXPECT_EQ(layout.node[slot], n);
-        EXPECT_EQ(layout.kind[slot], scene.kind(n));
-        EXPECT_EQ(layout.payload[slot], scene.payload(n));
+        EXPECT_EQ(layout.slots[slot].node, n);
+        EXPECT_EQ(layout.slots[slot].kind, scene.kind(n));
+        EXPECT_EQ(layout.slots[slot].payload, scene.payload(n));
         const Sphere a = layout.bound(slot), b = scene.worldBound(n);
         EXPECT_EQ(a.center, b.center) << "node " << n;
         EXPECT_EQ(a.radius, b.radius) << "node " << n;
+        // The copy that runs of siblings are culled from.
+        EXPECT_EQ(glm::vec3(layout.centerX[slot], layout.centerY[slot], layout.centerZ[slot]), b.center) << "node " << n;
+        EXPECT_EQ(layout.radius[slot], b.radius) << "node " << n;
         std::vector<NodeId> children;
-        for (std::uint32_t c = layout.firstChild[slot]; c < layout.childEnd[slot]; ++c) children.push_back(layout.node[c]);
+        for (std::uint32_t c = layout.slots[slot].firstChild; c < layout.childEnd(slot); ++c) children.push_back(layout.slots[c].node);
         EXPECT_EQ(children, scene.children(n)) << "node " << n;
     }
 }
@@ -201,10 +204,10 @@ TEST(SiblingLayout, givesEachNodesChildrenOneRunOfSlots) {
     scene.update();
     const SiblingLayout& layout = scene.siblingLayout();
     EXPECT_EQ(layout.slotOf[a2], layout.slotOf[a1] + 1);
-    EXPECT_EQ(layout.firstChild[layout.slotOf[a]], layout.slotOf[a1]);
-    EXPECT_EQ(layout.childEnd[layout.slotOf[a]], layout.slotOf[a2] + 1);
-    EXPECT_EQ(layout.childEnd[layout.slotOf[b]] - layout.firstChild[layout.slotOf[b]], 1u);
-    EXPECT_EQ(layout.node[layout.firstChild[layout.slotOf[b]]], b1);
+    EXPECT_EQ(layout.slots[layout.slotOf[a]].firstChild, layout.slotOf[a1]);
+    EXPECT_EQ(layout.childEnd(layout.slotOf[a]), layout.slotOf[a2] + 1);
+    EXPECT_EQ(layout.slots[layout.slotOf[b]].childCount, 1u);
+    EXPECT_EQ(layout.slots[layout.slots[layout.slotOf[b]].firstChild].node, b1);
 }
 
 TEST(SelectPass, drawsWhatTheStraightforwardWalkDrawsOnRandomScenes) {
