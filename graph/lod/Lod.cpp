@@ -7,49 +7,10 @@
 
 namespace arcomp {
 
-namespace {
-
-// A node unseen for longer than this starts afresh: no band around its old
-// level, no fade from it, no angular speed over the gap.
-constexpr double kStaleSeconds = 0.25;
-
-bool ascending(LodPolicy p) { return p == LodPolicy::Distance; }
-
-} // namespace
-
 void LodNode::setThresholds(std::initializer_list<float> t) {
     ARCOMP_CHECK(t.size() + 1 <= kMaxLodLevels, "an LOD node has at most kMaxLodLevels levels");
     std::copy(t.begin(), t.end(), thresholds.begin());
     levelCount = static_cast<std::uint8_t>(t.size() + 1);
-}
-
-float lodMetric(LodPolicy policy, const LodInputs& in) {
-    switch (policy) {
-    case LodPolicy::Distance: return in.distance;
-    case LodPolicy::ScreenSize: return in.pixels;
-    case LodPolicy::GazeAcuity: return in.acuity;
-    case LodPolicy::ScreenSizeTimesAcuity: return in.pixels * in.acuity;
-    }
-    return 0.0f;
-}
-
-std::uint8_t chooseLevel(const LodNode& node, float metric, std::uint8_t previous) {
-    const bool up = ascending(node.policy);
-    std::uint8_t level = 0;
-    for (std::uint8_t i = 0; i + 1 < node.levelCount; ++i) {
-        float t = node.thresholds[i];
-        if (previous != kNoLevel) {
-            // Boundary i separates levels ≤ i (finer) from > i (coarser).
-            // Shown on the fine side: coarsening needs the band crossed too.
-            const bool wasFine = previous <= i;
-            const float band = node.hysteresis * t;
-            t += (wasFine == up) ? band : -band;
-        }
-        const bool coarser = up ? metric >= t : metric < t;
-        if (!coarser) break;
-        level = static_cast<std::uint8_t>(i + 1);
-    }
-    return level;
 }
 
 std::uint32_t LodTable::add(const LodNode& node) {
@@ -70,22 +31,14 @@ void LodTable::reset() {
     std::fill(tracked_.begin(), tracked_.end(), TrackedPoint{});
 }
 
-LodChoice LodTable::choose(std::uint32_t i, const LodInputs& in, double timeSeconds) {
-    const LodNode& n = nodes_[i];
-    const bool fresh = timeSeconds - lastChosen_[i] > kStaleSeconds;
-    const std::uint8_t previous = fresh ? kNoLevel : level_[i];
-    const std::uint8_t level = chooseLevel(n, lodMetric(n.policy, in), previous);
-    lastChosen_[i] = timeSeconds;
-    level_[i] = level;
-
-    if (n.fadeSeconds <= 0.0f) return {level, kNoLevel, 1.0f};
+LodChoice LodTable::fade(std::uint32_t i, std::uint8_t previous, std::uint8_t level, bool fresh, double timeSeconds) {
     if (previous != kNoLevel && previous != level) {
         fadeFrom_[i] = previous;
         fadeStart_[i] = timeSeconds;
     }
     if (fresh) fadeFrom_[i] = kNoLevel;
     if (fadeFrom_[i] == kNoLevel) return {level, kNoLevel, 1.0f};
-    const double t = (timeSeconds - fadeStart_[i]) / n.fadeSeconds;
+    const double t = (timeSeconds - fadeStart_[i]) / nodes_[i].fadeSeconds;
     if (t >= 1.0) {
         fadeFrom_[i] = kNoLevel;
         return {level, kNoLevel, 1.0f};

@@ -65,11 +65,37 @@ struct LodInputs {
 };
 
 // The value a node's policy compares against its thresholds.
-float lodMetric(LodPolicy policy, const LodInputs& in);
+inline float lodMetric(LodPolicy policy, const LodInputs& in) {
+    switch (policy) {
+    case LodPolicy::Distance: return in.distance;
+    case LodPolicy::ScreenSize: return in.pixels;
+    case LodPolicy::GazeAcuity: return in.acuity;
+    case LodPolicy::ScreenSizeTimesAcuity: return in.pixels * in.acuity;
+    }
+    return 0.0f;
+}
 
 // The level for `metric`, given the level shown last frame (kNoLevel: none).
 // Boundaries next to the previous level are pushed away from it by the band.
-std::uint8_t chooseLevel(const LodNode& node, float metric, std::uint8_t previous);
+// Inline, as choose(): the select pass calls it once per visible LOD node.
+inline std::uint8_t chooseLevel(const LodNode& node, float metric, std::uint8_t previous) {
+    const bool up = node.policy == LodPolicy::Distance;  // thresholds ascending
+    std::uint8_t level = 0;
+    for (std::uint8_t i = 0; i + 1 < node.levelCount; ++i) {
+        float t = node.thresholds[i];
+        if (previous != kNoLevel) {
+            // Boundary i separates levels ≤ i (finer) from > i (coarser).
+            // Shown on the fine side: coarsening needs the band crossed too.
+            const bool wasFine = previous <= i;
+            const float band = node.hysteresis * t;
+            t += (wasFine == up) ? band : -band;
+        }
+        const bool coarser = up ? metric >= t : metric < t;
+        if (!coarser) break;
+        level = static_cast<std::uint8_t>(i + 1);
+    }
+    return level;
+}
 
 struct LodChoice {
     std::uint8_t level = 0;
@@ -90,7 +116,16 @@ public:
     void reset();
 
     // Picks node i's level for this frame and records it.
-    LodChoice choose(std::uint32_t i, const LodInputs& in, double timeSeconds);
+    LodChoice choose(std::uint32_t i, const LodInputs& in, double timeSeconds) {
+        const LodNode& n = nodes_[i];
+        const bool fresh = timeSeconds - lastChosen_[i] > kStaleSeconds;
+        const std::uint8_t previous = fresh ? kNoLevel : level_[i];
+        const std::uint8_t level = chooseLevel(n, lodMetric(n.policy, in), previous);
+        lastChosen_[i] = timeSeconds;
+        level_[i] = level;
+        if (n.fadeSeconds <= 0.0f) return {level, kNoLevel, 1.0f};
+        return fade(i, previous, level, fresh, timeSeconds);
+    }
 
     // Inputs for the gaze policies: the acuity of node i whose LOD node has
     // world matrix `world`, seen from `eye` with `gaze` (unit, world), and
@@ -99,6 +134,13 @@ public:
                  double timeSeconds);
 
 private:
+    // A node unseen for longer than this starts afresh: no band around its
+    // old level, no fade from it, no angular speed over the gap.
+    static constexpr double kStaleSeconds = 0.25;
+
+    // choose() for a node with a cross-fade time.
+    LodChoice fade(std::uint32_t i, std::uint8_t previous, std::uint8_t level, bool fresh, double timeSeconds);
+
     std::vector<LodNode> nodes_;
     // Per-node state, flat: what was shown, since when, and the point tracked
     // for the angular speed.
