@@ -31,7 +31,7 @@ typedef std::int32_t Lanes8 __attribute__((vector_size(32)));
 // On x86-64 the loader picks an AVX2 build of this function where the CPU
 // has it (half the instructions per sphere) and the SSE2 one elsewhere.
 // Not FMA: a fused multiply-add would round differently from classify().
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(__SANITIZE_ADDRESS__)
+#if defined(__x86_64__) && defined(__GNUC__)  // Clang defines it too
 __attribute__((target_clones("avx2", "default")))
 #endif
 RunContainment Frustum::classifyRun(const float* x, const float* y, const float* z, const float* radius,
