@@ -16,16 +16,33 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <system_error>
 
 namespace arcomp::fuzz {
 
+// The private folder, removed when the fuzzer exits normally (its time or
+// run count used up), so that hours of campaign leave nothing in /tmp; after
+// a crash it stays, beside the crash input.
+class FuzzFolder {
+public:
+    FuzzFolder() : path_(std::filesystem::temp_directory_path() / ("arcomp-fuzz-" + std::to_string(::getpid()))) {
+        std::filesystem::create_directories(path_);
+    }
+    ~FuzzFolder() {
+        std::error_code ignored;
+        std::filesystem::remove_all(path_, ignored);
+    }
+    FuzzFolder(const FuzzFolder&) = delete;
+    FuzzFolder& operator=(const FuzzFolder&) = delete;
+    const std::filesystem::path& path() const { return path_; }
+
+private:
+    std::filesystem::path path_;
+};
+
 inline std::filesystem::path fuzzInputFile(const std::uint8_t* data, std::size_t size, const std::string& name) {
-    static const std::filesystem::path dir = [] {
-        auto d = std::filesystem::temp_directory_path() / ("arcomp-fuzz-" + std::to_string(::getpid()));
-        std::filesystem::create_directories(d);
-        return d;
-    }();
-    const auto file = dir / name;
+    static const FuzzFolder dir;
+    const auto file = dir.path() / name;
     std::ofstream out(file, std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
     out.close();
