@@ -54,3 +54,43 @@ TEST(OnScreenPixels, scalesTheSelectPassesScreenAreaByTheShare) {
     const DrawItem item{box, scene.meshPart(box), 10.0f, 5000.0f, 0, Shading::Phong};
     EXPECT_NEAR(onScreenPixels(item, scene, kView), 2500.0f, 50.0f);
 }
+
+TEST(OnScreenPixels, aBoxAheadCoversTheRectangleAroundItsNearFace) {
+    const Box cube{{-0.5f, -0.5f, -10.5f}, {0.5f, 0.5f, -9.5f}};
+    const float side = 1.0f / 9.5f * kView.pixelScale();
+    EXPECT_NEAR(boxRectanglePixels(cube, glm::mat4(1.0f), kView), side * side, 0.01f * side * side);
+}
+
+TEST(OnScreenPixels, aBoxAroundTheEyeCoversTheScreenAndOneBehindItNothing) {
+    EXPECT_FLOAT_EQ(boxRectanglePixels({{-1, -1, -1}, {1, 1, 1}}, glm::mat4(1.0f), kView), 1280.0f * 720.0f);
+    EXPECT_FLOAT_EQ(boxRectanglePixels({{-1, -1, 1}, {1, 1, 3}}, glm::mat4(1.0f), kView), 0.0f);
+    EXPECT_FLOAT_EQ(boxRectanglePixels({}, glm::mat4(1.0f), kView), 0.0f);
+}
+
+TEST(OnScreenPixels, anObjectWhoseSphereHoldsTheEyeIsChargedItsPartOfTheScreenNotAllOfIt) {
+    // A 2 x 2 x 4 box to the right of the eye, from 1 to 3 m: its sphere
+    // (radius 2.45 around x = 2) holds the eye, and its near end reaches
+    // across the whole height of the screen's right part. The part starts
+    // where its far left edge (x = 1, 2 m ahead) projects.
+    Scene scene;
+    const NodeId box = scene.addMesh(scene.root(), {scene.addGeometry(makeBox({2, 2, 4})), scene.addMaterial({})});
+    scene.setLocal(box, glm::translate(glm::mat4(1.0f), glm::vec3(2.0f, 0.0f, 0.0f)));
+    scene.update();
+    const float screen = 1280.0f * 720.0f;
+    const DrawItem item{box, scene.meshPart(box), 2.0f, screen, 0, Shading::Phong};
+    const float leftNdc = 0.5f / std::tan(glm::radians(30.0f)) / (16.0f / 9.0f);
+    const float expected = (1.0f - leftNdc) * 0.5f * 1280.0f * 720.0f;
+    EXPECT_NEAR(onScreenPixels(item, scene, kView), expected, 0.01f * expected);
+    EXPECT_LT(expected, 0.3f * screen);
+}
+
+TEST(OnScreenPixels, aSkinnedMeshKeepsItsDisc) {
+    Scene scene;
+    const NodeId box = scene.addMesh(scene.root(), {scene.addGeometry(makeBox({2, 2, 4})), scene.addMaterial({})});
+    scene.setLocal(box, glm::translate(glm::mat4(1.0f), glm::vec3(2.0f, 0.0f, 0.0f)));
+    scene.update();
+    const float screen = 1280.0f * 720.0f;
+    DrawItem item{box, scene.meshPart(box), 2.0f, screen, 0, Shading::Phong};
+    item.part.skin = 0;
+    EXPECT_FLOAT_EQ(onScreenPixels(item, scene, kView), screen);
+}
