@@ -67,30 +67,33 @@ TEST(OnScreenPixels, aBoxAroundTheEyeCoversTheScreenAndOneBehindItNothing) {
     EXPECT_FLOAT_EQ(boxRectanglePixels({}, glm::mat4(1.0f), kView), 0.0f);
 }
 
-TEST(OnScreenPixels, anObjectWhoseSphereHoldsTheEyeIsChargedItsPartOfTheScreenNotAllOfIt) {
-    // A 2 x 2 x 4 box to the right of the eye, from 1 to 3 m: its sphere
-    // (radius 2.45 around x = 2) holds the eye, and its near end reaches
-    // across the whole height of the screen's right part. The part starts
-    // where its far left edge (x = 1, 2 m ahead) projects.
+// A 2 x 2 x 4 box to the right of the eye, from 1 to 3 m: its sphere
+// (radius 2.45 around x = 2) holds the eye. The item is charged the whole
+// screen by the select pass, as such an item is.
+struct BoxBesideTheEye {
     Scene scene;
-    const NodeId box = scene.addMesh(scene.root(), {scene.addGeometry(makeBox({2, 2, 4})), scene.addMaterial({})});
-    scene.setLocal(box, glm::translate(glm::mat4(1.0f), glm::vec3(2.0f, 0.0f, 0.0f)));
-    scene.update();
-    const float screen = 1280.0f * 720.0f;
-    const DrawItem item{box, scene.meshPart(box), 2.0f, screen, 0, Shading::Phong};
+    DrawItem item;
+    BoxBesideTheEye() {
+        const NodeId box = scene.addMesh(scene.root(), {scene.addGeometry(makeBox({2, 2, 4})), scene.addMaterial({})});
+        scene.setLocal(box, glm::translate(glm::mat4(1.0f), glm::vec3(2.0f, 0.0f, 0.0f)));
+        scene.update();
+        item = {box, scene.meshPart(box), 2.0f, kScreen, 0, Shading::Phong};
+    }
+    static constexpr float kScreen = 1280.0f * 720.0f;
+};
+
+TEST(OnScreenPixels, anObjectWhoseSphereHoldsTheEyeIsChargedItsPartOfTheScreenNotAllOfIt) {
+    // Its near end reaches across the whole height of the screen's right
+    // part, which starts where its far left edge (x = 1, 2 m ahead) projects.
+    const BoxBesideTheEye b;
     const float leftNdc = 0.5f / std::tan(glm::radians(30.0f)) / (16.0f / 9.0f);
-    const float expected = (1.0f - leftNdc) * 0.5f * 1280.0f * 720.0f;
-    EXPECT_NEAR(onScreenPixels(item, scene, kView), expected, 0.01f * expected);
-    EXPECT_LT(expected, 0.3f * screen);
+    const float expected = (1.0f - leftNdc) * 0.5f * BoxBesideTheEye::kScreen;
+    EXPECT_NEAR(onScreenPixels(b.item, b.scene, kView), expected, 0.01f * expected);
+    EXPECT_LT(expected, 0.3f * BoxBesideTheEye::kScreen);
 }
 
 TEST(OnScreenPixels, aSkinnedMeshKeepsItsDisc) {
-    Scene scene;
-    const NodeId box = scene.addMesh(scene.root(), {scene.addGeometry(makeBox({2, 2, 4})), scene.addMaterial({})});
-    scene.setLocal(box, glm::translate(glm::mat4(1.0f), glm::vec3(2.0f, 0.0f, 0.0f)));
-    scene.update();
-    const float screen = 1280.0f * 720.0f;
-    DrawItem item{box, scene.meshPart(box), 2.0f, screen, 0, Shading::Phong};
-    item.part.skin = 0;
-    EXPECT_FLOAT_EQ(onScreenPixels(item, scene, kView), screen);
+    BoxBesideTheEye b;
+    b.item.part.skin = 0;
+    EXPECT_FLOAT_EQ(onScreenPixels(b.item, b.scene, kView), BoxBesideTheEye::kScreen);
 }
