@@ -21,8 +21,9 @@
 namespace arcomp::fuzz {
 
 // The private folder, removed when the fuzzer exits normally (its time or
-// run count used up), so that hours of campaign leave nothing in /tmp; after
-// a crash it stays, beside the crash input.
+// run count used up), so that hours of campaign leave nothing in /tmp. A
+// crash skips the removal; tools/fuzz/run keeps its input in
+// build-fuzz/findings/ either way.
 class FuzzFolder {
 public:
     FuzzFolder() : path_(std::filesystem::temp_directory_path() / ("arcomp-fuzz-" + std::to_string(::getpid()))) {
