@@ -2,6 +2,8 @@
 
 #include "video/VideoError.hpp"
 
+#include "tests/support/TempDir.hpp"
+
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 
@@ -12,10 +14,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A three-frame sequence in the CDnet layout under the test's temp folder.
-fs::path writeSequence(const std::string& name, bool withTemporalRoi = true, const std::string& roiText = "2 3") {
-    const fs::path dir = fs::path(::testing::TempDir()) / name;
-    fs::remove_all(dir);
+// A three-frame sequence in the CDnet layout in `dir`.
+fs::path writeSequence(const fs::path& dir, bool withTemporalRoi = true, const std::string& roiText = "2 3") {
     fs::create_directories(dir / "input");
     fs::create_directories(dir / "groundtruth");
     for (int i = 1; i <= 3; ++i) {
@@ -39,7 +39,8 @@ std::string refusal(const fs::path& dir) {
 }
 
 TEST(CdnetSequence, readsFramesLabelsAndTheScoredRange) {
-    const CdnetSequence seq = openCdnetSequence(writeSequence("cdnet-ok"));
+    const arcomp::test::TempDir tmp;
+    const CdnetSequence seq = openCdnetSequence(writeSequence(tmp.path() / "cdnet-ok"));
     EXPECT_EQ(seq.frameCount, 3);
     EXPECT_FALSE(seq.scored(1));
     EXPECT_TRUE(seq.scored(2));
@@ -50,17 +51,19 @@ TEST(CdnetSequence, readsFramesLabelsAndTheScoredRange) {
 }
 
 TEST(CdnetSequence, aScoredRangeBeyondTheFramesIsCutToThem) {
-    const CdnetSequence seq = openCdnetSequence(writeSequence("cdnet-long", true, "2 900"));
+    const arcomp::test::TempDir tmp;
+    const CdnetSequence seq = openCdnetSequence(writeSequence(tmp.path() / "cdnet-long", true, "2 900"));
     EXPECT_EQ(seq.lastScored, 3);
 }
 
 TEST(CdnetSequence, refusalsNameTheFolderAndWhatWasExpected) {
+    const arcomp::test::TempDir tmp;
     EXPECT_NE(refusal("/nonexistent/busStation").find("/nonexistent/busStation: not a folder"), std::string::npos);
-    const std::string missingRoi = refusal(writeSequence("cdnet-no-roi", false));
+    const std::string missingRoi = refusal(writeSequence(tmp.path() / "cdnet-no-roi", false));
     EXPECT_NE(missingRoi.find("temporalROI.txt: file missing"), std::string::npos) << missingRoi;
-    const std::string badRoi = refusal(writeSequence("cdnet-bad-roi", true, "300"));
+    const std::string badRoi = refusal(writeSequence(tmp.path() / "cdnet-bad-roi", true, "300"));
     EXPECT_NE(badRoi.find("temporalROI.txt: expected two frame numbers"), std::string::npos) << badRoi;
-    const fs::path noInput = writeSequence("cdnet-no-input");
+    const fs::path noInput = writeSequence(tmp.path() / "cdnet-no-input");
     fs::remove_all(noInput / "input");
     EXPECT_NE(refusal(noInput).find("input/: folder missing"), std::string::npos);
 }

@@ -6,6 +6,8 @@
 
 #include "video/VideoError.hpp"
 
+#include "tests/support/TempDir.hpp"
+
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -219,7 +221,8 @@ TEST(ConsensusMatte, someoneStandingThroughTheStartLeavesNoGhost) {
 
 TEST(ConsensusMatte, cleanPlateStartsTheModelAtOnce) {
     Place place(320, 240);
-    const std::string file = ::testing::TempDir() + "consensus-plate.png";
+    const arcomp::test::TempDir tmp;
+    const std::string file = (tmp.path() / "consensus-plate.png").string();
     ASSERT_TRUE(cv::imwrite(file, place.empty()));
     BackgroundSpec s = spec();
     s.cleanPlate = file;

@@ -1,6 +1,8 @@
 #include "video/FileSource.hpp"
 #include "video/VideoError.hpp"
 
+#include "tests/support/TempDir.hpp"
+
 #include <gtest/gtest.h>
 
 #include <opencv2/core.hpp>
@@ -19,14 +21,8 @@ const std::string kVtest = kData + "vtest.avi";
 #define REQUIRE_OPENCV_DOC()                                                          \
     if (!fs::exists(kVtest)) GTEST_SKIP() << kVtest << " absent (Debian opencv-doc)"
 
-fs::path tempDir() {
-    fs::path d = fs::temp_directory_path() / ("arcomp-video-" + std::to_string(::getpid()));
-    fs::create_directories(d);
-    return d;
-}
-
-fs::path truncatedCopy(std::uintmax_t bytes) {
-    const fs::path out = tempDir() / ("vtest-" + std::to_string(bytes) + ".avi");
+fs::path truncatedCopy(const fs::path& folder, std::uintmax_t bytes) {
+    const fs::path out = folder / ("vtest-" + std::to_string(bytes) + ".avi");
     std::ifstream in(kVtest, std::ios::binary);
     std::string buf(bytes, '\0');
     in.read(buf.data(), static_cast<std::streamsize>(bytes));
@@ -106,7 +102,8 @@ TEST(FileSource, missingFileNamesTheFile) {
 }
 
 TEST(FileSource, fileThatIsNotAVideoIsRefused) {
-    const fs::path junk = tempDir() / "not-a-video.avi";
+    const test::TempDir tmp;
+    const fs::path junk = tmp.path() / "not-a-video.avi";
     std::ofstream(junk) << "this is text, not a video container\n";
     const std::string msg = errorOf([&] { FileSource({.path = junk.string()}); });
     EXPECT_NE(msg.find(junk.string()), std::string::npos) << msg;
@@ -125,7 +122,8 @@ TEST(FileSource, unsupportedCodecIsRefused) {
             ++patched;
         }
     ASSERT_GT(patched, 0);
-    const fs::path out = tempDir() / "unknown-codec.avi";
+    const test::TempDir tmp;
+    const fs::path out = tmp.path() / "unknown-codec.avi";
     std::ofstream(out, std::ios::binary) << bytes;
     const std::string msg = errorOf([&] { FileSource({.path = out.string()}); });
     EXPECT_NE(msg.find(out.string()), std::string::npos) << msg;
@@ -134,7 +132,8 @@ TEST(FileSource, unsupportedCodecIsRefused) {
 
 TEST(FileSource, truncatedFileStopsWithFileAndFrameNamed) {
     REQUIRE_OPENCV_DOC();
-    const fs::path cut = truncatedCopy(3'000'000);
+    const test::TempDir tmp;
+    const fs::path cut = truncatedCopy(tmp.path(), 3'000'000);
     FileSource file({.path = cut.string()});
     int good = 0;
     std::string msg;
@@ -151,7 +150,8 @@ TEST(FileSource, truncatedFileStopsWithFileAndFrameNamed) {
 
 TEST(FileSource, truncatedFileWithSkipEndsWithoutError) {
     REQUIRE_OPENCV_DOC();
-    const fs::path cut = truncatedCopy(3'000'000);
+    const test::TempDir tmp;
+    const fs::path cut = truncatedCopy(tmp.path(), 3'000'000);
     FileSource file({.path = cut.string(), .onDamage = OnDamage::Skip});
     int good = 0;
     GrabResult r;
@@ -164,7 +164,8 @@ TEST(FileSource, truncatedFileWithSkipEndsWithoutError) {
 
 TEST(FileSource, damagedMiddleIsSkippedAndLaterFramesStillCome) {
     REQUIRE_OPENCV_DOC();
-    const fs::path bad = tempDir() / "vtest-damaged-middle.avi";
+    const test::TempDir tmp;
+    const fs::path bad = tmp.path() / "vtest-damaged-middle.avi";
     fs::copy_file(kVtest, bad, fs::copy_options::overwrite_existing);
     {
         std::fstream f(bad, std::ios::in | std::ios::out | std::ios::binary);
