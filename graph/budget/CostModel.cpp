@@ -61,11 +61,15 @@ double CostModel::frameMs(double itemsMs) const { return gain() * itemsMs + over
 // changed later needs no reset.
 void CostModel::observe(double itemsMs, double measuredMs) {
     if (!refit_ || !std::isfinite(measuredMs) || !std::isfinite(itemsMs) || itemsMs < kMinItemsMs) return;
-    // The frame's own gain, (measured - overhead) / items, kept within a
-    // factor kMaxSampleRatio of the current gain and within the bounds.
+    // The frame's own gain, (measured - overhead) / items, kept within the
+    // bounds and, once the fit has settled, within a factor kMaxSampleRatio
+    // of the current gain. Before that there is no steady gain for a stall
+    // to stand out from.
     const double current = gain();
-    const double sample = std::clamp((measuredMs - overheadMs) / itemsMs, std::max(kMinGain, current / kMaxSampleRatio),
-                                     std::min(kMaxGain, current * kMaxSampleRatio));
+    const bool settled = fit_.samples() >= kSettlingFrames;
+    const double sample =
+        std::clamp((measuredMs - overheadMs) / itemsMs, std::max(kMinGain, settled ? current / kMaxSampleRatio : 0.0),
+                   std::min(kMaxGain, settled ? current * kMaxSampleRatio : kMaxGain));
     const double weight = std::sqrt(itemsMs / (itemsMs + std::max(overheadMs, 0.0)));
     fit_.add(std::array{weight}, weight * sample);
 }

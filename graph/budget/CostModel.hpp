@@ -60,24 +60,27 @@ public:
     double frameMs(double itemsMs) const;
 
     // Online re-fitting: the calibrated sum that was predicted and the frame
-    // time measured for it. `forgetting` is λ per frame (0.6: the last two or
-    // three frames count). The table's error comes from the view (occlusion,
-    // overdraw, how well a bounding sphere stands for the pixels drawn) and
-    // drifts slowly along a camera path: in `bench budget` one frame's error
-    // predicts the next's with correlation 0.98, so a short memory predicts
-    // best (an average over the last dozen frames left 12% error at the 95th
-    // percentile where this leaves 8%).
+    // time measured for it. `forgetting` is λ per frame (0.25: the last
+    // frame weighs three quarters). The table's error comes from the view
+    // (occlusion, overdraw, how well a bounding sphere stands for the pixels
+    // drawn) and from the mix of levels and shadings drawn, and it drifts
+    // along a camera path: in `bench budget` one frame's error predicts the
+    // next's with correlation 0.98, so a short memory predicts best. With
+    // λ = 0.6 against 0.25, three interleaved runs each on a quiet machine,
+    // p95 |dev| from the target was 13.7-21.9% against 9.4-10.9%, and the
+    // frames over the target by 20% 1.5-4.7% against 1.3-1.8%.
     // Frames that draw (almost) nothing say nothing about the gain and are
-    // ignored. Each frame's own gain enters the fit within a factor
-    // kMaxSampleRatio of the current gain, so a stall of the machine (a
-    // frame ten times as long) moves the prediction by a bounded step that
-    // the next frames undo. Letting single stalls pass unheeded, by fitting
-    // the median of the last three or five frames' gains, was tried: the
-    // view's own changes of cost then reach the gain a frame or two late.
-    // In bench budget on a quiet machine, p95 |dev| from the target was
-    // 9.9-15.1% (mean 12.7, 8 runs) with the median of three, 15.8-27.3%
-    // (3 runs) with five, and 10.0-14.2% (mean 12.1, 6 runs) without; frames
-    // over the target by 20% were 1.0% against 0.6%.
+    // ignored. Once kSettlingFrames frames have been fitted, each frame's
+    // own gain enters the fit within a factor kMaxSampleRatio of the
+    // current gain, so a stall of the machine (a frame ten times as long)
+    // moves the prediction by a bounded step that the next frames undo.
+    // Before that the clamp only slowed the start: the managed flight needs
+    // a gain of 2-2.5 from its first frame (the table is fitted on random
+    // mixes and under-predicts the controller's coarse, unlit ones), and at
+    // 1.25× per frame its first 3-5 frames ran 25-130% over the target.
+    // Letting single stalls pass unheeded, by fitting the median of the last
+    // three or five frames' gains, was tried: the view's own changes of
+    // cost then reach the gain a frame or two late.
     void observe(double itemsMs, double measuredMs);
     void enableRefit(bool on, double forgetting = kDefaultForgetting);
     // Forgets the fit: gain 1.
@@ -86,8 +89,9 @@ public:
     // The per-frame time that does not scale with what is drawn: overheadMs.
     double offset() const { return overheadMs; }
 
-    static constexpr double kDefaultForgetting = 0.6;
+    static constexpr double kDefaultForgetting = 0.25;
     static constexpr double kMaxSampleRatio = 1.25;
+    static constexpr std::size_t kSettlingFrames = 3;
 
     double overheadMs = 0.0;
 

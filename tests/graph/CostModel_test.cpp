@@ -80,6 +80,21 @@ TEST(CostModel, oneStallMovesTheGainABoundedStepThatFadesALastingChangeComesThro
     EXPECT_NEAR(m.gain(), 1.2, 0.01);
 }
 
+TEST(CostModel, theFirstFramesSetTheGainAtOnceAndOnlyThenAreStallsClamped) {
+    // A table that under-predicts what is drawn by 2.4 from the first frame
+    // (the managed flight's coarse, unlit mix): no steady gain exists yet
+    // for the frame to be a stall against.
+    CostModel m(1);
+    m.overheadMs = 2.0;
+    m.observe(15.0, 2.4 * 15.0 + 2.0);
+    EXPECT_GT(m.gain(), 1.5);  // clamped, the step would have stopped at 1.25
+    for (std::size_t i = 1; i < CostModel::kSettlingFrames; ++i) m.observe(15.0, 2.4 * 15.0 + 2.0);
+    EXPECT_NEAR(m.gain(), 2.4, 0.1);
+    const double settled = m.gain();
+    m.observe(15.0, 170.0);
+    EXPECT_LE(m.gain(), settled * CostModel::kMaxSampleRatio);
+}
+
 TEST(CostModel, framesThatDrawNothingLeaveTheGainAlone) {
     CostModel m(1);
     m.overheadMs = 2.0;
