@@ -66,9 +66,12 @@ public:
     // drawn) and from the mix of levels and shadings drawn, and it drifts
     // along a camera path: in `bench budget` one frame's error predicts the
     // next's with correlation 0.98, so a short memory predicts best. With
-    // λ = 0.6 against 0.25, three interleaved runs each on a quiet machine,
-    // p95 |dev| from the target was 13.7-21.9% against 9.4-10.9%, and the
-    // frames over the target by 20% 1.5-4.7% against 1.3-1.8%.
+    // λ = 0.6 against 0.25, interleaved runs on this 2-core host (nothing
+    // else running), p95 |dev| from the target was 13.7-21.9% against
+    // 9.4-10.9% in one hour, 12.5-20.3% against 13.2-17.8% in a noisier
+    // one; frames over the target by 20%: 1.5-4.7% against 1.3-1.8%, then
+    // 0.5-3.0% against 1.3% each. The frame-to-frame noise of the machine,
+    // not the gain, is then what is left.
     // Frames that draw (almost) nothing say nothing about the gain and are
     // ignored. Once kSettlingFrames frames have been fitted, each frame's
     // own gain enters the fit within a factor kMaxSampleRatio of the
