@@ -19,9 +19,11 @@ namespace arcomp::gltf {
 
 namespace fs = std::filesystem;
 
-// The largest element count we accept for an accessor without a buffer view
-// (all zeros, possibly sparse): real data is bounded by its buffer's size.
-constexpr std::size_t kMaxElements = std::size_t{1} << 26;
+// The most components (64 MiB as floats) we accept for an accessor without
+// a buffer view (all zeros, possibly sparse): real data is bounded by its
+// buffer's size, these only by their count. Counted in components, not
+// elements: 2^26 VEC3 elements let a 485-byte file allocate 1.3 GB (fuzz).
+constexpr std::size_t kMaxZeroFilledComponents = std::size_t{1} << 24;
 
 inline std::string ptr(const char* array, std::size_t index, const char* field = nullptr) {
     std::string p = std::string("/") + array + "/" + std::to_string(index);
@@ -152,8 +154,11 @@ private:
             fail(ptr("accessors", index, "componentType"), "unknown component type " + std::to_string(a.componentType));
         // The schema's minimum: an empty accessor would also hand null data on.
         if (a.count == 0) fail(ptr("accessors", index, "count"), "count is 0; an accessor holds at least 1 element");
-        if (a.bufferView < 0 && a.count > kMaxElements)
-            fail(ptr("accessors", index, "count"), "count " + std::to_string(a.count) + " is larger than supported");
+        if (a.bufferView < 0 && a.count > kMaxZeroFilledComponents / componentCount(a.type))
+            fail(ptr("accessors", index, "count"),
+                 "count " + std::to_string(a.count) + " is larger than supported without a buffer view (at most " +
+                     std::to_string(kMaxZeroFilledComponents / componentCount(a.type)) + " " + typeName(a.type) +
+                     " elements)");
         return a;
     }
 

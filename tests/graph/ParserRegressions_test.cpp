@@ -34,6 +34,23 @@ TEST(ParserRegressions, gltfInputsLoadOrAreRefusedWithModelError) {
     eachLoadsOrIsRefused<ModelError>("gltf", [](const fs::path& f) { parseGltf(f); });
 }
 
+// 485 bytes naming a VEC3 accessor of 55 million elements and no buffer
+// view: refused by the components it would allocate, not let through to
+// allocate 1.3 GB of zeros.
+TEST(ParserRegressions, aBufferlessAccessorIsBoundedByWhatItWouldAllocate) {
+    const fs::path file =
+        fs::path(ARCOMP_SOURCE_DIR) / "tests/fuzz-regressions/gltf/a92d7ad28d42e72a807463424ddeae0cd6baf7e2";
+    try {
+        parseGltf(file);
+        ADD_FAILURE() << "loaded, expected a refusal";
+    } catch (const ModelError& e) {
+        EXPECT_EQ(e.where, "/accessors/0/count") << e.what();
+        EXPECT_NE(e.reason.find("count 55125123 is larger than supported without a buffer view (at most 5592405 VEC3"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
 TEST(ParserRegressions, objInputsLoadOrAreRefusedWithModelError) {
     eachLoadsOrIsRefused<ModelError>("obj", [](const fs::path& f) { parseObj(f); });
 }
