@@ -67,9 +67,9 @@ void CostModel::observe(double itemsMs, double measuredMs) {
     // to stand out from.
     const double current = gain();
     const bool settled = fit_.samples() >= kSettlingFrames;
-    const double sample =
-        std::clamp((measuredMs - overheadMs) / itemsMs, std::max(kMinGain, settled ? current / kMaxSampleRatio : 0.0),
-                   std::min(kMaxGain, settled ? current * kMaxSampleRatio : kMaxGain));
+    const double low = settled ? std::max(kMinGain, current / kMaxSampleRatio) : kMinGain;
+    const double high = settled ? std::min(kMaxGain, current * kMaxSampleRatio) : kMaxGain;
+    const double sample = std::clamp((measuredMs - overheadMs) / itemsMs, low, high);
     const double weight = std::sqrt(itemsMs / (itemsMs + std::max(overheadMs, 0.0)));
     fit_.add(std::array{weight}, weight * sample);
 }

@@ -70,17 +70,17 @@ public:
     // else running), p95 |dev| from the target was 13.7-21.9% against
     // 9.4-10.9% in one hour, 12.5-20.3% against 13.2-17.8% in a noisier
     // one; frames over the target by 20%: 1.5-4.7% against 1.3-1.8%, then
-    // 0.5-3.0% against 1.3% each. The frame-to-frame noise of the machine,
-    // not the gain, is then what is left.
+    // 0.5-3.0% against 1.3% each. What is left is mostly the table's error
+    // changing from one mix of levels and shadings to the next.
     // Frames that draw (almost) nothing say nothing about the gain and are
     // ignored. Once kSettlingFrames frames have been fitted, each frame's
     // own gain enters the fit within a factor kMaxSampleRatio of the
     // current gain, so a stall of the machine (a frame ten times as long)
     // moves the prediction by a bounded step that the next frames undo.
     // Before that the clamp only slowed the start: the managed flight needs
-    // a gain of 2-2.5 from its first frame (the table is fitted on random
-    // mixes and under-predicts the controller's coarse, unlit ones), and at
-    // 1.25× per frame its first 3-5 frames ran 25-130% over the target.
+    // a gain of 1.8-2.5 from its first frame (the calibrated table
+    // under-predicts the controller's coarse, unlit mixes), and at 1.25×
+    // per frame its first 3-5 frames ran 25-130% over the target.
     // Letting single stalls pass unheeded, by fitting the median of the last
     // three or five frames' gains, was tried: the view's own changes of
     // cost then reach the gain a frame or two late.
