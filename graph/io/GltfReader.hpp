@@ -154,11 +154,12 @@ private:
             fail(ptr("accessors", index, "componentType"), "unknown component type " + std::to_string(a.componentType));
         // The schema's minimum: an empty accessor would also hand null data on.
         if (a.count == 0) fail(ptr("accessors", index, "count"), "count is 0; an accessor holds at least 1 element");
-        if (a.bufferView < 0 && a.count > kMaxZeroFilledComponents / componentCount(a.type))
-            fail(ptr("accessors", index, "count"),
-                 "count " + std::to_string(a.count) + " is larger than supported without a buffer view (at most " +
-                     std::to_string(kMaxZeroFilledComponents / componentCount(a.type)) + " " + typeName(a.type) +
-                     " elements)");
+        const std::size_t mostZeroFilled = kMaxZeroFilledComponents / componentCount(a.type);
+        if (a.bufferView < 0 && a.count > mostZeroFilled)
+            fail(ptr("accessors", index, "count"), "count " + std::to_string(a.count) +
+                                                       " is larger than supported without a buffer view (at most " +
+                                                       std::to_string(mostZeroFilled) + " " + typeName(a.type) +
+                                                       " elements)");
         return a;
     }
 
