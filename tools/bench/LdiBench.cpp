@@ -198,12 +198,15 @@ int benchLdi(const Options& o) {
         written.push_back(file);
     }
 
-    const Measured& one = measured.front();
     const Measured& seven = measured.back();
-    const bool renderOk = seven.renderMs <= 6.0 && one.renderMs <= 1.5;
+    // Issue #23: the 7-LDI frame at least twice as fast as the depth-sorted
+    // one, and the paper's claim, its ordering at least five times as fast
+    // as the sort. Both against the reference of the same run, not a fixed
+    // number of milliseconds.
+    const bool renderOk = sortMs >= 2.0 * seven.renderMs;
+    const bool orderOk = sortOrderMs >= 5.0 * seven.orderMs;
     const bool buildOk = seven.buildS <= 1.0;
-    const bool speedupOk = sortMs >= 5.0 * seven.renderMs;
-    const bool orderOk = rbDiff6.pct() < rbDiff1.pct();
+    const bool redBlackOk = rbDiff6.pct() < rbDiff1.pct();
     // Every figure to three places, as this bench has always reported them.
     const auto rounded = [](double x) { return Fixed{x, 3}; };
     BenchJson json;
@@ -233,10 +236,10 @@ int benchLdi(const Options& o) {
         .field("wrong_pixels_pct_6_ldis", rounded(rbDiff6.pct()))
         .end();
     json.beginObject("targets")
-        .field("render_7_le_6ms_and_1_le_1_5ms", renderOk)
+        .field("render_7_ge_2x_faster", renderOk)
+        .field("order_7_ge_5x_faster", orderOk)
         .field("build_7_le_1s", buildOk)
-        .field("mcmillan_7_ge_5x_faster", speedupOk)
-        .field("wrong_6_lt_1", orderOk)
+        .field("wrong_6_lt_1", redBlackOk)
         .end();
     json.beginArray("strips").value(written[0]).value(written[1]).end();
     std::printf("%s\n", json.str().c_str());
