@@ -175,6 +175,9 @@ bool StatusServer::Impl::evictIdlest(std::optional<std::uint32_t> client) {
 
 void StatusServer::Impl::receive(Connection& c, Clock::time_point now) {
     char buffer[4096];
+    // An HTTP/1.0-style client (`nc -N`) shuts its side once the request is
+    // out: what it sent before the end still deserves an answer.
+    bool hungUp = false;
     while (c.received.size() <= kMaxHttpHeadBytes) {
         const ssize_t n = ::recv(c.socket.get(), buffer, sizeof buffer, 0);
         if (n > 0) {
@@ -184,12 +187,18 @@ void StatusServer::Impl::receive(Connection& c, Clock::time_point now) {
         }
         if (n < 0 && errno == EINTR) continue;
         if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) break;
-        c.closed = true;  // the client hung up (or reset) before a whole request
+        if (n == 0) {
+            hungUp = true;
+            break;
+        }
+        c.closed = true;  // reset
         return;
     }
     const HttpRequestHead head = parseHttpRequestHead(c.received);
     switch (head.state) {
-    case HttpRequestHead::Incomplete: return;
+    case HttpRequestHead::Incomplete:
+        c.closed = hungUp;  // hung up before a whole request: no one to answer
+        return;
     case HttpRequestHead::TooLarge:
         ++refused;
         c.reply = errorReply(431, "Request Header Fields Too Large",
