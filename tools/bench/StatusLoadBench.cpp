@@ -44,6 +44,7 @@
 #include <chrono>
 #include <cstdio>
 #include <ctime>
+#include <exception>
 #include <fstream>
 #include <mutex>
 #include <random>
@@ -283,19 +284,26 @@ int statusLoad(const StatusLoadOptions& o) {
         hostile.run(done, loaded, end);
     });
 
-    for (int slice = 0; slice < slices; ++slice) {
-        loaded = slice % 2 == 1;
-        const Clock::time_point sliceEnd = start + (slice + 1) * kSlice;
-        while (Clock::now() < sliceEnd) {
-            const Clock::time_point t0 = Clock::now();
-            if (!runner.step()) throw std::runtime_error("the looping input ended");
-            const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-            {
-                std::lock_guard lock(samplesMutex);
-                samples[slice % 2].frameMs.push_back(ms);
+    // A station that fails mid-run stops the clients before the error goes
+    // on: thrown past running threads, it would end the process unreported.
+    std::exception_ptr failure;
+    try {
+        for (int slice = 0; slice < slices; ++slice) {
+            loaded = slice % 2 == 1;
+            const Clock::time_point sliceEnd = start + (slice + 1) * kSlice;
+            while (Clock::now() < sliceEnd) {
+                const Clock::time_point t0 = Clock::now();
+                if (!runner.step()) throw std::runtime_error("the looping input ended");
+                const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+                {
+                    std::lock_guard lock(samplesMutex);
+                    samples[slice % 2].frameMs.push_back(ms);
+                }
+                if (o.fps > 0.0) std::this_thread::sleep_until(t0 + std::chrono::duration_cast<Clock::duration>(framePeriod));
             }
-            if (o.fps > 0.0) std::this_thread::sleep_until(t0 + std::chrono::duration_cast<Clock::duration>(framePeriod));
         }
+    } catch (...) {
+        failure = std::current_exception();
     }
     done = true;
     const double serverCpuMs = threadCpuMs("arcomp-status");
@@ -303,6 +311,10 @@ int statusLoad(const StatusLoadOptions& o) {
     attacker.join();
     const double clientsCpuMs = hostile.cpuMs();
     scraper.join();
+    if (failure) {
+        fs::remove_all(dir);
+        std::rethrow_exception(failure);
+    }
     const StatusServerCounters server = runner.statusCounters();
     runner.finish();
     fs::remove_all(dir);
