@@ -142,7 +142,7 @@ struct SelectPass {
         const SiblingLayout::Slot& s = layout.slots[slot];
         const std::uint32_t i = s.payload;
         ARCOMP_CHECK(i < lods.size(), "an LOD node has its entry in world.lods");
-        const LodNode& n = lods.node(i);
+        const LodRule& n = lods.rule(i);
         const Sphere& bound = s.bound;
         LodInputs in;
         in.distance = glm::length(bound.center - view.eye);

@@ -7,56 +7,61 @@
 
 namespace arcomp {
 
-void LodNode::setThresholds(std::initializer_list<float> t) {
+void LodRule::setThresholds(std::initializer_list<float> t) {
     ARCOMP_CHECK(t.size() + 1 <= kMaxLodLevels, "an LOD node has at most kMaxLodLevels levels");
     std::copy(t.begin(), t.end(), thresholds.begin());
     levelCount = static_cast<std::uint8_t>(t.size() + 1);
 }
 
 std::uint32_t LodTable::add(const LodNode& node) {
-    nodes_.push_back(node);
-    level_.push_back(kNoLevel);
-    fadeFrom_.push_back(kNoLevel);
-    fadeStart_.push_back(0.0);
-    lastChosen_.push_back(-std::numeric_limits<double>::infinity());
-    tracked_.push_back({});
-    trackedAt_.push_back(0.0);
-    return static_cast<std::uint32_t>(nodes_.size() - 1);
+    chosen_.push_back({.rule = node, .lastChosen = -std::numeric_limits<double>::infinity()});
+    gaze_.push_back({node.center, node.meanRadius, node.acuity, {}});
+    return static_cast<std::uint32_t>(chosen_.size() - 1);
+}
+
+LodNode LodTable::node(std::uint32_t i) const {
+    LodNode n;
+    static_cast<LodRule&>(n) = chosen_[i].rule;
+    n.center = gaze_[i].center;
+    n.meanRadius = gaze_[i].meanRadius;
+    n.acuity = gaze_[i].acuity;
+    return n;
 }
 
 void LodTable::reset() {
-    std::fill(level_.begin(), level_.end(), kNoLevel);
-    std::fill(fadeFrom_.begin(), fadeFrom_.end(), kNoLevel);
-    std::fill(lastChosen_.begin(), lastChosen_.end(), -std::numeric_limits<double>::infinity());
-    std::fill(tracked_.begin(), tracked_.end(), TrackedPoint{});
+    for (Chosen& c : chosen_) {
+        c.level = c.fadeFrom = kNoLevel;
+        c.lastChosen = -std::numeric_limits<double>::infinity();
+    }
+    for (GazeShape& g : gaze_) g.tracked = {};
 }
 
-LodChoice LodTable::fade(std::uint32_t i, std::uint8_t previous, std::uint8_t level, bool fresh, double timeSeconds) {
+LodChoice LodTable::fade(Chosen& c, std::uint8_t previous, std::uint8_t level, bool fresh, double timeSeconds) {
     if (previous != kNoLevel && previous != level) {
-        fadeFrom_[i] = previous;
-        fadeStart_[i] = timeSeconds;
+        c.fadeFrom = previous;
+        c.fadeStart = timeSeconds;
     }
-    if (fresh) fadeFrom_[i] = kNoLevel;
-    if (fadeFrom_[i] == kNoLevel) return {level, kNoLevel, 1.0f};
-    const double t = (timeSeconds - fadeStart_[i]) / nodes_[i].fadeSeconds;
+    if (fresh) c.fadeFrom = kNoLevel;
+    if (c.fadeFrom == kNoLevel) return {level, kNoLevel, 1.0f};
+    const double t = (timeSeconds - c.fadeStart) / c.rule.fadeSeconds;
     if (t >= 1.0) {
-        fadeFrom_[i] = kNoLevel;
+        c.fadeFrom = kNoLevel;
         return {level, kNoLevel, 1.0f};
     }
-    return {level, fadeFrom_[i], static_cast<float>(std::max(t, 0.0))};
+    return {level, c.fadeFrom, static_cast<float>(std::max(t, 0.0))};
 }
 
 float LodTable::acuity(std::uint32_t i, const glm::mat4& world, const glm::vec3& eye, const glm::vec3& gaze,
                        double timeSeconds) {
-    const LodNode& n = nodes_[i];
-    const glm::vec3 center = glm::vec3(world * glm::vec4(n.center, 1.0f));
+    GazeShape& g = gaze_[i];
+    const glm::vec3 center = glm::vec3(world * glm::vec4(g.center, 1.0f));
     const float theta = angleDegrees(gaze, center - eye);
-    const double dt = timeSeconds - trackedAt_[i];
-    const bool continuous = tracked_[i].valid && dt > 0.0 && dt <= kStaleSeconds;
-    const float speed = continuous ? angularSpeed(tracked_[i], world, eye, static_cast<float>(dt)) : 0.0f;
-    tracked_[i] = trackPoint(eye, world, n.center, n.meanRadius);
-    trackedAt_[i] = timeSeconds;
-    return gazeAcuity(theta, speed, n.acuity);
+    const double dt = timeSeconds - g.trackedAt;
+    const bool continuous = g.tracked.valid && dt > 0.0 && dt <= kStaleSeconds;
+    const float speed = continuous ? angularSpeed(g.tracked, world, eye, static_cast<float>(dt)) : 0.0f;
+    g.tracked = trackPoint(eye, world, g.center, g.meanRadius);
+    g.trackedAt = timeSeconds;
+    return gazeAcuity(theta, speed, g.acuity);
 }
 
 } // namespace arcomp

@@ -16,7 +16,8 @@
 // PIXEL_SIZE_ON_SCREEN), the paper's gaze acuity k1·k2 (graph/lod/GazeAcuity.hpp),
 // or pixels weighted by acuity. A band around each threshold (hysteresis)
 // keeps a node hovering at a boundary from flipping level every frame; the
-// per-node previous level lives in flat arrays here, not in the scene.
+// per-node previous level lives in LodTable, beside the node's rule, not in
+// the scene.
 
 #include "graph/lod/GazeAcuity.hpp"
 
@@ -37,7 +38,9 @@ enum class LodPolicy : std::uint8_t {
     ScreenSizeTimesAcuity,  // pixels · k1·k2; thresholds descending
 };
 
-struct LodNode {
+// What a node's level is chosen by: the part of its settings that the
+// select pass reads for every visible LOD node.
+struct LodRule {
     LodPolicy policy = LodPolicy::Distance;
     std::uint8_t levelCount = 1;
     // thresholds[i] is the boundary between level i and i + 1. Distance: the
@@ -47,14 +50,18 @@ struct LodNode {
     // level, a node must pass the boundary by this fraction of it.
     float hysteresis = 0.1f;
     float fadeSeconds = 0.0f;  // cross-fade time; 0 switches at once
+
+    // Sets levelCount to thresholds.size() + 1; aborts beyond kMaxLodLevels.
+    void setThresholds(std::initializer_list<float> t);
+};
+
+// An LOD node's settings: its rule, and the shape the gaze policies see.
+struct LodNode : LodRule {
     // The object as a sphere of its mean radius, in the LOD node's frame;
     // only the gaze policies use it (representative point, DESIGN.md §1).
     glm::vec3 center{0.0f};
     float meanRadius = 1.0f;
     GazeAcuityParams acuity{};
-
-    // Sets levelCount to thresholds.size() + 1; aborts beyond kMaxLodLevels.
-    void setThresholds(std::initializer_list<float> t);
 };
 
 // What a policy reads about a node this frame.
@@ -78,7 +85,7 @@ inline float lodMetric(LodPolicy policy, const LodInputs& in) {
 // The level for `metric`, given the level shown last frame (kNoLevel: none).
 // Boundaries next to the previous level are pushed away from it by the band.
 // Inline, as choose(): the select pass calls it once per visible LOD node.
-inline std::uint8_t chooseLevel(const LodNode& node, float metric, std::uint8_t previous) {
+inline std::uint8_t chooseLevel(const LodRule& node, float metric, std::uint8_t previous) {
     const bool up = node.policy == LodPolicy::Distance;  // thresholds ascending
     std::uint8_t level = 0;
     for (std::uint8_t i = 0; i + 1 < node.levelCount; ++i) {
@@ -106,25 +113,25 @@ struct LodChoice {
 class LodTable {
 public:
     std::uint32_t add(const LodNode& node);
-    std::size_t size() const { return nodes_.size(); }
-    const LodNode& node(std::uint32_t i) const { return nodes_[i]; }
-    LodNode& node(std::uint32_t i) { return nodes_[i]; }
+    std::size_t size() const { return chosen_.size(); }
+    const LodRule& rule(std::uint32_t i) const { return chosen_[i].rule; }
+    LodNode node(std::uint32_t i) const;
 
     // Level shown last (kNoLevel before the first choice).
-    std::uint8_t previousLevel(std::uint32_t i) const { return level_[i]; }
+    std::uint8_t previousLevel(std::uint32_t i) const { return chosen_[i].level; }
     // Forgets every node's history, e.g. after a cut in a replay.
     void reset();
 
     // Picks node i's level for this frame and records it.
     LodChoice choose(std::uint32_t i, const LodInputs& in, double timeSeconds) {
-        const LodNode& n = nodes_[i];
-        const bool fresh = timeSeconds - lastChosen_[i] > kStaleSeconds;
-        const std::uint8_t previous = fresh ? kNoLevel : level_[i];
-        const std::uint8_t level = chooseLevel(n, lodMetric(n.policy, in), previous);
-        lastChosen_[i] = timeSeconds;
-        level_[i] = level;
-        if (n.fadeSeconds <= 0.0f) return {level, kNoLevel, 1.0f};
-        return fade(i, previous, level, fresh, timeSeconds);
+        Chosen& c = chosen_[i];
+        const bool fresh = timeSeconds - c.lastChosen > kStaleSeconds;
+        const std::uint8_t previous = fresh ? kNoLevel : c.level;
+        const std::uint8_t level = chooseLevel(c.rule, lodMetric(c.rule.policy, in), previous);
+        c.lastChosen = timeSeconds;
+        c.level = level;
+        if (c.rule.fadeSeconds <= 0.0f) return {level, kNoLevel, 1.0f};
+        return fade(c, previous, level, fresh, timeSeconds);
     }
 
     // Inputs for the gaze policies: the acuity of node i whose LOD node has
@@ -138,18 +145,30 @@ private:
     // old level, no fade from it, no angular speed over the gap.
     static constexpr double kStaleSeconds = 0.25;
 
-    // choose() for a node with a cross-fade time.
-    LodChoice fade(std::uint32_t i, std::uint8_t previous, std::uint8_t level, bool fresh, double timeSeconds);
+    // A node's rule and its history in one cache line: all that choose()
+    // reads and writes, so a visible node costs the walk one line here.
+    struct alignas(64) Chosen {
+        LodRule rule;
+        std::uint8_t level = kNoLevel;     // shown last
+        std::uint8_t fadeFrom = kNoLevel;  // level fading out
+        double lastChosen = 0.0;
+        double fadeStart = 0.0;
+    };
+    static_assert(sizeof(Chosen) == 64, "one node's rule and history in one cache line");
+    // The gaze policies' side of a node, read only by acuity().
+    struct GazeShape {
+        glm::vec3 center;
+        float meanRadius;
+        GazeAcuityParams acuity;
+        TrackedPoint tracked;
+        double trackedAt = 0.0;
+    };
 
-    std::vector<LodNode> nodes_;
-    // Per-node state, flat: what was shown, since when, and the point tracked
-    // for the angular speed.
-    std::vector<std::uint8_t> level_;
-    std::vector<std::uint8_t> fadeFrom_;
-    std::vector<double> fadeStart_;
-    std::vector<double> lastChosen_;
-    std::vector<TrackedPoint> tracked_;
-    std::vector<double> trackedAt_;
+    // choose() for a node with a cross-fade time.
+    LodChoice fade(Chosen& c, std::uint8_t previous, std::uint8_t level, bool fresh, double timeSeconds);
+
+    std::vector<Chosen> chosen_;
+    std::vector<GazeShape> gaze_;
 };
 
 } // namespace arcomp
