@@ -28,8 +28,9 @@ const char* const kMeshShader = R"(
 //   environment (F0 * E / pi, what a fully rough mirror would reflect), so
 //   that metals, which have no diffuse colour, do not turn black there.
 //   3 Phong:   everything per pixel: normal map, direct light, diffuse
-//              irradiance + prefiltered specular (split sum), occlusion on
-//              the indirect light.
+//              irradiance + prefiltered specular (split sum) with the
+//              energy rough surfaces lose to multiple scattering given
+//              back, occlusion on the indirect light.
 // Emission is added at every level. Lighting is in linear light; the output
 // is premultiplied and sRGB-encoded (Renderer.hpp).
 // SKINNED (with MAX_JOINTS) compiles the variant for skinned meshes: the
@@ -136,6 +137,21 @@ void directLight(vec3 n, vec3 v, vec3 f0, float roughness, out vec3 diffuse, out
     vec3 F = f0 + (1.0 - f0) * (m2 * m2 * m);
     diffuse = (1.0 - F) / PI * uLightRadiance * nl;
     specular = F * D * V * uLightRadiance * nl;
+}
+
+// Single-scattering GGX loses the light that bounces between microfacets
+// before it leaves: a rough metal seen head-on keeps a third of it and
+// looks dark and dull. What is lost comes back as multiple scattering,
+// tinted by the average Fresnel f0 + (1 - f0) / 21 (Fdez-Aguera 2019, "A
+// Multiple-Scattering Microfacet Model for Real-Time Image-Based
+// Lighting"). `splitSum` is the environment BRDF's (A, B): single
+// scattering reflects f0 * A + B of the prefiltered radiance, multiple
+// scattering `multiple` of the irradiance.
+void environmentScattering(vec3 f0, vec2 splitSum, out vec3 single, out vec3 multiple) {
+    float lost = 1.0 - (splitSum.x + splitSum.y);
+    single = f0 * splitSum.x + splitSum.y;
+    vec3 averageFresnel = f0 + (1.0 - f0) / 21.0;
+    multiple = lost * single * averageFresnel / (1.0 - lost * averageFresnel);
 }
 
 vec3 diffuseIrradiance(vec3 n) {
@@ -273,7 +289,17 @@ void main() {
     vec2 scaleBias = texture(uSplitSum, vec2(nv, roughness)).rg;
     vec3 r = reflect(-v, n);
     vec3 prefiltered = textureLod(uSpecularEnvironment, environmentUv(r), roughness * (uSpecularLevels - 1.0)).rgb;
-    vec3 indirect = diffuseColor * diffuseIrradiance(n) + prefiltered * uEnvironmentIntensity * (f0 * scaleBias.x + scaleBias.y);
+    vec3 single, multiple, dielectricSingle, dielectricMultiple;
+    environmentScattering(f0, scaleBias, single, multiple);
+    // What the dielectric layer reflects does not reach its diffuse base.
+    environmentScattering(vec3(0.04), scaleBias, dielectricSingle, dielectricMultiple);
+    vec3 irradiance = diffuseIrradiance(n);
+    vec3 indirect = diffuseColor * (1.0 - dielectricSingle - dielectricMultiple) * irradiance
+                  + prefiltered * uEnvironmentIntensity * single + multiple * irradiance;
+    // The directional light's highlight loses the same share; it is scaled
+    // back up by 1 + F0 (1 / E - 1), E the single-scattering albedo (Turquin
+    // 2019, "Practical multiple scattering compensation for microfacet models").
+    specular *= 1.0 + f0 * (1.0 / max(scaleBias.x + scaleBias.y, 1e-3) - 1.0);
     vec3 lit = diffuse * diffuseColor + specular + occlusion * indirect;
 #endif
 #endif

@@ -5,6 +5,7 @@
 
 #include "graph/core/SelectPass.hpp"
 #include "runtime/GlContext.hpp"
+#include "runtime/ImageBasedLight.hpp"
 #include "runtime/ImageFile.hpp"
 #include "runtime/RenderTarget.hpp"
 #include "runtime/Renderer.hpp"
@@ -215,6 +216,33 @@ TEST_P(PbrShading, metalReflectionsTakeTheBaseColourDielectricOnesStayWhite) {
     EXPECT_LT(metal.b, metal.r * 6 / 10) << "metal highlight " << metal.r << "," << metal.g << "," << metal.b;
     EXPECT_GT(plastic.r, 20) << "the dielectric reflects something";
     EXPECT_NEAR(plastic.b, plastic.r, plastic.r / 10 + 1) << "plastic highlight " << plastic.r << "," << plastic.g << "," << plastic.b;
+}
+
+// A white furnace: under an environment of the same radiance everywhere,
+// a white surface that absorbs nothing reflects exactly that radiance from
+// every point, whatever its roughness, and disappears into its surround.
+// A rough metal drawn with single scattering alone would keep about a
+// third of it head-on and less at the rim.
+TEST_P(PbrShading, aWhiteSurfaceInAWhiteFurnaceReflectsAllItsLightAtAnyRoughness) {
+    const ImageBasedLight furnace = prefilterEnvironment(Environment{64, 32, std::vector<glm::vec3>(64 * 32, glm::vec3(0.5f))}, 32, 5);
+    for (const float metallic : {1.0f, 0.0f})
+        for (const float roughness : {0.3f, 0.6f, 1.0f}) {
+            const Image img = render(
+                [&](Scene& s) { addAt(s, {}, makeUvSphere(1.0f, 64, 32), {.name = "test", .baseColor = {1, 1, 1, 1}, .metallic = metallic, .roughness = roughness}); },
+                {.settings = {.lightIntensity = 0.0f, .environmentIntensity = 1.0f}, .environment = &furnace});
+            int darkest = 255, brightest = 0;
+            for (int y = 0; y < kSize.y; ++y)
+                for (int x = 0; x < kSize.x; ++x) {
+                    const Pixel p = at(img, x, y);
+                    if (p.a != 255) continue;
+                    darkest = std::min({darkest, p.r, p.g, p.b});
+                    brightest = std::max({brightest, p.r, p.g, p.b});
+                }
+            EXPECT_GT(covered(img), 1000u);
+            EXPECT_NEAR(darkest, encoded(0.5f), 4) << "metallic " << metallic << ", roughness " << roughness;
+            EXPECT_NEAR(brightest, encoded(0.5f), 4) << "metallic " << metallic << ", roughness " << roughness;
+            saveOnFailure(img, "pbr-furnace");
+        }
 }
 
 namespace {
