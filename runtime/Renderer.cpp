@@ -141,17 +141,15 @@ void directLight(vec3 n, vec3 v, vec3 f0, float roughness, out vec3 diffuse, out
 
 // Single-scattering GGX loses the light that bounces between microfacets
 // before it leaves: a rough metal seen head-on keeps a third of it and
-// looks dark and dull. What is lost comes back as multiple scattering,
-// tinted by the average Fresnel f0 + (1 - f0) / 21 (Fdez-Aguera 2019, "A
-// Multiple-Scattering Microfacet Model for Real-Time Image-Based
-// Lighting"). `splitSum` is the environment BRDF's (A, B): single
-// scattering reflects f0 * A + B of the prefiltered radiance, multiple
-// scattering `multiple` of the irradiance.
-void environmentScattering(vec3 f0, vec2 splitSum, out vec3 single, out vec3 multiple) {
-    float lost = 1.0 - (splitSum.x + splitSum.y);
-    single = f0 * splitSum.x + splitSum.y;
+// looks dark and dull. What is lost, 1 - (A + B) with (A, B) the split
+// sum's environment BRDF, comes back as multiple scattering tinted by the
+// average Fresnel f0 + (1 - f0) / 21 (Fdez-Aguera 2019, "A Multiple-
+// Scattering Microfacet Model for Real-Time Image-Based Lighting"): the
+// share of the irradiance that the multiple scattering reflects, given
+// the single scattering's f0 * A + B.
+vec3 multipleScattering(vec3 f0, vec3 single, float lost) {
     vec3 averageFresnel = f0 + (1.0 - f0) / 21.0;
-    multiple = lost * single * averageFresnel / (1.0 - lost * averageFresnel);
+    return lost * single * averageFresnel / (1.0 - lost * averageFresnel);
 }
 
 vec3 diffuseIrradiance(vec3 n) {
@@ -289,17 +287,20 @@ void main() {
     vec2 scaleBias = texture(uSplitSum, vec2(nv, roughness)).rg;
     vec3 r = reflect(-v, n);
     vec3 prefiltered = textureLod(uSpecularEnvironment, environmentUv(r), roughness * (uSpecularLevels - 1.0)).rgb;
-    vec3 single, multiple, dielectricSingle, dielectricMultiple;
-    environmentScattering(f0, scaleBias, single, multiple);
-    // What the dielectric layer reflects does not reach its diffuse base.
-    environmentScattering(vec3(0.04), scaleBias, dielectricSingle, dielectricMultiple);
+    float singleAlbedo = scaleBias.x + scaleBias.y;
+    vec3 single = f0 * scaleBias.x + scaleBias.y;
+    // What the dielectric layer (F0 0.04) reflects, once or more, does not
+    // reach its diffuse base.
+    float dielectricSingle = 0.04 * scaleBias.x + scaleBias.y;
+    float dielectricMultiple = multipleScattering(vec3(0.04), vec3(dielectricSingle), 1.0 - singleAlbedo).x;
     vec3 irradiance = diffuseIrradiance(n);
     vec3 indirect = diffuseColor * (1.0 - dielectricSingle - dielectricMultiple) * irradiance
-                  + prefiltered * uEnvironmentIntensity * single + multiple * irradiance;
+                  + prefiltered * uEnvironmentIntensity * single
+                  + multipleScattering(f0, single, 1.0 - singleAlbedo) * irradiance;
     // The directional light's highlight loses the same share; it is scaled
     // back up by 1 + F0 (1 / E - 1), E the single-scattering albedo (Turquin
     // 2019, "Practical multiple scattering compensation for microfacet models").
-    specular *= 1.0 + f0 * (1.0 / max(scaleBias.x + scaleBias.y, 1e-3) - 1.0);
+    specular *= 1.0 + f0 * (1.0 / max(singleAlbedo, 1e-3) - 1.0);
     vec3 lit = diffuse * diffuseColor + specular + occlusion * indirect;
 #endif
 #endif
