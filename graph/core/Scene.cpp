@@ -100,6 +100,9 @@ void Scene::updateJointMatrices() {
 }
 
 void Scene::setLocalBound(NodeId node, const Sphere& bound) {
+    // A transform or group with a bound of its own may no longer share its
+    // child's slot (rebuildSiblingLayout).
+    if (kind_[node] == NodeKind::Transform || kind_[node] == NodeKind::Group) structureDirty_ = true;
     localBound_[node] = bound;
     localDirty_[node] = 1;
     anyLocalDirty_ = true;
@@ -150,29 +153,52 @@ void Scene::rebuildOrder() {
 // an object's own subtree follows soon after the run that holds it. Bounds
 // are filled in by update(), which recomputes them all after a change of
 // structure.
+//
+// A transform or group with one child and no bound of its own tells the
+// walk nothing: its world bound is its child's, and world matrices are
+// already applied. Its child takes its slot, so a typical object (transform
+// over an LOD node over levels) costs the walk one hop less. A grouping
+// node's objects keep their own slots: its tree names them.
 void Scene::rebuildSiblingLayout() {
-    const std::size_t slots = order_.size();
-    layout_.centerX.assign(slots, 0.0f);
-    layout_.centerY.assign(slots, 0.0f);
-    layout_.centerZ.assign(slots, 0.0f);
-    layout_.radius.assign(slots, -1.0f);
-    layout_.slots.assign(slots, {{glm::vec3(0.0f), -1.0f}, kNoNode, 0, 0, 0, NodeKind::Group});
+    const auto passesThrough = [this](NodeId n) {
+        return (kind_[n] == NodeKind::Transform || kind_[n] == NodeKind::Group) && firstChild_[n] != kNoNode &&
+               nextSibling_[firstChild_[n]] == kNoNode && localBound_[n].empty();
+    };
+    const std::size_t nodes = order_.size();
+    layout_.slots.assign(nodes, {{glm::vec3(0.0f), -1.0f}, kNoNode, 0, 0, 0, NodeKind::Group});
     layout_.slotOf.assign(kind_.size(), ~std::uint32_t{0});  // nodes outside the root's tree have none
+    std::vector<std::uint8_t> elided(kind_.size(), 0);
     layout_.slotOf[root()] = 0;
     std::uint32_t next = 1;
     for (const NodeId n : order_) {
+        if (elided[n]) continue;
         SiblingLayout::Slot& slot = layout_.slots[layout_.slotOf[n]];
         slot.kind = kind_[n];
         slot.payload = payload_[n];
         slot.node = n;
         slot.firstChild = next;
-        for (NodeId c = firstChild_[n]; c != kNoNode; c = nextSibling_[c]) layout_.slotOf[c] = next++;
+        const bool elide = kind_[n] != NodeKind::Grouping;
+        for (NodeId c = firstChild_[n]; c != kNoNode; c = nextSibling_[c]) {
+            // Every node of the chain shares the slot: update() writes each
+            // one's bound there, all equal, the deepest's first.
+            NodeId d = c;
+            for (; elide && passesThrough(d); d = firstChild_[d]) {
+                elided[d] = 1;
+                layout_.slotOf[d] = next;
+            }
+            layout_.slotOf[d] = next++;
+        }
         if (next - slot.firstChild > SiblingLayout::kMaxChildren)
             throw BadInput("scene", "node " + std::to_string(n),
                            std::to_string(next - slot.firstChild) + " children; the select pass takes at most " +
                                std::to_string(SiblingLayout::kMaxChildren) + " under one node: group them");
         slot.childCount = next - slot.firstChild;
     }
+    layout_.slots.resize(next);
+    layout_.centerX.assign(next, 0.0f);
+    layout_.centerY.assign(next, 0.0f);
+    layout_.centerZ.assign(next, 0.0f);
+    layout_.radius.assign(next, -1.0f);
 }
 
 void Scene::update() {

@@ -77,6 +77,7 @@ public:
     const MeshPart& meshPartAt(std::uint32_t payload) const { return meshParts_[payload]; }
     const glm::mat4& local(NodeId n) const { return local_[n]; }
     const glm::mat4& world(NodeId n) const { return world_[n]; }
+    const Sphere& localBound(NodeId n) const { return localBound_[n]; }
     const Sphere& worldBound(NodeId n) const { return worldBound_[n]; }
     std::vector<NodeId> children(NodeId n) const;
 

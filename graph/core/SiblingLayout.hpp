@@ -16,8 +16,10 @@
 //   traffic is there, one visible object at a time.
 //
 // A node's children take their slots when the depth-first walk reaches the
-// node, so an object's own subtree (transform, LOD node, levels) lies close
-// together after the run of its siblings.
+// node, so an object's own subtree (LOD node, levels) lies close together
+// after the run of its siblings. A transform or group with one child and no
+// bound of its own has no slot: the child takes its place (Scene.cpp), and
+// slotOf gives every node of such a chain the one slot.
 
 #include "graph/core/Bounds.hpp"
 #include "graph/core/NodeKind.hpp"

@@ -76,8 +76,8 @@ TEST(LodSelect, onlyChosenLevelIsVisited) {
     buildRow(row, node);
     DrawList list;
     select(row.world, camera, {}, list);
-    // root + per object: transform, LOD node, one of three meshes.
-    EXPECT_EQ(list.nodesVisited, 1 + 3 * row.positions.size());
+    // root + per object: the LOD node (its transform shares its slot), one of three meshes.
+    EXPECT_EQ(list.nodesVisited, 1 + 2 * row.positions.size());
     for (const DrawItem& item : list.items) EXPECT_EQ(item.level, 0);
 }
 

@@ -84,25 +84,45 @@ struct RandomScene {
     }
 };
 
+// A transform or group with one child and no bound of its own shares that child's slot, unless a grouping node's tree names it.
+bool passesThrough(const Scene& scene, NodeId n) {
+    const NodeKind k = scene.kind(n);
+    const NodeId parent = scene.parent(n);
+    return (k == NodeKind::Transform || k == NodeKind::Group) && scene.children(n).size() == 1 &&
+           scene.localBound(n).empty() && (parent == kNoNode || scene.kind(parent) != NodeKind::Grouping);
+}
+
+// The node whose slot stands for n: n, or the end of its pass-through chain.
+NodeId slotHolder(const Scene& scene, NodeId n) {
+    while (passesThrough(scene, n)) n = scene.children(n).front();
+    return n;
+}
+
 void expectLayoutMatchesScene(const Scene& scene) {
     const SiblingLayout& layout = scene.siblingLayout();
-    ASSERT_EQ(layout.size(), scene.order().size());
+    std::size_t holders = 0;
     for (const NodeId n : scene.order()) {
         const std::uint32_t slot = layout.slotOf[n];
         ASSERT_LT(slot, layout.size());
-        EXPECT_EQ(layout.slots[slot].node, n);
-        EXPECT_EQ(layout.slots[slot].kind, scene.kind(n));
-        EXPECT_EQ(layout.slots[slot].payload, scene.payload(n));
+        const NodeId holder = n == scene.root() ? n : slotHolder(scene, n);
+        EXPECT_EQ(layout.slots[slot].node, holder) << "node " << n;
+        // Shared or not, the slot's bound is the node's.
         const Sphere a = layout.bound(slot), b = scene.worldBound(n);
         EXPECT_EQ(a.center, b.center) << "node " << n;
         EXPECT_EQ(a.radius, b.radius) << "node " << n;
         // The copy that runs of siblings are culled from.
         EXPECT_EQ(glm::vec3(layout.centerX[slot], layout.centerY[slot], layout.centerZ[slot]), b.center) << "node " << n;
         EXPECT_EQ(layout.radius[slot], b.radius) << "node " << n;
-        std::vector<NodeId> children;
+        if (holder != n) continue;
+        ++holders;
+        EXPECT_EQ(layout.slots[slot].kind, scene.kind(n));
+        EXPECT_EQ(layout.slots[slot].payload, scene.payload(n));
+        std::vector<NodeId> children, expected;
         for (std::uint32_t c = layout.slots[slot].firstChild; c < layout.childEnd(slot); ++c) children.push_back(layout.slots[c].node);
-        EXPECT_EQ(children, scene.children(n)) << "node " << n;
+        for (const NodeId c : scene.children(n)) expected.push_back(scene.kind(n) == NodeKind::Grouping ? c : slotHolder(scene, c));
+        EXPECT_EQ(children, expected) << "node " << n;
     }
+    EXPECT_EQ(layout.size(), holders);
 }
 
 // The select pass as it would be written without a layout: recursion over
@@ -116,11 +136,15 @@ struct StraightforwardWalk {
 
     void visit(NodeId n, bool inside, std::uint8_t level, float fade) {
         const Scene& scene = world.scene;
-        ++out.nodesVisited;
+        // The layout's walk does not stop at a pass-through node: it tests
+        // the same bound at the node that holds the slot, and counts that.
+        const bool counted = n == scene.root() || !passesThrough(scene, n);
+        if (counted) ++out.nodesVisited;
         const Sphere& bound = scene.worldBound(n);
         if (!inside) {
             const Containment c = frustum.classify(bound);
             if (c == Containment::Outside) {
+                if (!counted) ++out.nodesVisited;
                 ++out.nodesCulled;
                 return;
             }
@@ -206,8 +230,9 @@ TEST(SiblingLayout, givesEachNodesChildrenOneRunOfSlots) {
     EXPECT_EQ(layout.slotOf[a2], layout.slotOf[a1] + 1);
     EXPECT_EQ(layout.slots[layout.slotOf[a]].firstChild, layout.slotOf[a1]);
     EXPECT_EQ(layout.childEnd(layout.slotOf[a]), layout.slotOf[a2] + 1);
-    EXPECT_EQ(layout.slots[layout.slotOf[b]].childCount, 1u);
-    EXPECT_EQ(layout.slots[layout.slots[layout.slotOf[b]].firstChild].node, b1);
+    // b, with one child, is a pass-through: b1 holds its slot.
+    EXPECT_EQ(layout.slotOf[b], layout.slotOf[b1]);
+    EXPECT_EQ(layout.slots[layout.slotOf[b]].node, b1);
 }
 
 TEST(SelectPass, drawsWhatTheStraightforwardWalkDrawsOnRandomScenes) {
@@ -245,4 +270,28 @@ TEST(SelectPass, drawsWhatTheStraightforwardWalkDrawsOnRandomScenes) {
         EXPECT_GT(drawn, 0u) << "seed " << seed;
         EXPECT_GT(coarse, 0u) << "seed " << seed;
     }
+}
+
+TEST(SiblingLayout, aTransformSharesItsOnlyChildsSlotUntilItHasABoundOfItsOwn) {
+    World world;
+    Scene& scene = world.scene;
+    const MeshPart part{scene.addGeometry(makeUvSphere(1.0f, 8, 4)), scene.addMaterial({})};
+    const NodeId t = scene.addTransform(scene.root(), glm::translate(glm::mat4(1.0f), {5, 0, 0}));
+    const NodeId mesh = scene.addMesh(t, part);
+    scene.update();
+    const SiblingLayout& layout = scene.siblingLayout();
+    EXPECT_EQ(layout.size(), 2u);  // the root, and the mesh in the transform's place
+    EXPECT_EQ(layout.slotOf[t], layout.slotOf[mesh]);
+    EXPECT_EQ(layout.slots[layout.slotOf[t]].node, mesh);
+
+    // A bound larger than the mesh's: culling by the mesh's alone would be wrong.
+    scene.setLocalBound(t, {glm::vec3(0.0f), 10.0f});
+    scene.update();
+    ASSERT_EQ(layout.size(), 3u);
+    const std::uint32_t slot = layout.slotOf[t];
+    EXPECT_EQ(layout.slots[slot].node, t);
+    EXPECT_EQ(layout.bound(slot).radius, 10.0f);
+    EXPECT_EQ(layout.slots[slot].childCount, 1u);
+    EXPECT_EQ(layout.slots[layout.slots[slot].firstChild].node, mesh);
+    expectLayoutMatchesScene(scene);
 }
