@@ -6,6 +6,12 @@
 
 namespace arcomp {
 
+namespace {
+// Kinds the select pass does nothing at but step down: with one child and
+// no bound of their own, they give their slot to the child.
+bool passesThroughKind(NodeKind k) { return k == NodeKind::Transform || k == NodeKind::Group; }
+} // namespace
+
 Scene::Scene() { addNode(kNoNode, NodeKind::Group, 0, "root"); }
 
 NodeId Scene::addNode(NodeId parent, NodeKind kind, std::uint32_t payload, std::string name) {
@@ -102,7 +108,7 @@ void Scene::updateJointMatrices() {
 void Scene::setLocalBound(NodeId node, const Sphere& bound) {
     // A transform or group with a bound of its own may no longer share its
     // child's slot (rebuildSiblingLayout).
-    if (kind_[node] == NodeKind::Transform || kind_[node] == NodeKind::Group) structureDirty_ = true;
+    if (passesThroughKind(kind_[node])) structureDirty_ = true;
     localBound_[node] = bound;
     localDirty_[node] = 1;
     anyLocalDirty_ = true;
@@ -161,11 +167,10 @@ void Scene::rebuildOrder() {
 // node's objects keep their own slots: its tree names them.
 void Scene::rebuildSiblingLayout() {
     const auto passesThrough = [this](NodeId n) {
-        return (kind_[n] == NodeKind::Transform || kind_[n] == NodeKind::Group) && firstChild_[n] != kNoNode &&
-               nextSibling_[firstChild_[n]] == kNoNode && localBound_[n].empty();
+        return passesThroughKind(kind_[n]) && firstChild_[n] != kNoNode && nextSibling_[firstChild_[n]] == kNoNode &&
+               localBound_[n].empty();
     };
-    const std::size_t nodes = order_.size();
-    layout_.slots.assign(nodes, {{glm::vec3(0.0f), -1.0f}, kNoNode, 0, 0, 0, NodeKind::Group});
+    layout_.slots.assign(order_.size(), {{glm::vec3(0.0f), -1.0f}, kNoNode, 0, 0, 0, NodeKind::Group});
     layout_.slotOf.assign(kind_.size(), ~std::uint32_t{0});  // nodes outside the root's tree have none
     std::vector<std::uint8_t> elided(kind_.size(), 0);
     layout_.slotOf[root()] = 0;
