@@ -84,7 +84,8 @@ struct RandomScene {
     }
 };
 
-// A transform or group with one child and no bound of its own shares that child's slot, unless a grouping node's tree names it.
+// A transform or group with one child and no bound of its own shares that
+// child's slot, unless a grouping node's tree names it.
 bool passesThrough(const Scene& scene, NodeId n) {
     const NodeKind k = scene.kind(n);
     const NodeId parent = scene.parent(n);
