@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -44,6 +45,17 @@ void main() {
 // (x, y, z) with depth = x fragX + y fragY + z. The projection's depth is
 // linear in 1 / eye depth (-P22 + P32 / d in NDC), and the card's 1 / d
 // is linear in the video pixel (u, v) = (fragX - 1/2, height - fragY - 1/2).
+// The OR of `count` words; a whole tile's count is a constant, so that loop
+// is vectorized at -O2 too.
+std::uint32_t wordsOr(const std::uint32_t* words, int count) {
+    std::uint32_t any = 0;
+    if (count == Compositor::kTile)
+        for (int x = 0; x < Compositor::kTile; ++x) any |= words[x];
+    else
+        for (int x = 0; x < count; ++x) any |= words[x];
+    return any;
+}
+
 glm::vec3 windowDepthPlane(const glm::mat4& projection, const glm::vec3& inverseDepth, int height) {
     const float half = 0.5f * projection[3][2];
     const float a = inverseDepth.x, b = inverseDepth.y;
@@ -116,16 +128,26 @@ void Compositor::endHoldout() { glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 void Compositor::findTiles(const cv::Mat& person) {
     const int tx = (size_.x + kTile - 1) / kTile, ty = (size_.y + kTile - 1) / kTile;
     std::vector<std::uint8_t> occupied(static_cast<std::size_t>(tx * ty), 0);
+    // A pixel's alpha byte as a bit mask over the pixel read as one word:
+    // a tile's row segment is then one OR over 32 words, which vectorizes.
+    constexpr std::array<std::uint8_t, 4> kAlphaBytes{0, 0, 0, 0xFF};
+    std::uint32_t alphaBits = 0;
+    std::memcpy(&alphaBits, kAlphaBytes.data(), sizeof alphaBits);
     cv::parallel_for_(cv::Range(0, ty), [&](const cv::Range& rows) {
-        for (int j = rows.start; j < rows.end; ++j)
+        for (int j = rows.start; j < rows.end; ++j) {
+            std::uint8_t* tileRow = &occupied[static_cast<std::size_t>(j * tx)];
             for (int y = j * kTile; y < std::min(size_.y, (j + 1) * kTile); ++y) {
-                const std::uint8_t* p = person.ptr<std::uint8_t>(y) + 3;
-                for (int x = 0; x < size_.x; ++x)
-                    if (p[4 * x]) occupied[static_cast<std::size_t>(j * tx + x / kTile)] = 1;
+                const auto* p = person.ptr<std::uint32_t>(y);
+                for (int i = 0; i < tx; ++i) {
+                    if (tileRow[i]) continue;
+                    tileRow[i] = (wordsOr(p + i * kTile, std::min(kTile, size_.x - i * kTile)) & alphaBits) != 0;
+                }
             }
+        }
     });
     tiles_.clear();
     tileCount_ = 0;
+    tileRows_ = {size_.y, 0};
     const auto ndcX = [&](int x) { return 2.0f * static_cast<float>(std::min(x, size_.x)) / static_cast<float>(size_.x) - 1.0f; };
     // Tile row j counts from the top of the image; NDC y from the bottom.
     const auto ndcY = [&](int y) { return 1.0f - 2.0f * static_cast<float>(std::min(y, size_.y)) / static_cast<float>(size_.y); };
@@ -136,6 +158,7 @@ void Compositor::findTiles(const cv::Mat& person) {
             const float y0 = ndcY((j + 1) * kTile), y1 = ndcY(j * kTile);
             tiles_.insert(tiles_.end(), {x0, y0, x1, y0, x1, y1, x0, y0, x1, y1, x0, y1});
             ++tileCount_;
+            tileRows_ = {std::min(tileRows_.x, j * kTile), std::min(size_.y, (j + 1) * kTile)};
         }
 }
 
@@ -164,7 +187,10 @@ void Compositor::person(const cv::Mat& person, const PersonDepths& depths, const
     if (tileCount_ == 0) return;
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glBindTexture(GL_TEXTURE_2D, personTexture_.get());
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size_.x, size_.y, GL_RGBA, GL_UNSIGNED_BYTE, person.data);
+    // Only the image rows the tiles cover: the draw samples no other texel.
+    // Texture rows are image rows, top first.
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, tileRows_.x, size_.x, tileRows_.y - tileRows_.x, GL_RGBA, GL_UNSIGNED_BYTE,
+                    person.ptr(tileRows_.x));
     uploadSlots(depths);
     std::array<glm::vec3, PersonDepths::kMaxPeople + 1> window{};
     for (std::size_t i = 0; i < window.size(); ++i) window[i] = windowDepthPlane(projection, depths.inverseDepth[i], size_.y);

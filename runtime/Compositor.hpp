@@ -88,6 +88,7 @@ private:
     GlBuffer tileBuffer_;
     std::vector<float> tiles_;  // two triangles per occupied tile, NDC x, y
     std::size_t tileCount_ = 0;
+    glm::ivec2 tileRows_{0};  // the image rows [x, y) the occupied tiles cover
     GlTexture slotTexture_;
     glm::ivec2 slotSize_{0};
     PersonProgram program_;

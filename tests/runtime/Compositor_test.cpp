@@ -123,6 +123,31 @@ TEST(Compositor, personCoversCgBehindWhereNotHeldOut) {
     EXPECT_EQ(at(out, 36, 5), cv::Vec4b(0, 255, 0, 255));
 }
 
+// Only the rows of the occupied tiles are uploaded: a tile drawn again must
+// show none of what the last frame's person left in the texture, in any of
+// its rows, and a tile left empty is not drawn at all.
+TEST(Compositor, aTileShowsNothingOfTheLastFramesPerson) {
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    const glm::ivec2 size{96, 96};
+    Compositor c(size);
+    const cv::Mat frame(size.y, size.x, CV_8UC3, cv::Scalar(90, 90, 90));
+    cv::Mat person(size.y, size.x, CV_8UC4, cv::Scalar(0, 0, 0, 0));
+    person(cv::Rect(0, 32, 96, 32)).setTo(cv::Scalar(0, 0, 200, 255));  // the middle tile row, solid red
+    c.begin(frame, {});
+    c.person(person, onePlane(), kProjection);
+    EXPECT_EQ(at(c.output().read(), 40, 40), cv::Vec4b(200, 0, 0, 255));
+    person.setTo(cv::Scalar(0, 0, 0, 0));
+    person.at<cv::Vec4b>(60, 40) = cv::Vec4b(0, 200, 0, 255);  // one green pixel, low in the middle tile
+    c.begin(frame, {});
+    c.person(person, onePlane(), kProjection);
+    const Image out = c.output().read();
+    EXPECT_EQ(c.personTiles(), 1u);
+    EXPECT_EQ(at(out, 40, 60), cv::Vec4b(0, 200, 0, 255));
+    for (const int y : {32, 40, 59, 61, 63})  // the same tile, above and below the pixel
+        EXPECT_EQ(at(out, 40, y), cv::Vec4b(90, 90, 90, 255)) << "row " << y;
+    EXPECT_EQ(at(out, 10, 40), cv::Vec4b(90, 90, 90, 255));  // a tile of the last frame's person, empty now
+}
+
 TEST(Compositor, halfTransparentPersonBlendsPremultiplied) {
     auto ctx = HeadlessContext::create(GlRequest::Auto);
     const glm::ivec2 size{16, 16};
