@@ -1,5 +1,6 @@
 #include "video/BackgroundMatte.hpp"
 
+#include "video/AreaShrink.hpp"
 #include "video/VideoError.hpp"
 
 #include <opencv2/bgsegm.hpp>
@@ -76,7 +77,7 @@ void BackgroundMatte::foreground(const cv::Mat& small) {
 
 void BackgroundMatte::apply(const cv::Mat& frame, cv::Mat& person) {
     CV_Assert(frame.type() == CV_8UC3);
-    if (spec_.scale < 1.0) cv::resize(frame, small_, {}, spec_.scale, spec_.scale, cv::INTER_AREA);
+    if (spec_.scale < 1.0) shrinkByArea(frame, spec_.scale, small_);
     else small_ = frame;
     foreground(small_);
     if (!openKernel_.empty()) cv::morphologyEx(mask_, mask_, cv::MORPH_OPEN, openKernel_);

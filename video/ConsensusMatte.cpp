@@ -1,5 +1,6 @@
 #include "video/ConsensusMatte.hpp"
 
+#include "video/AreaShrink.hpp"
 #include "video/VideoError.hpp"
 
 #include <opencv2/imgcodecs.hpp>
@@ -260,7 +261,7 @@ void ConsensusMatte::guidedEdges(const cv::Mat& frame) {
 
 void ConsensusMatte::apply(const cv::Mat& frame, cv::Mat& person) {
     CV_Assert(frame.type() == CV_8UC3);
-    if (spec_.scale < 1.0) cv::resize(frame, small_, {}, spec_.scale, spec_.scale, cv::INTER_AREA);
+    if (spec_.scale < 1.0) shrinkByArea(frame, spec_.scale, small_);
     else small_ = frame;
     model_.apply(small_, labels_);
     cleanUp();
