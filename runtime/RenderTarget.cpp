@@ -1,8 +1,10 @@
 #include "runtime/RenderTarget.hpp"
 
-#include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace arcomp {
 
@@ -47,12 +49,17 @@ Image readFramebuffer(GLuint framebuffer, glm::ivec2 size) {
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     // RGBA + UNSIGNED_BYTE is the one read format every GL and GLES accepts.
     glReadPixels(0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
-    // GL's rows run bottom to top; images run top to bottom.
+    // GL's rows run bottom to top; images run top to bottom. Whole rows
+    // through memcpy: a byte-wise swap costs a 1080p frame over a millisecond.
     const std::size_t row = static_cast<std::size_t>(size.x) * 4;
-    for (int y = 0; y < size.y / 2; ++y)
-        std::swap_ranges(img.rgba.begin() + static_cast<std::ptrdiff_t>(y * row),
-                         img.rgba.begin() + static_cast<std::ptrdiff_t>((y + 1) * row),
-                         img.rgba.begin() + static_cast<std::ptrdiff_t>((size.y - 1 - y) * row));
+    std::vector<std::uint8_t> spare(row);
+    for (int y = 0; y < size.y / 2; ++y) {
+        std::uint8_t* top = img.rgba.data() + static_cast<std::size_t>(y) * row;
+        std::uint8_t* bottom = img.rgba.data() + static_cast<std::size_t>(size.y - 1 - y) * row;
+        std::memcpy(spare.data(), top, row);
+        std::memcpy(top, bottom, row);
+        std::memcpy(bottom, spare.data(), row);
+    }
     return img;
 }
 
