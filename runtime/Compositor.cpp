@@ -84,27 +84,36 @@ Compositor::Compositor(glm::ivec2 size)
     glBindVertexArray(0);
 }
 
+void Compositor::makePlate(const cv::Mat& frame, cv::Mat& plate) {
+    if (frame.type() != CV_8UC3) throw std::invalid_argument("Compositor::makePlate: expected a BGR frame");
+    // RGBA is the fast upload path; rows flipped to GL's bottom-first order.
+    // Converted row by row into the flipped position: one pass, not two.
+    plate.create(frame.rows, frame.cols, CV_8UC4);
+    cv::parallel_for_(cv::Range(0, frame.rows), [&](const cv::Range& rows) {
+        for (int y = rows.start; y < rows.end; ++y) {
+            cv::Mat out = plate.row(frame.rows - 1 - y);
+            cv::cvtColor(frame.row(y), out, cv::COLOR_BGR2RGBA);
+        }
+    });
+}
+
 void Compositor::begin(const cv::Mat& frame, const CompositeSettings& settings) {
+    if (settings.backdropVideo) makePlate(frame, plate_);
+    beginWithPlate(plate_, settings);
+}
+
+void Compositor::beginWithPlate(const cv::Mat& plate, const CompositeSettings& settings) {
     output_.bind();
     glDepthMask(GL_TRUE);
     glStencilMask(0xFF);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     if (settings.backdropVideo) {
-        if (frame.cols != size_.x || frame.rows != size_.y || frame.type() != CV_8UC3)
-            throw std::invalid_argument("Compositor::begin: expected a BGR frame of the output size");
-        // Straight into the colour texture: no pass, just the upload. RGBA is
-        // the fast upload path; rows flipped to GL's bottom-first order.
-        // Converted row by row into the flipped position: one pass, not two.
-        plate_.create(frame.rows, frame.cols, CV_8UC4);
-        cv::parallel_for_(cv::Range(0, frame.rows), [&](const cv::Range& rows) {
-            for (int y = rows.start; y < rows.end; ++y) {
-                cv::Mat out = plate_.row(frame.rows - 1 - y);
-                cv::cvtColor(frame.row(y), out, cv::COLOR_BGR2RGBA);
-            }
-        });
+        if (plate.cols != size_.x || plate.rows != size_.y || plate.type() != CV_8UC4 || !plate.isContinuous())
+            throw std::invalid_argument("Compositor::begin: expected a video frame of the output size");
+        // Straight into the colour texture: no pass, just the upload.
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
         glBindTexture(GL_TEXTURE_2D, output_.colorTexture());
-        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size_.x, size_.y, GL_RGBA, GL_UNSIGNED_BYTE, plate_.data);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size_.x, size_.y, GL_RGBA, GL_UNSIGNED_BYTE, plate.data);
         glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     } else {
         const glm::vec4 c = settings.backdropColor;

@@ -56,8 +56,14 @@ public:
     Compositor(const Compositor&) = delete;
     Compositor& operator=(const Compositor&) = delete;
 
+    // The video frame as the output's colour texture takes it: RGBA, rows
+    // bottom first. A pipelined station makes it on its capture thread, so
+    // that the frame's own thread only uploads it. `frame`: CV_8UC3 BGR.
+    static void makePlate(const cv::Mat& frame, cv::Mat& plate);
     // `frame`: CV_8UC3 BGR at size(). Leaves output() bound.
     void begin(const cv::Mat& frame, const CompositeSettings& settings);
+    // begin() with the frame's plate from makePlate.
+    void beginWithPlate(const cv::Mat& plate, const CompositeSettings& settings);
     void beginHoldout();
     void endHoldout();
     // `person`: CV_8UC4 premultiplied BGRA at size(). `projection`: the
@@ -82,7 +88,7 @@ private:
 
     glm::ivec2 size_;
     RenderTarget output_;
-    cv::Mat plate_;  // the frame as RGBA, rows bottom first
+    cv::Mat plate_;  // begin()'s plate
     GlTexture personTexture_;
     GlVertexArray tileVao_;
     GlBuffer tileBuffer_;

@@ -110,6 +110,15 @@ Station::CapturedFrame Station::captureAndMatte() {
     f.newFrame = capture_.newFrame();
     f.seconds = capture_.seconds();
     f.frameSeconds = capture_.frameSeconds();
+    if (cfg_.compositing.compositor.backdropVideo) {
+        // Two plates in turn, as the matte's layers: the shown frame's stays
+        // whole while the next one is made.
+        if (f.newFrame || plates_[plate_].empty()) {
+            plate_ ^= 1U;
+            Compositor::makePlate(f.image, plates_[plate_]);
+        }
+        f.plate = plates_[plate_];
+    }
     f.captureMs = clock.lap();
     matte_.run(f.image, f.newFrame);
     f.person = matte_.person();
@@ -157,7 +166,7 @@ bool Station::frame() {
 
     const CompositorConfig& comp = cfg_.compositing.compositor;
     gpuTimes_->time(kGpuBackdrop, [&] {
-        compositor_->begin(shown_.image, {.backdropVideo = comp.backdropVideo, .backdropColor = comp.backdropColor});
+        compositor_->beginWithPlate(shown_.plate, {.backdropVideo = comp.backdropVideo, .backdropColor = comp.backdropColor});
     });
     if (shadows_)
         gpuTimes_->time(kGpuShadow, [&] {

@@ -50,6 +50,7 @@
 #include "runtime/Renderer.hpp"
 #include "runtime/StationConfig.hpp"
 
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <future>
@@ -141,6 +142,7 @@ private:
     struct CapturedFrame {
         bool ok = false;  // false: a replay input has ended
         cv::Mat image;    // BGR, video size; never written after capture
+        cv::Mat plate;    // the image as the compositor uploads it (Compositor::makePlate)
         cv::Mat person;   // premultiplied BGRA, video size
         bool newFrame = false;
         double seconds = 0, frameSeconds = 0;
@@ -154,6 +156,8 @@ private:
     StationConfig cfg_;
     CaptureStage capture_;
     MatteStage matte_;
+    std::array<cv::Mat, 2> plates_;
+    unsigned plate_ = 0;
     PersonDepthStage personDepths_;
     World world_;
     View view_;
