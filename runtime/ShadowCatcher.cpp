@@ -9,10 +9,14 @@ using namespace gl;
 
 namespace {
 
-// Drawn over the viewport (the scissor keeps it to the shadows' rectangle).
+// Drawn over the tiles that the shadows' rectangles cover, each pixel once.
 // The quarter-size mask is blurred by four bilinear taps, a texel apart: a
 // soft edge about eight output pixels wide, for four fetches a pixel (nine cost llvmpipe a millisecond more at 768x576).
 const char* const kApplyShader = R"(
+#ifdef VERTEX
+layout(location = 0) in vec2 aPosition;
+void main() { gl_Position = vec4(aPosition, 0.0, 1.0); }
+#else
 out vec4 fragColor;
 uniform sampler2D uMask;
 uniform vec2 uTexel;
@@ -24,9 +28,11 @@ void main() {
                     texture(uMask, uv + vec2(-0.5, 0.5) * uTexel).a + texture(uMask, uv + vec2(0.5, 0.5) * uTexel).a;
     fragColor = vec4(vec3(1.0 - uStrength * covered / 4.0), 1.0);
 }
+#endif
 )";
 
 constexpr int kBlurMarginPx = 12;
+constexpr int kTilePx = 8;
 
 } // namespace
 
@@ -38,11 +44,16 @@ glm::mat4 floorShadowMatrix(const glm::vec3& light) {
 }
 
 ShadowCatcher::ApplyProgram::ApplyProgram()
-    : program(fullScreenTriangle(kApplyShader)), mask(program.requiredLocation("uMask")), texel(program.requiredLocation("uTexel")),
+    : program(kApplyShader), mask(program.requiredLocation("uMask")), texel(program.requiredLocation("uTexel")),
       outputSize(program.requiredLocation("uOutputSize")), strength(program.requiredLocation("uStrength")) {}
 
 ShadowCatcher::ShadowCatcher(glm::ivec2 size)
-    : mask_(glm::max((size + 3) / 4, glm::ivec2(1))), emptyVao_(GlVertexArray::generate()) {
+    : mask_(glm::max((size + 3) / 4, glm::ivec2(1))), tileVao_(GlVertexArray::generate()), tileBuffer_(GlBuffer::generate()) {
+    glBindVertexArray(tileVao_.get());
+    glBindBuffer(GL_ARRAY_BUFFER, tileBuffer_.get());
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+    glBindVertexArray(0);
     glBindTexture(GL_TEXTURE_2D, mask_.colorTexture());
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -58,14 +69,16 @@ void ShadowCatcher::cast(const Scene& scene, const DrawList& cg, const View& vie
     const glm::mat4 viewProjection = view.viewProjection();
     const glm::vec2 size(output.size());
 
-    // The shadows' rectangle on screen: each item's bounding cube flattened
-    // and projected. A corner behind the eye makes it the whole screen.
-    glm::vec2 lo(size), hi(0.0f);
+    // Each item's shadow rectangle on screen: its bounding cube flattened and
+    // projected, widened by the blur. A corner behind the eye makes it the
+    // whole screen.
     models_.resize(cg.items.size());  // sized before any pointer into it is taken
     flattened_.clear();
+    rectangles_.clear();
     for (std::size_t i = 0; i < cg.items.size(); ++i) {
         const DrawItem& item = cg.items[i];
         const Sphere& b = scene.worldBound(item.node);
+        glm::vec2 lo(size), hi(0.0f);
         for (int corner = 0; corner < 8; ++corner) {
             const glm::vec3 offset((corner & 1) ? b.radius : -b.radius, (corner & 2) ? b.radius : -b.radius,
                                    (corner & 4) ? b.radius : -b.radius);
@@ -73,21 +86,22 @@ void ShadowCatcher::cast(const Scene& scene, const DrawList& cg, const View& vie
             if (clip.w <= 1e-6f) {
                 lo = glm::vec2(0.0f);
                 hi = size;
-                continue;
+                break;
             }
             const glm::vec2 pixel = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * size;
             lo = glm::min(lo, pixel);
             hi = glm::max(hi, pixel);
         }
+        const glm::ivec2 from = glm::clamp(glm::ivec2(glm::floor(lo)) - kBlurMarginPx, glm::ivec2(0), output.size());
+        const glm::ivec2 to = glm::clamp(glm::ivec2(glm::ceil(hi)) + kBlurMarginPx, glm::ivec2(0), output.size());
+        if (to.x > from.x && to.y > from.y) rectangles_.push_back({from, to});
         models_[i] = flatten * (item.model ? *item.model : scene.world(item.node));
         DrawItem flat = item;
         flat.model = &models_[i];
         flattened_.items.push_back(flat);
     }
-    const glm::ivec2 from = glm::clamp(glm::ivec2(glm::floor(lo)) - kBlurMarginPx, glm::ivec2(0), output.size());
-    const glm::ivec2 to = glm::clamp(glm::ivec2(glm::ceil(hi)) + kBlurMarginPx, glm::ivec2(0), output.size());
-    if (to.x <= from.x || to.y <= from.y) return;
-    pixels_ = static_cast<std::size_t>(to.x - from.x) * static_cast<std::size_t>(to.y - from.y);
+    coverTiles(output.size());
+    if (pixels_ == 0) return;
 
     // The same objects in the same places under the same view cast the same
     // mask: a static installation draws it once.
@@ -108,8 +122,6 @@ void ShadowCatcher::cast(const Scene& scene, const DrawList& cg, const View& vie
     glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
     glDisable(GL_CULL_FACE);
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(from.x, from.y, to.x - from.x, to.y - from.y);
     glEnable(GL_BLEND);
     glBlendFuncSeparate(GL_ZERO, GL_SRC_COLOR, GL_ZERO, GL_ONE);  // colour x shade, alpha kept
     apply_.program.use();
@@ -119,12 +131,42 @@ void ShadowCatcher::cast(const Scene& scene, const DrawList& cg, const View& vie
     glUniform2f(apply_.texel, 1.0f / static_cast<float>(mask_.size().x), 1.0f / static_cast<float>(mask_.size().y));
     glUniform2f(apply_.outputSize, size.x, size.y);
     glUniform1f(apply_.strength, shadow.strength);
-    glBindVertexArray(emptyVao_.get());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(tileVao_.get());
+    glBindBuffer(GL_ARRAY_BUFFER, tileBuffer_.get());
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(tiles_.size() * sizeof(float)), tiles_.data(), GL_STREAM_DRAW);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(tiles_.size() / 2));
     glBindVertexArray(0);
     glDisable(GL_BLEND);
-    glDisable(GL_SCISSOR_TEST);
     glDepthMask(GL_TRUE);
+}
+
+void ShadowCatcher::coverTiles(glm::ivec2 size) {
+    // Tiles, not the rectangles themselves: the pass multiplies, so a pixel
+    // under two rectangles must still be drawn once. Window coordinates,
+    // rows from the bottom, as the rectangles are.
+    const int tx = (size.x + kTilePx - 1) / kTilePx, ty = (size.y + kTilePx - 1) / kTilePx;
+    covered_.assign(static_cast<std::size_t>(tx * ty), 0);
+    for (const Rectangle& r : rectangles_)
+        for (int j = r.from.y / kTilePx; j <= (r.to.y - 1) / kTilePx; ++j)
+            for (int i = r.from.x / kTilePx; i <= (r.to.x - 1) / kTilePx; ++i) covered_[static_cast<std::size_t>(j * tx + i)] = 1;
+    tiles_.clear();
+    pixels_ = 0;
+    const auto ndc = [](int p, int extent) { return 2.0f * static_cast<float>(p) / static_cast<float>(extent) - 1.0f; };
+    for (int j = 0; j < ty; ++j)
+        for (int i = 0; i < tx;) {
+            if (!covered_[static_cast<std::size_t>(j * tx + i)]) {
+                ++i;
+                continue;
+            }
+            int end = i;  // a run of covered tiles is one quad
+            while (end < tx && covered_[static_cast<std::size_t>(j * tx + end)]) ++end;
+            const int x0 = i * kTilePx, x1 = std::min(size.x, end * kTilePx);
+            const int y0 = j * kTilePx, y1 = std::min(size.y, (j + 1) * kTilePx);
+            const float l = ndc(x0, size.x), r = ndc(x1, size.x), b = ndc(y0, size.y), t = ndc(y1, size.y);
+            tiles_.insert(tiles_.end(), {l, b, r, b, r, t, l, b, r, t, l, t});
+            pixels_ += static_cast<std::size_t>(x1 - x0) * static_cast<std::size_t>(y1 - y0);
+            i = end;
+        }
 }
 
 } // namespace arcomp

@@ -12,6 +12,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <set>
+#include <vector>
 
 using namespace arcomp;
 
@@ -30,10 +31,10 @@ TEST(ShadowCatcher, floorShadowMatrixDropsEachPointAlongTheLight) {
     EXPECT_NEAR(slanted.z, 3.0f, 1e-5f);
 }
 
-// A white 1 m cube standing on the floor at the origin; its transform node.
-NodeId addCubeOnTheFloor(Scene& scene) {
+// A white 1 m cube standing on the floor at (x, z); its transform node.
+NodeId addCubeOnTheFloor(Scene& scene, glm::vec2 at = {0.0f, 0.0f}) {
     const auto white = scene.addMaterial({.name = "white", .baseColor = {1, 1, 1, 1}});
-    const NodeId cube = scene.addTransform(scene.root(), glm::translate(glm::mat4(1), {0.0f, 0.5f, 0.0f}));
+    const NodeId cube = scene.addTransform(scene.root(), glm::translate(glm::mat4(1), {at.x, 0.5f, at.y}));
     scene.addMesh(cube, {scene.addGeometry(makeBox({1.0f, 1.0f, 1.0f})), white});
     scene.update();
     return cube;
@@ -45,14 +46,15 @@ struct Shadowed {
     std::size_t pixels = 0;
 };
 
-// A 1 m cube standing on the floor at the origin, over a uniform grey video,
-// seen from 6 m up and 6 m back; only the shadow is drawn, not the cube.
-Shadowed castOnGrey(const glm::vec3& light, float strength) {
+// 1 m cubes standing on the floor at `cubes` (x, z; the origin by default), over
+// a uniform grey video, seen from 6 m up and 6 m back; only the shadows are
+// drawn, not the cubes.
+Shadowed castOnGrey(const glm::vec3& light, float strength, const std::vector<glm::vec2>& cubes = {{0.0f, 0.0f}}) {
     auto ctx = HeadlessContext::create(GlRequest::Auto);
     const glm::ivec2 size{320, 240};
     World world;
     Scene& scene = world.scene;
-    addCubeOnTheFloor(scene);
+    for (const glm::vec2 at : cubes) addCubeOnTheFloor(scene, at);
     Shadowed out;
     out.view = View::lookAt({0, 6, 6}, {0, 0, 0}, {0, 1, 0}, 50, size);
     DrawList list;
@@ -109,6 +111,22 @@ TEST(ShadowCatcher, aLightOnTheOtherSideMovesTheShadowThereAndNoStrengthLeavesTh
     EXPECT_LT(l.m10 / l.m00 + 20.0, r.m10 / r.m00);
     const Shadowed none = castOnGrey({1.0f, 1.0f, 0.0f}, 0.0f);
     EXPECT_EQ(cv::countNonZero(none.grey != 200), 0);
+}
+
+// Two cubes far apart, across the view and in depth: the pass covers the
+// tiles around each shadow, not the rectangle spanning both. Two close
+// together, their rectangles overlapping: each pixel is darkened once, so
+// each shadow is as dark as a cube's alone.
+TEST(ShadowCatcher, eachShadowIsDrawnOnItsOwnTilesAndEachPixelOnce) {
+    const glm::vec3 light{1.0f, 1.0f, 0.0f};
+    const Shadowed one = castOnGrey(light, 0.5f), apart = castOnGrey(light, 0.5f, {{-3.0f, -3.0f}, {3.0f, 2.0f}});
+    for (const glm::vec2 shadow : {glm::vec2(-3.9f, -3.0f), glm::vec2(2.1f, 2.0f)})
+        EXPECT_NEAR(apart.grey.at<std::uint8_t>(cv::Point(pixelOf(apart.view, {shadow.x, 0.0f, shadow.y}))), 100, 2);
+    EXPECT_LT(apart.pixels, 5 * one.pixels / 2) << "each shadow's tiles, not the span of both";
+
+    const Shadowed close = castOnGrey(light, 0.5f, {{-0.7f, 0.0f}, {0.7f, 0.0f}});
+    for (const float x : {-1.6f, -1.0f, 0.2f})  // in the left cube's shadow, and in the right one's
+        EXPECT_NEAR(close.grey.at<std::uint8_t>(cv::Point(pixelOf(close.view, {x, 0.0f, 0.0f}))), 100, 2) << "x " << x;
 }
 
 // A static installation draws its shadow mask once; an object that moves
