@@ -81,7 +81,7 @@ struct RunResult {
 };
 
 RunResult run(Station& station, const std::string& source, int frames, int warmup, bool readBack = false) {
-    std::vector<double> capture, matte, update, sel, render, holdout, composite, output, total;
+    std::vector<double> capture, matte, track, update, sel, shadow, render, holdout, composite, output, total;
     std::chrono::steady_clock::time_point measuring;
     for (int i = 0; i < warmup + frames; ++i) {
         if (i == warmup) measuring = std::chrono::steady_clock::now();
@@ -98,8 +98,10 @@ RunResult run(Station& station, const std::string& source, int frames, int warmu
         if (i < warmup) continue;
         capture.push_back(s.captureMs);
         matte.push_back(s.matteMs);
+        track.push_back(s.trackMs);
         update.push_back(s.updateMs);
         sel.push_back(s.selectMs);
+        shadow.push_back(s.shadowMs);
         render.push_back(s.renderMs);
         holdout.push_back(s.holdoutMs);
         composite.push_back(s.compositeMs);
@@ -118,8 +120,10 @@ RunResult run(Station& station, const std::string& source, int frames, int warmu
     r.fps = total.empty() ? 0.0 : static_cast<double>(total.size()) / wallSeconds;
     r.medians.captureMs = median(capture);
     r.medians.matteMs = median(matte);
+    r.medians.trackMs = median(track);
     r.medians.updateMs = median(update);
     r.medians.selectMs = median(sel);
+    r.medians.shadowMs = median(shadow);
     r.medians.renderMs = median(render);
     r.medians.holdoutMs = median(holdout);
     r.medians.compositeMs = median(composite);
@@ -139,8 +143,10 @@ void writeRun(BenchJson& j, const RunResult& r) {
     j.beginObject("median_ms")
         .field("capture", m.captureMs)
         .field("matte", m.matteMs)
+        .field("track", m.trackMs)
         .field("update", m.updateMs)
         .field("select", m.selectMs)
+        .field("shadow", m.shadowMs)
         .field("cg_render", m.renderMs)
         .field("holdout", m.holdoutMs)
         .field("composite", m.compositeMs)
