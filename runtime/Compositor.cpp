@@ -134,8 +134,11 @@ void Compositor::beginHoldout() {
 
 void Compositor::endHoldout() { glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE); }
 
-void Compositor::findTiles(const cv::Mat& person) {
-    const int tx = (size_.x + kTile - 1) / kTile, ty = (size_.y + kTile - 1) / kTile;
+PersonTiles Compositor::findTiles(const cv::Mat& person) {
+    PersonTiles found;
+    if (person.type() != CV_8UC4 || person.empty()) return found;  // person() says what is wrong
+    const glm::ivec2 size(person.cols, person.rows);
+    const int tx = (size.x + kTile - 1) / kTile, ty = (size.y + kTile - 1) / kTile;
     std::vector<std::uint8_t> occupied(static_cast<std::size_t>(tx * ty), 0);
     // A pixel's alpha byte as a bit mask over the pixel read as one word:
     // a tile's row segment is then one OR over 32 words, which vectorizes.
@@ -145,30 +148,29 @@ void Compositor::findTiles(const cv::Mat& person) {
     cv::parallel_for_(cv::Range(0, ty), [&](const cv::Range& rows) {
         for (int j = rows.start; j < rows.end; ++j) {
             std::uint8_t* tileRow = &occupied[static_cast<std::size_t>(j * tx)];
-            for (int y = j * kTile; y < std::min(size_.y, (j + 1) * kTile); ++y) {
+            for (int y = j * kTile; y < std::min(size.y, (j + 1) * kTile); ++y) {
                 const auto* p = person.ptr<std::uint32_t>(y);
                 for (int i = 0; i < tx; ++i) {
                     if (tileRow[i]) continue;
-                    tileRow[i] = (wordsOr(p + i * kTile, std::min(kTile, size_.x - i * kTile)) & alphaBits) != 0;
+                    tileRow[i] = (wordsOr(p + i * kTile, std::min(kTile, size.x - i * kTile)) & alphaBits) != 0;
                 }
             }
         }
     });
-    tiles_.clear();
-    tileCount_ = 0;
-    tileRows_ = {size_.y, 0};
-    const auto ndcX = [&](int x) { return 2.0f * static_cast<float>(std::min(x, size_.x)) / static_cast<float>(size_.x) - 1.0f; };
+    found.rows = {size.y, 0};
+    const auto ndcX = [&](int x) { return 2.0f * static_cast<float>(std::min(x, size.x)) / static_cast<float>(size.x) - 1.0f; };
     // Tile row j counts from the top of the image; NDC y from the bottom.
-    const auto ndcY = [&](int y) { return 1.0f - 2.0f * static_cast<float>(std::min(y, size_.y)) / static_cast<float>(size_.y); };
+    const auto ndcY = [&](int y) { return 1.0f - 2.0f * static_cast<float>(std::min(y, size.y)) / static_cast<float>(size.y); };
     for (int j = 0; j < ty; ++j)
         for (int i = 0; i < tx; ++i) {
             if (!occupied[static_cast<std::size_t>(j * tx + i)]) continue;
             const float x0 = ndcX(i * kTile), x1 = ndcX((i + 1) * kTile);
             const float y0 = ndcY((j + 1) * kTile), y1 = ndcY(j * kTile);
-            tiles_.insert(tiles_.end(), {x0, y0, x1, y0, x1, y1, x0, y0, x1, y1, x0, y1});
-            ++tileCount_;
-            tileRows_ = {std::min(tileRows_.x, j * kTile), std::min(size_.y, (j + 1) * kTile)};
+            found.quads.insert(found.quads.end(), {x0, y0, x1, y0, x1, y1, x0, y0, x1, y1, x0, y1});
+            ++found.count;
+            found.rows = {std::min(found.rows.x, j * kTile), std::min(size.y, (j + 1) * kTile)};
         }
+    return found;
 }
 
 void Compositor::uploadSlots(const PersonDepths& depths) {
@@ -190,16 +192,22 @@ void Compositor::uploadSlots(const PersonDepths& depths) {
 }
 
 void Compositor::person(const cv::Mat& person, const PersonDepths& depths, const glm::mat4& projection) {
+    ownTiles_ = findTiles(person);
+    this->person(person, ownTiles_, depths, projection);
+}
+
+void Compositor::person(const cv::Mat& person, const PersonTiles& tiles, const PersonDepths& depths,
+                        const glm::mat4& projection) {
     if (person.cols != size_.x || person.rows != size_.y || person.type() != CV_8UC4 || !person.isContinuous())
         throw std::invalid_argument("Compositor::person: expected continuous premultiplied BGRA of the output size");
-    findTiles(person);
-    if (tileCount_ == 0) return;
+    tileCount_ = tiles.count;
+    if (tiles.count == 0) return;
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glBindTexture(GL_TEXTURE_2D, personTexture_.get());
     // Only the image rows the tiles cover: the draw samples no other texel.
     // Texture rows are image rows, top first.
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, tileRows_.x, size_.x, tileRows_.y - tileRows_.x, GL_RGBA, GL_UNSIGNED_BYTE,
-                    person.ptr(tileRows_.x));
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, tiles.rows.x, size_.x, tiles.rows.y - tiles.rows.x, GL_RGBA, GL_UNSIGNED_BYTE,
+                    person.ptr(tiles.rows.x));
     uploadSlots(depths);
     std::array<glm::vec3, PersonDepths::kMaxPeople + 1> window{};
     for (std::size_t i = 0; i < window.size(); ++i) window[i] = windowDepthPlane(projection, depths.inverseDepth[i], size_.y);
@@ -223,8 +231,9 @@ void Compositor::person(const cv::Mat& person, const PersonDepths& depths, const
     glUniform3fv(program_.depth, static_cast<GLsizei>(window.size()), glm::value_ptr(window[0]));
     glBindVertexArray(tileVao_.get());
     glBindBuffer(GL_ARRAY_BUFFER, tileBuffer_.get());
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(tiles_.size() * sizeof(float)), tiles_.data(), GL_STREAM_DRAW);
-    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(tiles_.size() / 2));
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(tiles.quads.size() * sizeof(float)), tiles.quads.data(),
+                 GL_STREAM_DRAW);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(tiles.quads.size() / 2));
     glBindVertexArray(0);
     glActiveTexture(GL_TEXTURE0);
     glDisable(GL_BLEND);

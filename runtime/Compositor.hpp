@@ -42,6 +42,14 @@
 
 namespace arcomp {
 
+// The tiles of a person layer that hold any of it, which is all that
+// Compositor::person draws and uploads.
+struct PersonTiles {
+    std::vector<float> quads;  // two triangles per occupied tile, NDC x, y
+    std::size_t count = 0;
+    glm::ivec2 rows{0};  // the image rows [x, y) the occupied tiles cover
+};
+
 struct CompositeSettings {
     bool backdropVideo = true;
     glm::vec4 backdropColor{0.0f, 0.0f, 0.0f, 1.0f};  // straight RGBA, used as given
@@ -69,6 +77,12 @@ public:
     // `person`: CV_8UC4 premultiplied BGRA at size(). `projection`: the
     // view's, to place each person's depth among the holdout's.
     void person(const cv::Mat& person, const PersonDepths& depths, const glm::mat4& projection);
+    // person() with the layer's tiles from findTiles, which a pipelined
+    // station finds on its capture thread.
+    void person(const cv::Mat& person, const PersonTiles& tiles, const PersonDepths& depths, const glm::mat4& projection);
+    // The kTile-square tiles where `person` (premultiplied BGRA) has alpha;
+    // none for an image of another type.
+    static PersonTiles findTiles(const cv::Mat& person);
 
     // The composited frame: a texture a window can sample or blit from.
     const RenderTarget& output() const { return output_; }
@@ -77,7 +91,6 @@ public:
     std::size_t personTiles() const { return tileCount_; }
 
 private:
-    void findTiles(const cv::Mat& person);
     void uploadSlots(const PersonDepths& depths);
 
     struct PersonProgram {
@@ -92,9 +105,8 @@ private:
     GlTexture personTexture_;
     GlVertexArray tileVao_;
     GlBuffer tileBuffer_;
-    std::vector<float> tiles_;  // two triangles per occupied tile, NDC x, y
+    PersonTiles ownTiles_;  // person()'s, when it finds them itself
     std::size_t tileCount_ = 0;
-    glm::ivec2 tileRows_{0};  // the image rows [x, y) the occupied tiles cover
     GlTexture slotTexture_;
     glm::ivec2 slotSize_{0};
     PersonProgram program_;

@@ -122,6 +122,7 @@ Station::CapturedFrame Station::captureAndMatte() {
     f.captureMs = clock.lap();
     matte_.run(f.image, f.newFrame);
     f.person = matte_.person();
+    f.tiles = Compositor::findTiles(f.person);
     f.matteMs = clock.lap();
     return f;
 }
@@ -183,7 +184,7 @@ bool Station::frame() {
     const PersonDepths& people = personDepths_.depths();
     gpuTimes_->time(kGpuHoldout,
                     [&] { holdout_.cut(world_, drawList_, view_, people.farthest(), *renderer_, *compositor_, stats_); });
-    gpuTimes_->time(kGpuPerson, [&] { compositor_->person(shown_.person, people, view_.projection); });
+    gpuTimes_->time(kGpuPerson, [&] { compositor_->person(shown_.person, shown_.tiles, people, view_.projection); });
     gpuTimes_->endFrame();
     stats_.personTiles = compositor_->personTiles();
     ++stats_.frame;

@@ -144,6 +144,7 @@ private:
         cv::Mat image;    // BGR, video size; never written after capture
         cv::Mat plate;    // the image as the compositor uploads it (Compositor::makePlate)
         cv::Mat person;   // premultiplied BGRA, video size
+        PersonTiles tiles;  // where the person layer has alpha (Compositor::findTiles)
         bool newFrame = false;
         double seconds = 0, frameSeconds = 0;
         double captureMs = 0, matteMs = 0;

@@ -148,6 +148,23 @@ TEST(Compositor, aTileShowsNothingOfTheLastFramesPerson) {
     EXPECT_EQ(at(out, 10, 40), cv::Vec4b(90, 90, 90, 255));  // a tile of the last frame's person, empty now
 }
 
+// The tiles a pipelined station finds on its capture thread: only where
+// alpha is not 0, at a ragged edge too, and the image rows they span.
+TEST(Compositor, findTilesKeepsTheTilesWithAlphaAndTheRowsTheySpan) {
+    cv::Mat person(70, 100, CV_8UC4, cv::Scalar(0, 0, 0, 0));  // 4 x 3 tiles, the last column and row partial
+    person.at<cv::Vec4b>(69, 99) = cv::Vec4b(0, 0, 0, 1);      // the last pixel of the last tile
+    person.at<cv::Vec4b>(40, 5) = cv::Vec4b(9, 9, 9, 0);       // colour without alpha: no tile
+    PersonTiles tiles = Compositor::findTiles(person);
+    EXPECT_EQ(tiles.count, 1u);
+    EXPECT_EQ(tiles.quads.size(), 12u);
+    EXPECT_EQ(tiles.rows, glm::ivec2(64, 70));
+    person.at<cv::Vec4b>(3, 40) = cv::Vec4b(0, 0, 0, 255);
+    tiles = Compositor::findTiles(person);
+    EXPECT_EQ(tiles.count, 2u);
+    EXPECT_EQ(tiles.rows, glm::ivec2(0, 70));
+    EXPECT_EQ(Compositor::findTiles(cv::Mat(70, 100, CV_8UC3, cv::Scalar(255, 255, 255))).count, 0u);
+}
+
 TEST(Compositor, halfTransparentPersonBlendsPremultiplied) {
     auto ctx = HeadlessContext::create(GlRequest::Auto);
     const glm::ivec2 size{16, 16};
