@@ -35,7 +35,9 @@ const char* const kMeshShader = R"(
 // is premultiplied and sRGB-encoded (Renderer.hpp).
 // SKINNED (with MAX_JOINTS) compiles the variant for skinned meshes: the
 // vertex is posed by its joints before anything else, so unskinned draws
-// run the shader without it.
+// run the shader without it. UNTEXTURED compiles the variant for materials
+// with no texture in any slot: a uniform test per slot still costs llvmpipe
+// about a third of a lit pixel.
 #ifdef VERTEX
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
@@ -97,6 +99,11 @@ uniform int uHasTangents;
 // Texture slots: base colour, metallic-roughness, normal, occlusion,
 // emissive. uTexCoord: which TEXCOORD set, -1 when the slot is empty.
 uniform int uTexCoord[5];
+#ifdef UNTEXTURED
+#define HAS_SLOT(slot) false
+#else
+#define HAS_SLOT(slot) (uTexCoord[slot] >= 0)
+#endif
 uniform mat3 uUvTransform[5];
 uniform sampler2D uBaseColorTexture;
 uniform sampler2D uMetallicRoughnessTexture;
@@ -225,7 +232,7 @@ vec2 environmentUv(vec3 d) {
 // and texture coordinates (as glTF asks for MikkTSpace there, this is an
 // approximation that agrees on flat, unmirrored mappings).
 vec3 shadingNormal(vec3 n) {
-    if (uTexCoord[2] < 0) return n;
+    if (!HAS_SLOT(2)) return n;
     vec2 uv = slotUv(2);
     vec3 t, b;
     if (uHasTangents != 0) {
@@ -253,17 +260,17 @@ vec3 shadingNormal(vec3 n) {
 
 void main() {
     vec4 base = uBaseColor * vColor;
-    if (uTexCoord[0] >= 0) base *= texture(uBaseColorTexture, slotUv(0));  // decoded from sRGB by the format
+    if (HAS_SLOT(0)) base *= texture(uBaseColorTexture, slotUv(0));  // decoded from sRGB by the format
     if (uAlphaMode == 1 && base.a < uAlphaCutoff) discard;
     float alpha = (uAlphaMode == 2 ? base.a : 1.0) * uFade;
     vec3 emission = uEmissive;
-    if (uTexCoord[4] >= 0) emission *= texture(uEmissiveTexture, slotUv(4)).rgb;
+    if (HAS_SLOT(4)) emission *= texture(uEmissiveTexture, slotUv(4)).rgb;
 
 #if SHADING == 0
     vec3 lit = base.rgb;
 #else
     float metallic = uMetallic, roughness = uRoughness;
-    if (uTexCoord[1] >= 0) {
+    if (HAS_SLOT(1)) {
         vec4 mr = texture(uMetallicRoughnessTexture, slotUv(1));
         roughness *= mr.g;
         metallic *= mr.b;
@@ -282,7 +289,7 @@ void main() {
     directLight(n, v, f0, roughness, diffuse, specular);
     float nv = clamp(dot(n, v), 1e-4, 1.0);
     float occlusion = 1.0;
-    if (uTexCoord[3] >= 0) occlusion = 1.0 + uOcclusionStrength * (texture(uOcclusionTexture, slotUv(3)).r - 1.0);
+    if (HAS_SLOT(3)) occlusion = 1.0 + uOcclusionStrength * (texture(uOcclusionTexture, slotUv(3)).r - 1.0);
     // Karis 2013 split sum: prefiltered radiance times F0 * scale + bias.
     vec2 scaleBias = texture(uSplitSum, vec2(nv, roughness)).rg;
     vec3 r = reflect(-v, n);
@@ -352,10 +359,12 @@ const ImageBasedLight& neutralLight() {
 } // namespace
 
 // Lighting's uniforms are read only where a level lights, and the compiler
-// drops them elsewhere: those may be -1. The rest every level reads.
-Renderer::MeshProgram::MeshProgram(Shading shading, bool skinned)
+// drops them elsewhere: those may be -1, as may the texture slots' in the
+// untextured variant. The rest every level reads.
+Renderer::MeshProgram::MeshProgram(Shading shading, bool skinned, bool textured)
     : program(kMeshShader, "#define SHADING " + std::to_string(static_cast<int>(shading)) + "\n" +
-                               (skinned ? "#define SKINNED\n#define MAX_JOINTS " + std::to_string(kMaxJointsPerDraw) + "\n" : "")),
+                               (skinned ? "#define SKINNED\n#define MAX_JOINTS " + std::to_string(kMaxJointsPerDraw) + "\n" : "") +
+                               (textured ? "" : "#define UNTEXTURED\n")),
       model(program.requiredLocation("uModel")),
       viewProjection(program.requiredLocation("uViewProjection")),
       normalMatrix(program.location("uNormalMatrix")),
@@ -378,8 +387,8 @@ Renderer::MeshProgram::MeshProgram(Shading shading, bool skinned)
       fade(program.requiredLocation("uFade")),
       doubleSided(program.location("uDoubleSided")),
       hasTangents(program.location("uHasTangents")),
-      texCoord(program.requiredLocation("uTexCoord")),
-      uvTransform(program.requiredLocation("uUvTransform")),
+      texCoord(textured ? program.requiredLocation("uTexCoord") : program.location("uTexCoord")),
+      uvTransform(textured ? program.requiredLocation("uUvTransform") : program.location("uUvTransform")),
       jointMatrices(skinned ? program.requiredLocation("uJointMatrices") : -1) {
     const char* const samplers[kSlotCount] = {"uBaseColorTexture", "uMetallicRoughnessTexture", "uNormalTexture",
                                               "uOcclusionTexture", "uEmissiveTexture"};
@@ -391,7 +400,7 @@ Renderer::MeshProgram::MeshProgram(Shading shading, bool skinned)
 }
 
 Renderer::Renderer() {
-    for (int s = 0; s < kShadingCount; ++s) programs_[static_cast<std::size_t>(s)].emplace(static_cast<Shading>(s), false);
+    for (int s = 0; s < kShadingCount; ++s) program(static_cast<Shading>(s), false, true);
     const SplitSumTable& table = sharedSplitSum();
     splitSum_ = GlTexture::generate();
     glBindTexture(GL_TEXTURE_2D, splitSum_.get());
@@ -423,10 +432,12 @@ void Renderer::setEnvironment(const ImageBasedLight& light) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
-const Renderer::MeshProgram& Renderer::program(Shading shading, bool skinned) {
-    auto& slot = (skinned ? skinnedPrograms_ : programs_)[static_cast<std::size_t>(shading)];
-    // A skinned variant is compiled on its first draw: a scene without skins never pays for it.
-    if (!slot) slot.emplace(shading, skinned);
+const Renderer::MeshProgram& Renderer::program(Shading shading, bool skinned, bool textured) {
+    const std::size_t variant = static_cast<std::size_t>(shading) + kShadingCount * (2u * skinned + textured);
+    auto& slot = programs_[variant];
+    // Variants other than the textured unskinned ones are compiled on their
+    // first draw: a scene without skins never pays for them.
+    if (!slot) slot.emplace(shading, skinned, textured);
     return *slot;
 }
 
@@ -520,7 +531,12 @@ void Renderer::drawItem(const Scene& scene, const DrawItem& item, const View& vi
     const Shading shading = m.unlit || settings.coverageOnly ? Shading::Unlit : item.shading;
     const GpuGeometry& g = geometry(scene, item.part.geometry);
     const bool skinned = item.part.skin != kNoSkin && g.hasSkinInfluences && item.part.skin < scene.skinCount();
-    const MeshProgram& p = program(shading, skinned);
+    const auto slots = m.textures();
+    std::array<GLuint, kSlotCount> textures{};
+    for (int slot = 0; slot < kSlotCount; ++slot)  // base colour and emission are colours (sRGB); the rest are data
+        textures[static_cast<std::size_t>(slot)] = texture(scene, *slots[static_cast<std::size_t>(slot)], slot == 0 || slot == 4);
+    const bool textured = std::any_of(textures.begin(), textures.end(), [](GLuint t) { return t != 0; });
+    const MeshProgram& p = program(shading, skinned, textured);
     p.program.use();
     const glm::mat4& model = item.model ? *item.model : scene.world(item.node);
     const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(model)));
@@ -554,14 +570,11 @@ void Renderer::drawItem(const Scene& scene, const DrawItem& item, const View& vi
     glUniform1f(p.fade, item.fade);
     glUniform1i(p.doubleSided, m.doubleSided ? 1 : 0);
 
-    const auto slots = m.textures();
     std::array<GLint, kSlotCount> texCoord{};
     std::array<glm::mat3, kSlotCount> uvTransform{};
     for (int slot = 0; slot < kSlotCount; ++slot) {
         const TextureRef& ref = *slots[static_cast<std::size_t>(slot)];
-        // Base colour and emission are colours (sRGB); the rest are data.
-        const bool srgb = slot == 0 || slot == 4;
-        const GLuint tex = texture(scene, ref, srgb);
+        const GLuint tex = textures[static_cast<std::size_t>(slot)];
         texCoord[static_cast<std::size_t>(slot)] = tex ? std::clamp(ref.texCoord, 0, 1) : -1;
         uvTransform[static_cast<std::size_t>(slot)] = ref.transform.matrix();
         glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + slot));

@@ -72,9 +72,10 @@ private:
         bool hasTangents = false, hasColors = false, hasSkinInfluences = false;
     };
     // One shading level's program and its uniforms' locations, looked up
-    // once: a draw item sets a dozen uniforms.
+    // once: a draw item sets a dozen uniforms. `textured`: the variant for
+    // materials with a texture in any slot.
     struct MeshProgram {
-        MeshProgram(Shading shading, bool skinned);
+        MeshProgram(Shading shading, bool skinned, bool textured);
         ShaderProgram program;
         GLint model, viewProjection, normalMatrix, eye, lightDirection, lightRadiance, irradiance,
             environmentIntensity, specularLevels, specularEnvironment, splitSum, baseColor, metallic, roughness, emissive,
@@ -85,11 +86,12 @@ private:
     // both a colour (sRGB-decoded) and data, and sampled in different ways.
     using TextureKey = std::tuple<int, bool, TextureFilter, TextureFilter, TextureWrap, TextureWrap>;
     const GpuGeometry& geometry(const Scene& scene, std::uint32_t id);
-    const MeshProgram& program(Shading shading, bool skinned);
+    const MeshProgram& program(Shading shading, bool skinned, bool textured);
     GLuint texture(const Scene& scene, const TextureRef& ref, bool srgb);
     void drawItem(const Scene& scene, const DrawItem& item, const View& view, const RenderSettings& settings);
 
-    std::array<std::optional<MeshProgram>, kShadingCount> programs_, skinnedPrograms_;
+    // By shading, then skinned and textured (program()).
+    std::array<std::optional<MeshProgram>, kShadingCount * 4> programs_;
     std::vector<float> jointRows_;  // scratch: a skinned draw's joint matrices as the shader takes them
     const Scene* scene_ = nullptr;
     std::vector<GpuGeometry> geometries_;

@@ -38,13 +38,21 @@ double meanDifference(const Image& a, const Image& b) {
     return sum / static_cast<double>(a.rgba.size());
 }
 
-// A red box on the left, a green sphere on the right, seen from +Z.
-Image renderTestScene(GlRequest request, Shading shading, glm::ivec2 size = {320, 240}) {
+// A red box on the left, a green sphere on the right, seen from +Z;
+// `whiteTexture`: each with a white base colour texture, which changes
+// nothing but which program draws it (Renderer.cpp, UNTEXTURED).
+Image renderTestScene(GlRequest request, Shading shading, glm::ivec2 size = {320, 240}, bool whiteTexture = false) {
     auto ctx = HeadlessContext::create(request);
     World world;
     Scene& scene = world.scene;
-    const auto red = scene.addMaterial({.name = "red", .baseColor = {1, 0, 0, 1}});
-    const auto green = scene.addMaterial({.name = "green", .baseColor = {0, 1, 0, 1}});
+    Material redMaterial{.name = "red", .baseColor = {1, 0, 0, 1}};
+    Material greenMaterial{.name = "green", .baseColor = {0, 1, 0, 1}};
+    if (whiteTexture) {
+        const auto white = static_cast<int>(scene.addImage({.width = 2, .height = 2, .rgba = std::vector<std::uint8_t>(16, 255)}));
+        redMaterial.baseColorTexture.image = greenMaterial.baseColorTexture.image = white;
+    }
+    const auto red = scene.addMaterial(redMaterial);
+    const auto green = scene.addMaterial(greenMaterial);
     const NodeId left = scene.addTransform(scene.root(), glm::translate(glm::mat4(1), {-1.2f, 0, 0}));
     scene.addMesh(left, {scene.addGeometry(makeBox({1.5f, 1.5f, 1.5f})), red});
     const NodeId right = scene.addTransform(scene.root(), glm::translate(glm::mat4(1), {1.2f, 0, 0}));
@@ -104,6 +112,17 @@ TEST_P(RendererOnEachApi, eachShadingLevelGivesADifferentImageWithTheSameCoverag
 
 INSTANTIATE_TEST_SUITE_P(Apis, RendererOnEachApi, ::testing::Values(GlRequest::Gl33, GlRequest::Es3),
                          [](const auto& info) { return info.param == GlRequest::Gl33 ? "gl33" : "es3"; });
+
+// Materials without textures are drawn by a program compiled without the
+// texture slots; it must give the very image the general program gives.
+TEST_P(RendererOnEachApi, aMaterialWithoutTexturesDrawsAsOneWithAWhiteTexture) {
+    for (int s = 0; s < kShadingCount; ++s) {
+        const auto shading = static_cast<Shading>(s);
+        const Image plain = renderTestScene(GetParam(), shading), white = renderTestScene(GetParam(), shading, {320, 240}, true);
+        EXPECT_GT(coverage(plain), 0.1);
+        EXPECT_TRUE(plain.rgba == white.rgba) << toString(shading) << ": mean difference " << meanDifference(plain, white);
+    }
+}
 
 TEST(Renderer, desktopAndEsImagesAgree) {
     const Image gl = renderTestScene(GlRequest::Gl33, Shading::Phong);
