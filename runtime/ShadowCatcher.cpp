@@ -152,21 +152,34 @@ void ShadowCatcher::coverTiles(glm::ivec2 size) {
     tiles_.clear();
     pixels_ = 0;
     const auto ndc = [](int p, int extent) { return 2.0f * static_cast<float>(p) / static_cast<float>(extent) - 1.0f; };
-    for (int j = 0; j < ty; ++j)
-        for (int i = 0; i < tx;) {
-            if (!covered_[static_cast<std::size_t>(j * tx + i)]) {
-                ++i;
-                continue;
-            }
-            int end = i;  // a run of covered tiles is one quad
-            while (end < tx && covered_[static_cast<std::size_t>(j * tx + end)]) ++end;
-            const int x0 = i * kTilePx, x1 = std::min(size.x, end * kTilePx);
-            const int y0 = j * kTilePx, y1 = std::min(size.y, (j + 1) * kTilePx);
+    // One quad per run of covered tiles in a row, and one for the rows
+    // above it while they have the same runs: llvmpipe sets up every
+    // triangle, and thin ones cost more to set up than to fill.
+    std::vector<glm::ivec2> runs, blockRuns;  // tile columns [x, y)
+    int blockFrom = 0;
+    const auto closeBlock = [&](int rowEnd) {
+        const int y0 = blockFrom * kTilePx, y1 = std::min(size.y, rowEnd * kTilePx);
+        for (const glm::ivec2 run : blockRuns) {
+            const int x0 = run.x * kTilePx, x1 = std::min(size.x, run.y * kTilePx);
             const float l = ndc(x0, size.x), r = ndc(x1, size.x), b = ndc(y0, size.y), t = ndc(y1, size.y);
             tiles_.insert(tiles_.end(), {l, b, r, b, r, t, l, b, r, t, l, t});
             pixels_ += static_cast<std::size_t>(x1 - x0) * static_cast<std::size_t>(y1 - y0);
-            i = end;
         }
+    };
+    for (int j = 0; j < ty; ++j) {
+        runs.clear();
+        for (int i = 0; i < tx; ++i) {
+            if (!covered_[static_cast<std::size_t>(j * tx + i)]) continue;
+            const int first = i;
+            while (i < tx && covered_[static_cast<std::size_t>(j * tx + i)]) ++i;
+            runs.push_back({first, i});
+        }
+        if (runs == blockRuns) continue;
+        closeBlock(j);
+        blockRuns.swap(runs);
+        blockFrom = j;
+    }
+    closeBlock(ty);
 }
 
 } // namespace arcomp
