@@ -41,10 +41,6 @@ void main() {
 #endif
 )";
 
-// A card's window depth as a plane over the fragment's window position:
-// (x, y, z) with depth = x fragX + y fragY + z. The projection's depth is
-// linear in 1 / eye depth (-P22 + P32 / d in NDC), and the card's 1 / d
-// is linear in the video pixel (u, v) = (fragX - 1/2, height - fragY - 1/2).
 // The OR of `count` words; a whole tile's count is a constant, so that loop
 // is vectorized at -O2 too.
 std::uint32_t wordsOr(const std::uint32_t* words, int count) {
@@ -56,6 +52,10 @@ std::uint32_t wordsOr(const std::uint32_t* words, int count) {
     return any;
 }
 
+// A card's window depth as a plane over the fragment's window position:
+// (x, y, z) with depth = x fragX + y fragY + z. The projection's depth is
+// linear in 1 / eye depth (-P22 + P32 / d in NDC), and the card's 1 / d
+// is linear in the video pixel (u, v) = (fragX - 1/2, height - fragY - 1/2).
 glm::vec3 windowDepthPlane(const glm::mat4& projection, const glm::vec3& inverseDepth, int height) {
     const float half = 0.5f * projection[3][2];
     const float a = inverseDepth.x, b = inverseDepth.y;

@@ -113,11 +113,11 @@ Station::CapturedFrame Station::captureAndMatte() {
     if (cfg_.compositing.compositor.backdropVideo) {
         // Two plates in turn, as the matte's layers: the shown frame's stays
         // whole while the next one is made.
-        if (f.newFrame || plates_[plate_].empty()) {
-            plate_ ^= 1U;
-            Compositor::makePlate(f.image, plates_[plate_]);
+        if (f.newFrame || plates_[currentPlate_].empty()) {
+            currentPlate_ ^= 1U;
+            Compositor::makePlate(f.image, plates_[currentPlate_]);
         }
-        f.plate = plates_[plate_];
+        f.plate = plates_[currentPlate_];
     }
     f.captureMs = clock.lap();
     matte_.run(f.image, f.newFrame);

@@ -22,8 +22,10 @@
 // Replay pulls frames in order with no drops, so the same input gives
 // bit-identical output images on the same machine.
 //
-// Pipelined: the CPU front of frame N+1 (capture with its decode, then the
-// matte) runs on a thread of its own while frame N's GL stages run here,
+// Pipelined: the CPU front of frame N+1 (capture with its decode and the
+// video plate the compositor uploads, then the matte and the tiles its
+// person layer covers) runs on a thread of its own while frame N's GL
+// stages run here,
 // and frame() returns once both are done, so no thread runs between calls.
 // Each frame is still composited with its own video image and its own
 // matte, in order, so replay stays deterministic; the last frame of a file
@@ -158,7 +160,7 @@ private:
     CaptureStage capture_;
     MatteStage matte_;
     std::array<cv::Mat, 2> plates_;
-    unsigned plate_ = 0;
+    unsigned currentPlate_ = 0;
     PersonDepthStage personDepths_;
     World world_;
     View view_;
