@@ -4,7 +4,7 @@
 // stand on the place rather than float over it. Each object is flattened
 // onto the floor (y = 0) along the light into a quarter-size coverage mask;
 // the video is then multiplied by 1 - strength x the mask, blurred a few
-// pixels, and only on the 32-pixel tiles that an object's shadow rectangle
+// pixels, and only on the 8-pixel tiles that an object's shadow rectangle
 // on screen touches (llvmpipe pays about 10 ms for a full-screen pass at
 // 1080p, and objects spread over the floor leave most of it between them).
 //
@@ -71,7 +71,7 @@ private:
     std::vector<glm::mat4> models_;
     std::vector<Rectangle> rectangles_;
     std::vector<std::uint8_t> covered_;  // per tile, rows from the bottom
-    std::vector<float> tiles_;           // two triangles per run of covered tiles, NDC x, y
+    std::vector<float> tiles_;           // two triangles per quad of covered tiles, NDC x, y
     GlVertexArray tileVao_;
     GlBuffer tileBuffer_;
     ApplyProgram apply_;
