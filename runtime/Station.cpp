@@ -122,7 +122,10 @@ Station::CapturedFrame Station::captureAndMatte() {
     f.captureMs = clock.lap();
     matte_.run(f.image, f.newFrame);
     f.person = matte_.person();
-    f.tiles = Compositor::findTiles(f.person);
+    // The layer's tiles change only with the layer: a live frame that did
+    // not change keeps both.
+    if (f.newFrame || !personTiles_) personTiles_ = Compositor::findTiles(f.person);
+    f.tiles = *personTiles_;
     f.matteMs = clock.lap();
     return f;
 }

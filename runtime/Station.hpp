@@ -161,6 +161,7 @@ private:
     MatteStage matte_;
     std::array<cv::Mat, 2> plates_;
     unsigned currentPlate_ = 0;
+    std::optional<PersonTiles> personTiles_;  // the matte's current layer's
     PersonDepthStage personDepths_;
     World world_;
     View view_;
