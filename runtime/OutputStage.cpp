@@ -43,10 +43,10 @@ void OutputStage::writeFiles(std::uint64_t index, const RenderTarget& frame, con
         if (!cv::imwrite(file.string(), alphaOf(person))) throw VideoError(file.string(), "matte", "cannot write");
     }
     if (config_.pngDir.empty() && !video_) return;
-    const Image image = frame.read();
-    if (!config_.pngDir.empty()) writePng(config_.pngDir / numbered("frame", index), image);
+    frame.read(image_);
+    if (!config_.pngDir.empty()) writePng(config_.pngDir / numbered("frame", index), image_);
     if (video_) {
-        const cv::Mat rgba(image.height, image.width, CV_8UC4, const_cast<std::uint8_t*>(image.rgba.data()));
+        const cv::Mat rgba(image_.height, image_.width, CV_8UC4, image_.rgba.data());
         cv::cvtColor(rgba, bgr_, cv::COLOR_RGBA2BGR);
         video_->write(bgr_);
     }

@@ -42,6 +42,7 @@ private:
 
     OutputConfig config_;
     std::unique_ptr<VideoFileWriter> video_;
+    Image image_;  // the frame read back, kept so that its 8 MB (at 1080p) are not allocated again
     cv::Mat bgr_;
     std::uint64_t next_ = 0;
     std::uint64_t failures_ = 0;

@@ -42,6 +42,11 @@ void RenderTarget::bind() const {
 
 Image readFramebuffer(GLuint framebuffer, glm::ivec2 size) {
     Image img;
+    readFramebuffer(framebuffer, size, img);
+    return img;
+}
+
+void readFramebuffer(GLuint framebuffer, glm::ivec2 size, Image& img) {
     img.width = size.x;
     img.height = size.y;
     img.rgba.resize(static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y) * 4);
@@ -60,9 +65,10 @@ Image readFramebuffer(GLuint framebuffer, glm::ivec2 size) {
         std::memcpy(top, bottom, row);
         std::memcpy(bottom, spare.data(), row);
     }
-    return img;
 }
 
 Image RenderTarget::read() const { return readFramebuffer(framebuffer_.get(), size_); }
+
+void RenderTarget::read(Image& into) const { readFramebuffer(framebuffer_.get(), size_, into); }
 
 } // namespace arcomp

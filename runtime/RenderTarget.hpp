@@ -23,6 +23,9 @@ public:
 
     void bind() const;  // also sets the viewport to the whole target
     Image read() const;
+    // Into an image kept between frames: a 1080p frame is 8 MB, and a fresh
+    // buffer each frame pays for its zero fill and page faults again.
+    void read(Image& into) const;
     glm::ivec2 size() const { return size_; }
     GLuint colorTexture() const { return color_.get(); }
     GLuint framebuffer() const { return framebuffer_.get(); }
@@ -36,5 +39,6 @@ private:
 
 // Reads a framebuffer's colour (0: the window's) as an image, rows top to bottom.
 Image readFramebuffer(GLuint framebuffer, glm::ivec2 size);
+void readFramebuffer(GLuint framebuffer, glm::ivec2 size, Image& into);
 
 } // namespace arcomp

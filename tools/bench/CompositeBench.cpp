@@ -83,6 +83,7 @@ struct RunResult {
 RunResult run(Station& station, const std::string& source, int frames, int warmup, bool readBack = false) {
     std::vector<double> capture, matte, track, update, sel, shadow, render, holdout, composite, output, total;
     std::chrono::steady_clock::time_point measuring;
+    Image img;  // kept, as OutputStage keeps its own
     for (int i = 0; i < warmup + frames; ++i) {
         if (i == warmup) measuring = std::chrono::steady_clock::now();
         if (!station.frame()) break;
@@ -90,7 +91,7 @@ RunResult run(Station& station, const std::string& source, int frames, int warmu
         if (readBack) {
             // What any output needs at least: the frame in CPU memory.
             const auto t0 = std::chrono::steady_clock::now();
-            const Image img = station.compositedFrame().read();
+            station.compositedFrame().read(img);
             const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
             s.outputMs += ms;
             s.totalMs += ms;
