@@ -62,7 +62,7 @@ std::optional<GlApiKind> parseGlApi(std::string_view text, bool& isAuto);
     X(TEXPARAMETERI, glTexParameteri) X(UNIFORM1F, glUniform1f) X(UNIFORM3FV, glUniform3fv) X(UNIFORM1I, glUniform1i) X(UNIFORM1IV, glUniform1iv) X(UNIFORM2F, glUniform2f) \
     X(UNIFORM3F, glUniform3f) X(UNIFORM4F, glUniform4f) X(UNIFORMMATRIX3FV, glUniformMatrix3fv) X(UNIFORMMATRIX3X4FV, glUniformMatrix3x4fv)                   \
     X(UNIFORMMATRIX4FV, glUniformMatrix4fv) X(USEPROGRAM, glUseProgram) X(VERTEXATTRIBPOINTER, glVertexAttribPointer) \
-    X(VIEWPORT, glViewport) X(BLITFRAMEBUFFER, glBlitFramebuffer)
+    X(VIEWPORT, glViewport) X(BLITFRAMEBUFFER, glBlitFramebuffer) X(MAPBUFFERRANGE, glMapBufferRange) X(UNMAPBUFFER, glUnmapBuffer)
 
 namespace gl {
 #define ARCOMP_DECLARE_GL(suffix, name) inline PFNGL##suffix##PROC name = nullptr;

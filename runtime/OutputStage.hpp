@@ -1,6 +1,8 @@
 #pragma once
 // The frame's files: the composited frame as numbered PNGs and/or one video
-// file, and the matte's alpha as numbered PNGs for inspection. A write that
+// file, and the matte's alpha as numbered PNGs for inspection. On a GPU the
+// frame is read back asynchronously (FrameReadback): its files are written
+// one call later, and finish() writes the last. A write that
 // fails (a full disk, a folder gone read-only) is counted and kept for the
 // operator, not thrown: the kiosk goes on showing its frames, and frames
 // written before stay whole (PNGs are written beside and renamed).
@@ -10,6 +12,7 @@
 //   out.finish();                                                    // closes the video file
 
 #include "runtime/CompositingConfig.hpp"
+#include "runtime/FrameReadback.hpp"
 #include "runtime/RenderTarget.hpp"
 #include "video/VideoFileWriter.hpp"
 
@@ -25,23 +28,29 @@ namespace arcomp {
 class OutputStage {
 public:
     // Throws VideoError when the video file cannot be opened.
-    OutputStage(const OutputConfig& config, double fps, glm::ivec2 size);
+    OutputStage(const OutputConfig& config, double fps, glm::ivec2 size,
+                FrameReadback::Mode readback = FrameReadback::Mode::Auto);
 
     // Files are numbered from here: a reloaded station continues where the
     // previous one stopped instead of overwriting its frames.
     void setFirstIndex(std::uint64_t index) { next_ = index; }
     void write(const RenderTarget& frame, const cv::Mat& person);
-    // Closes the video file. Safe to call twice.
+    // Writes the frame still being read back and closes the video file.
+    // Safe to call twice; never throws (a failure is counted).
     void finish();
 
     std::uint64_t failures() const { return failures_; }
     const std::string& lastError() const { return lastError_; }
 
 private:
-    void writeFiles(std::uint64_t index, const RenderTarget& frame, const cv::Mat& person);
+    void writeMatte(std::uint64_t index, const cv::Mat& person);
+    void writeFrame(std::uint64_t index, const Image& image);
+    template <class Step> void counted(Step&& step);
 
     OutputConfig config_;
     std::unique_ptr<VideoFileWriter> video_;
+    FrameReadback readback_;
+    std::uint64_t inFlight_ = 0;  // the index of the frame readback_ holds
     Image image_;  // the frame read back, kept so that its 8 MB (at 1080p) are not allocated again
     cv::Mat bgr_;
     std::uint64_t next_ = 0;

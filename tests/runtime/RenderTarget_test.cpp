@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <stdexcept>
 
 using namespace arcomp;
 
@@ -70,6 +71,12 @@ TEST_P(RenderTargetOnEachApi, readingIntoAKeptImageGivesWhatAFreshReadGives) {
     EXPECT_EQ(kept.rgba, large.read().rgba);
     EXPECT_EQ(channel(kept, 10, 29, 2), 255);
     EXPECT_EQ(channel(kept, 10, 30, 0), 255);
+}
+
+TEST(RenderTarget, rejectsImpossibleSizes) {
+    auto context = HeadlessContext::create(GlRequest::Auto);
+    EXPECT_THROW(RenderTarget({0, 10}), std::invalid_argument);
+    EXPECT_THROW(RenderTarget({1 << 20, 10}), std::invalid_argument);
 }
 
 INSTANTIATE_TEST_SUITE_P(Apis, RenderTargetOnEachApi, ::testing::Values(GlRequest::Gl33, GlRequest::Es3),
