@@ -119,6 +119,9 @@ public:
     Image readHoldout();
     // The last matte output (premultiplied BGRA, video size).
     const cv::Mat& personLayer() const { return shown_.person; }
+    // The last frame's video as uploaded (RGBA, rows bottom first); empty
+    // without a video backdrop.
+    const cv::Mat& videoPlate() const { return shown_.plate; }
     // Where the last frame's people stood (all on the person plane without a calibrated camera).
     const PersonDepths& personDepths() const { return personDepths_.depths(); }
     const std::vector<StandingPerson>& standingPeople() const { return personDepths_.standing(); }

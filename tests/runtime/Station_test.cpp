@@ -612,6 +612,23 @@ int shownFrame(const Station& station) { return (station.compositedFrame().read(
 
 } // namespace
 
+// frame() returns only once the next frame's capture and matte are done, so
+// a plate or person layer shared with the frame read ahead would hold that
+// frame's grey by now, whichever thread ran first.
+TEST(Station, aShownFrameKeepsItsPlateAndItsPersonLayerWhileTheNextIsMade) {
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    StationConfig cfg;
+    cfg.file = "numbered.yaml";
+    cfg.compositing.matte.kind = MatteKind::Chroma;  // keyed on green: every grey pixel is "person"
+    Station station(cfg, StationInput::fromReplay(std::make_unique<NumberedFrames>(6), 30.0));
+    for (int i = 0; i < 6; ++i) {
+        ASSERT_TRUE(station.frame());
+        ASSERT_FALSE(station.videoPlate().empty());
+        EXPECT_EQ(station.videoPlate().at<cv::Vec4b>(0, 0), cv::Vec4b(20 * i, 20 * i, 20 * i, 255)) << "frame " << i;
+        EXPECT_EQ(station.personLayer().at<cv::Vec4b>(0, 0), cv::Vec4b(20 * i, 20 * i, 20 * i, 255)) << "frame " << i;
+    }
+}
+
 // The station reads one frame ahead (capture and matte of frame N+1 while
 // frame N renders), yet every frame is composited once, in order, with its
 // own image, up to the last one of the file; a station that hands its input
