@@ -47,8 +47,9 @@ ShadowCatcher::ApplyProgram::ApplyProgram()
     : program(kApplyShader), mask(program.requiredLocation("uMask")), texel(program.requiredLocation("uTexel")),
       outputSize(program.requiredLocation("uOutputSize")), strength(program.requiredLocation("uStrength")) {}
 
-ShadowCatcher::ShadowCatcher(glm::ivec2 size)
-    : mask_(glm::max((size + 3) / 4, glm::ivec2(1))), tileVao_(GlVertexArray::generate()), tileBuffer_(GlBuffer::generate()) {
+ShadowCatcher::ShadowCatcher(glm::ivec2 size, Tiles tiles)
+    : mask_(glm::max((size + 3) / 4, glm::ivec2(1))),
+      tilesFromMask_(tiles == Tiles::Mask || (tiles == Tiles::Auto && isSoftwareRasterizer())), tileVao_(GlVertexArray::generate()), tileBuffer_(GlBuffer::generate()) {
     glBindVertexArray(tileVao_.get());
     glBindBuffer(GL_ARRAY_BUFFER, tileBuffer_.get());
     glEnableVertexAttribArray(0);
@@ -100,8 +101,8 @@ void ShadowCatcher::cast(const Scene& scene, const DrawList& cg, const View& vie
         flat.model = &models_[i];
         flattened_.items.push_back(flat);
     }
-    coverTiles(output.size());
-    if (pixels_ == 0) return;
+    coverRectangles(output.size());
+    if (std::find(covered_.begin(), covered_.end(), 1) == covered_.end()) return;
 
     // The same objects in the same places under the same view cast the same
     // mask: a static installation draws it once.
@@ -116,7 +117,13 @@ void ShadowCatcher::cast(const Scene& scene, const DrawList& cg, const View& vie
         maskKey_ = std::move(key);
         maskViewProjection_ = viewProjection;
         ++masksDrawn_;
+        maskTiles_.clear();
     }
+    if (tilesFromMask_ && maskTiles_.size() != covered_.size()) findMaskTiles(output.size());
+    if (tilesFromMask_)
+        for (std::size_t t = 0; t < covered_.size(); ++t) covered_[t] &= maskTiles_[t];
+    buildQuads(output.size());
+    if (pixels_ == 0) return;
 
     output.bind();
     glDisable(GL_DEPTH_TEST);
@@ -140,7 +147,7 @@ void ShadowCatcher::cast(const Scene& scene, const DrawList& cg, const View& vie
     glDepthMask(GL_TRUE);
 }
 
-void ShadowCatcher::coverTiles(glm::ivec2 size) {
+void ShadowCatcher::coverRectangles(glm::ivec2 size) {
     // Tiles, not the rectangles themselves: the pass multiplies, so a pixel
     // under two rectangles must still be drawn once. Window coordinates,
     // rows from the bottom, as the rectangles are.
@@ -149,6 +156,36 @@ void ShadowCatcher::coverTiles(glm::ivec2 size) {
     for (const Rectangle& r : rectangles_)
         for (int j = r.from.y / kTilePx; j <= (r.to.y - 1) / kTilePx; ++j)
             for (int i = r.from.x / kTilePx; i <= (r.to.x - 1) / kTilePx; ++i) covered_[static_cast<std::size_t>(j * tx + i)] = 1;
+}
+
+void ShadowCatcher::findMaskTiles(glm::ivec2 size) {
+    const int tx = (size.x + kTilePx - 1) / kTilePx, ty = (size.y + kTilePx - 1) / kTilePx;
+    maskTiles_.assign(static_cast<std::size_t>(tx * ty), 0);
+    mask_.read(maskImage_);  // rows top to bottom
+    const glm::ivec2 m = mask_.size();
+    const glm::vec2 scale = glm::vec2(size) / glm::vec2(m);
+    // Output pixel p samples the mask at texel coordinate (p + 1/2) / scale,
+    // four taps half a texel to each side, each bilinear: texels
+    // floor(c - 1) .. floor(c) + 1. So texel k reaches the pixels whose
+    // c lies in [k - 1, k + 2), widened by a pixel against rounding.
+    const auto pixels = [](int k, float s, int extent) {
+        return glm::ivec2(std::clamp(static_cast<int>(std::floor(static_cast<float>(k - 1) * s - 1.5f)), 0, extent - 1),
+                          std::clamp(static_cast<int>(std::ceil(static_cast<float>(k + 2) * s + 0.5f)), 0, extent - 1));
+    };
+    for (int row = 0; row < m.y; ++row) {
+        const std::uint8_t* texels = &maskImage_.rgba[static_cast<std::size_t>(row) * static_cast<std::size_t>(m.x) * 4];
+        const glm::ivec2 ys = pixels(m.y - 1 - row, scale.y, size.y);  // window rows count from the bottom
+        for (int k = 0; k < m.x; ++k) {
+            if (texels[k * 4 + 3] == 0) continue;
+            const glm::ivec2 xs = pixels(k, scale.x, size.x);
+            for (int j = ys.x / kTilePx; j <= ys.y / kTilePx; ++j)
+                for (int i = xs.x / kTilePx; i <= xs.y / kTilePx; ++i) maskTiles_[static_cast<std::size_t>(j * tx + i)] = 1;
+        }
+    }
+}
+
+void ShadowCatcher::buildQuads(glm::ivec2 size) {
+    const int tx = (size.x + kTilePx - 1) / kTilePx, ty = (size.y + kTilePx - 1) / kTilePx;
     tiles_.clear();
     pixels_ = 0;
     const auto ndc = [](int p, int extent) { return 2.0f * static_cast<float>(p) / static_cast<float>(extent) - 1.0f; };

@@ -7,6 +7,9 @@
 // pixels, and only on the 8-pixel tiles that an object's shadow rectangle
 // on screen touches (llvmpipe pays about 10 ms for a full-screen pass at
 // 1080p, and objects spread over the floor leave most of it between them).
+// On a software rasterizer the mask is also read back when it is drawn, and
+// only the tiles it reaches are shaded: elsewhere the shade is exactly 1.
+// A GPU shades the rectangles instead of waiting for the mask.
 //
 //   ShadowCatcher shadows(videoSize);
 //   compositor.begin(frame, {});
@@ -30,7 +33,10 @@ namespace arcomp {
 
 class ShadowCatcher {
 public:
-    explicit ShadowCatcher(glm::ivec2 size);
+    // Which tiles are shaded: those under the shadows' rectangles, or only
+    // those the mask reaches (Auto: the mask's on a software rasterizer).
+    enum class Tiles { Auto, Rectangles, Mask };
+    explicit ShadowCatcher(glm::ivec2 size, Tiles tiles = Tiles::Auto);
     ShadowCatcher(const ShadowCatcher&) = delete;
     ShadowCatcher& operator=(const ShadowCatcher&) = delete;
 
@@ -60,8 +66,12 @@ private:
     struct Rectangle {
         glm::ivec2 from, to;  // window pixels [from, to), rows from the bottom
     };
-    // The tiles under rectangles_ as quads in tiles_, and their pixels.
-    void coverTiles(glm::ivec2 size);
+    // The tiles under rectangles_, in covered_.
+    void coverRectangles(glm::ivec2 size);
+    // maskTiles_ from the mask as drawn: the tiles whose blur reaches a texel it covers.
+    void findMaskTiles(glm::ivec2 size);
+    // covered_ as quads in tiles_, and their pixels.
+    void buildQuads(glm::ivec2 size);
 
     RenderTarget mask_;
     std::vector<MaskKey> maskKey_;
@@ -70,7 +80,10 @@ private:
     DrawList flattened_;
     std::vector<glm::mat4> models_;
     std::vector<Rectangle> rectangles_;
-    std::vector<std::uint8_t> covered_;  // per tile, rows from the bottom
+    bool tilesFromMask_;
+    Image maskImage_;
+    std::vector<std::uint8_t> maskTiles_;  // per tile, rows from the bottom: 1 where the mask's blur reaches
+    std::vector<std::uint8_t> covered_;    // per tile, rows from the bottom
     std::vector<float> tiles_;           // two triangles per quad of covered tiles, NDC x, y
     GlVertexArray tileVao_;
     GlBuffer tileBuffer_;

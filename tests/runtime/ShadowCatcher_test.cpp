@@ -41,6 +41,7 @@ NodeId addCubeOnTheFloor(Scene& scene, glm::vec2 at = {0.0f, 0.0f}) {
 }
 
 struct Shadowed {
+    Image image;
     cv::Mat grey;  // the output's luminance, rows top first
     View view;
     std::size_t pixels = 0;
@@ -49,9 +50,9 @@ struct Shadowed {
 // 1 m cubes standing on the floor at `cubes` (x, z; the origin by default), over
 // a uniform grey video, seen from 6 m up and 6 m back; only the shadows are
 // drawn, not the cubes.
-Shadowed castOnGrey(const glm::vec3& light, float strength, const std::vector<glm::vec2>& cubes = {{0.0f, 0.0f}}) {
+Shadowed castOnGrey(const glm::vec3& light, float strength, const std::vector<glm::vec2>& cubes = {{0.0f, 0.0f}},
+                    ShadowCatcher::Tiles tiles = ShadowCatcher::Tiles::Auto, glm::ivec2 size = {320, 240}) {
     auto ctx = HeadlessContext::create(GlRequest::Auto);
-    const glm::ivec2 size{320, 240};
     World world;
     Scene& scene = world.scene;
     for (const glm::vec2 at : cubes) addCubeOnTheFloor(scene, at);
@@ -62,14 +63,15 @@ Shadowed castOnGrey(const glm::vec3& light, float strength, const std::vector<gl
     Compositor compositor(size);
     compositor.begin(cv::Mat(size.y, size.x, CV_8UC3, cv::Scalar(200, 200, 200)), {});
     Renderer renderer;
-    ShadowCatcher shadows(size);
+    ShadowCatcher shadows(size, tiles);
     shadows.cast(scene, list, out.view, {.enabled = true, .light = glm::normalize(light), .strength = strength}, renderer,
                  compositor.output());
     out.pixels = shadows.pixelsCovered();
-    const Image img = compositor.output().read();
+    out.image = compositor.output().read();
     out.grey.create(size.y, size.x, CV_8UC1);
     for (int y = 0; y < size.y; ++y)
-        for (int x = 0; x < size.x; ++x) out.grey.at<std::uint8_t>(y, x) = img.rgba[(static_cast<std::size_t>(y) * size.x + x) * 4 + 1];
+        for (int x = 0; x < size.x; ++x)
+            out.grey.at<std::uint8_t>(y, x) = out.image.rgba[(static_cast<std::size_t>(y) * size.x + x) * 4 + 1];
     return out;
 }
 
@@ -127,6 +129,21 @@ TEST(ShadowCatcher, eachShadowIsDrawnOnItsOwnTilesAndEachPixelOnce) {
     const Shadowed close = castOnGrey(light, 0.5f, {{-0.7f, 0.0f}, {0.7f, 0.0f}});
     for (const float x : {-1.6f, -1.0f, 0.2f})  // in the left cube's shadow, and in the right one's
         EXPECT_NEAR(close.grey.at<std::uint8_t>(cv::Point(pixelOf(close.view, {x, 0.0f, 0.0f}))), 100, 2) << "x " << x;
+}
+
+// Shading only the tiles the mask reaches changes no pixel: elsewhere the
+// shade is exactly 1. Sizes that are not multiples of the mask's 4 or the
+// tiles' 8, cubes at the screen's edge and a low light with long shadows.
+TEST(ShadowCatcher, theMasksTilesShadeWhatTheRectanglesShadeOnFewerPixels) {
+    const std::vector<glm::vec2> cubes = {{-3.0f, -3.0f}, {3.0f, 2.0f}, {0.0f, 0.0f}, {5.5f, 0.0f}, {-1.0f, 3.5f}};
+    for (const glm::ivec2 size : {glm::ivec2(320, 240), glm::ivec2(203, 117)})
+        for (const glm::vec3 light : {glm::vec3(1.0f, 1.0f, 0.0f), glm::vec3(-1.0f, 0.4f, 0.5f)}) {
+            const Shadowed rectangles = castOnGrey(light, 0.6f, cubes, ShadowCatcher::Tiles::Rectangles, size);
+            const Shadowed mask = castOnGrey(light, 0.6f, cubes, ShadowCatcher::Tiles::Mask, size);
+            ASSERT_GT(cv::countNonZero(rectangles.grey < 199), 100);
+            EXPECT_EQ(mask.image.rgba, rectangles.image.rgba) << size.x << "x" << size.y << ", light x " << light.x;
+            EXPECT_LT(mask.pixels, rectangles.pixels);
+        }
 }
 
 // A static installation draws its shadow mask once; an object that moves
