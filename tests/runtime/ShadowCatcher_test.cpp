@@ -121,12 +121,15 @@ TEST(ShadowCatcher, aLightOnTheOtherSideMovesTheShadowThereAndNoStrengthLeavesTh
 // each shadow is as dark as a cube's alone.
 TEST(ShadowCatcher, eachShadowIsDrawnOnItsOwnTilesAndEachPixelOnce) {
     const glm::vec3 light{1.0f, 1.0f, 0.0f};
-    const Shadowed one = castOnGrey(light, 0.5f), apart = castOnGrey(light, 0.5f, {{-3.0f, -3.0f}, {3.0f, 2.0f}});
+    // The rectangles' tiles, as a GPU shades them (a software rasterizer shades fewer).
+    const auto rectangles = ShadowCatcher::Tiles::Rectangles;
+    const Shadowed one = castOnGrey(light, 0.5f, {{0.0f, 0.0f}}, rectangles),
+                   apart = castOnGrey(light, 0.5f, {{-3.0f, -3.0f}, {3.0f, 2.0f}}, rectangles);
     for (const glm::vec2 shadow : {glm::vec2(-3.9f, -3.0f), glm::vec2(2.1f, 2.0f)})
         EXPECT_NEAR(apart.grey.at<std::uint8_t>(cv::Point(pixelOf(apart.view, {shadow.x, 0.0f, shadow.y}))), 100, 2);
     EXPECT_LT(apart.pixels, 5 * one.pixels / 2) << "each shadow's tiles, not the span of both";
 
-    const Shadowed close = castOnGrey(light, 0.5f, {{-0.7f, 0.0f}, {0.7f, 0.0f}});
+    const Shadowed close = castOnGrey(light, 0.5f, {{-0.7f, 0.0f}, {0.7f, 0.0f}}, rectangles);
     for (const float x : {-1.6f, -1.0f, 0.2f})  // in the left cube's shadow, and in the right one's
         EXPECT_NEAR(close.grey.at<std::uint8_t>(cv::Point(pixelOf(close.view, {x, 0.0f, 0.0f}))), 100, 2) << "x " << x;
 }
