@@ -1,5 +1,7 @@
 #include "runtime/Compositor.hpp"
 
+#include "runtime/TileQuads.hpp"
+
 #include <glm/gtc/type_ptr.hpp>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
@@ -141,7 +143,7 @@ PersonTiles Compositor::findTiles(const cv::Mat& person) {
     const int tx = (size.x + kTile - 1) / kTile, ty = (size.y + kTile - 1) / kTile;
     std::vector<std::uint8_t> occupied(static_cast<std::size_t>(tx * ty), 0);
     // A pixel's alpha byte as a bit mask over the pixel read as one word:
-    // a tile's row segment is then one OR over 32 words, which vectorizes.
+    // a tile's row segment is then one OR over kTile words, which vectorizes.
     constexpr std::array<std::uint8_t, 4> kAlphaBytes{0, 0, 0, 0xFF};
     std::uint32_t alphaBits = 0;
     std::memcpy(&alphaBits, kAlphaBytes.data(), sizeof alphaBits);
@@ -158,18 +160,13 @@ PersonTiles Compositor::findTiles(const cv::Mat& person) {
         }
     });
     found.rows = {size.y, 0};
-    const auto ndcX = [&](int x) { return 2.0f * static_cast<float>(std::min(x, size.x)) / static_cast<float>(size.x) - 1.0f; };
-    // Tile row j counts from the top of the image; NDC y from the bottom.
-    const auto ndcY = [&](int y) { return 1.0f - 2.0f * static_cast<float>(std::min(y, size.y)) / static_cast<float>(size.y); };
     for (int j = 0; j < ty; ++j)
         for (int i = 0; i < tx; ++i) {
             if (!occupied[static_cast<std::size_t>(j * tx + i)]) continue;
-            const float x0 = ndcX(i * kTile), x1 = ndcX((i + 1) * kTile);
-            const float y0 = ndcY((j + 1) * kTile), y1 = ndcY(j * kTile);
-            found.quads.insert(found.quads.end(), {x0, y0, x1, y0, x1, y1, x0, y0, x1, y1, x0, y1});
             ++found.count;
             found.rows = {std::min(found.rows.x, j * kTile), std::min(size.y, (j + 1) * kTile)};
         }
+    appendTileQuads(occupied, size, kTile, TileRows::FromTop, found.quads);
     return found;
 }
 

@@ -32,7 +32,7 @@ struct FrameStats {
     std::size_t holdoutTriangles = 0;
     std::size_t objectsInFront = 0;
     std::size_t objectsBehind = 0;
-    std::size_t personTiles = 0;  // 32x32 tiles where the matte had any alpha
+    std::size_t personTiles = 0;  // Compositor::kTile-square tiles where the matte had any alpha
     std::size_t people = 0;       // tracked people with a depth of their own
     // The controller's view of the CG render stage, when it is on: its target
     // (the frame target less what the other stages took last frame), its

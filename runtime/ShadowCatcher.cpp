@@ -1,5 +1,7 @@
 #include "runtime/ShadowCatcher.hpp"
 
+#include "runtime/TileQuads.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -185,38 +187,8 @@ void ShadowCatcher::findMaskTiles(glm::ivec2 size) {
 }
 
 void ShadowCatcher::buildQuads(glm::ivec2 size) {
-    const int tx = (size.x + kTilePx - 1) / kTilePx, ty = (size.y + kTilePx - 1) / kTilePx;
     tiles_.clear();
-    pixels_ = 0;
-    const auto ndc = [](int p, int extent) { return 2.0f * static_cast<float>(p) / static_cast<float>(extent) - 1.0f; };
-    // One quad per run of covered tiles in a row, and one for the rows
-    // above it while they have the same runs: llvmpipe sets up every
-    // triangle, and thin ones cost more to set up than to fill.
-    std::vector<glm::ivec2> runs, blockRuns;  // tile columns [x, y)
-    int blockFrom = 0;
-    const auto closeBlock = [&](int rowEnd) {
-        const int y0 = blockFrom * kTilePx, y1 = std::min(size.y, rowEnd * kTilePx);
-        for (const glm::ivec2 run : blockRuns) {
-            const int x0 = run.x * kTilePx, x1 = std::min(size.x, run.y * kTilePx);
-            const float l = ndc(x0, size.x), r = ndc(x1, size.x), b = ndc(y0, size.y), t = ndc(y1, size.y);
-            tiles_.insert(tiles_.end(), {l, b, r, b, r, t, l, b, r, t, l, t});
-            pixels_ += static_cast<std::size_t>(x1 - x0) * static_cast<std::size_t>(y1 - y0);
-        }
-    };
-    for (int j = 0; j < ty; ++j) {
-        runs.clear();
-        for (int i = 0; i < tx; ++i) {
-            if (!covered_[static_cast<std::size_t>(j * tx + i)]) continue;
-            const int first = i;
-            while (i < tx && covered_[static_cast<std::size_t>(j * tx + i)]) ++i;
-            runs.push_back({first, i});
-        }
-        if (runs == blockRuns) continue;
-        closeBlock(j);
-        blockRuns.swap(runs);
-        blockFrom = j;
-    }
-    closeBlock(ty);
+    pixels_ = appendTileQuads(covered_, size, kTilePx, TileRows::FromBottom, tiles_);
 }
 
 } // namespace arcomp

@@ -64,7 +64,7 @@ TEST_P(CompositorOnEachApi, layersPersonOverCgOverVideoExceptWhereHeldOut) {
     EXPECT_EQ(at(out, 10, 80), cv::Vec4b(200, 0, 0, 255));    // person over the video
     EXPECT_EQ(at(out, 100, 10), cv::Vec4b(0, 0, 255, 255));   // CG over the video
     EXPECT_EQ(at(out, 100, 80), cv::Vec4b(90, 90, 90, 255));  // the video alone
-    EXPECT_EQ(c.personTiles(), 2u * 3u);                      // 64x96 of 32-pixel tiles
+    EXPECT_EQ(c.personTiles(), 8u * 12u);                     // 64x96 of 8-pixel tiles
 }
 
 // Two people in slots of their own, on a slot image at half size, and a
@@ -132,26 +132,27 @@ TEST(Compositor, aTileShowsNothingOfTheLastFramesPerson) {
     Compositor c(size);
     const cv::Mat frame(size.y, size.x, CV_8UC3, cv::Scalar(90, 90, 90));
     cv::Mat person(size.y, size.x, CV_8UC4, cv::Scalar(0, 0, 0, 0));
-    person(cv::Rect(0, 32, 96, 32)).setTo(cv::Scalar(0, 0, 200, 255));  // the middle tile row, solid red
+    person(cv::Rect(0, 32, 96, 32)).setTo(cv::Scalar(0, 0, 200, 255));  // a band of tile rows, solid red
     c.begin(frame, {});
     c.person(person, onePlane(), kProjection);
     EXPECT_EQ(at(c.output().read(), 40, 40), cv::Vec4b(200, 0, 0, 255));
     person.setTo(cv::Scalar(0, 0, 0, 0));
-    person.at<cv::Vec4b>(60, 40) = cv::Vec4b(0, 200, 0, 255);  // one green pixel, low in the middle tile
+    person.at<cv::Vec4b>(60, 40) = cv::Vec4b(0, 200, 0, 255);  // one green pixel, low in the band's last tile row
     c.begin(frame, {});
     c.person(person, onePlane(), kProjection);
     const Image out = c.output().read();
     EXPECT_EQ(c.personTiles(), 1u);
     EXPECT_EQ(at(out, 40, 60), cv::Vec4b(0, 200, 0, 255));
-    for (const int y : {32, 40, 59, 61, 63})  // the same tile, above and below the pixel
+    for (const int y : {32, 40, 56, 59, 61, 63})  // the band; its tile (rows 56-63) above and below the pixel
         EXPECT_EQ(at(out, 40, y), cv::Vec4b(90, 90, 90, 255)) << "row " << y;
     EXPECT_EQ(at(out, 10, 40), cv::Vec4b(90, 90, 90, 255));  // a tile of the last frame's person, empty now
+    EXPECT_EQ(at(out, 47, 60), cv::Vec4b(90, 90, 90, 255));  // the tile's last column
 }
 
 // The tiles a pipelined station finds on its capture thread: only where
 // alpha is not 0, at a ragged edge too, and the image rows they span.
 TEST(Compositor, findTilesKeepsTheTilesWithAlphaAndTheRowsTheySpan) {
-    cv::Mat person(70, 100, CV_8UC4, cv::Scalar(0, 0, 0, 0));  // 4 x 3 tiles, the last column and row partial
+    cv::Mat person(70, 100, CV_8UC4, cv::Scalar(0, 0, 0, 0));  // 13 x 9 tiles, the last column and row partial
     person.at<cv::Vec4b>(69, 99) = cv::Vec4b(0, 0, 0, 1);      // the last pixel of the last tile
     person.at<cv::Vec4b>(40, 5) = cv::Vec4b(9, 9, 9, 0);       // colour without alpha: no tile
     PersonTiles tiles = Compositor::findTiles(person);
