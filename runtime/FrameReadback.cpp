@@ -55,7 +55,7 @@ void FrameReadback::collect(Slot& slot, Image& into) {
     glBindBuffer(GL_PIXEL_PACK_BUFFER, slot.buffer.get());
     const void* mapped = glMapBufferRange(GL_PIXEL_PACK_BUFFER, 0, static_cast<GLsizeiptr>(slot.capacity), GL_MAP_READ_BIT);
     if (!mapped) {
-        // This frame is lost; the ones after it are read the plain way.
+        // The frames in the two buffers are lost; later ones are read the plain way.
         const GLenum error = glGetError();
         glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
         mode_ = Mode::Synchronous;
@@ -63,7 +63,7 @@ void FrameReadback::collect(Slot& slot, Image& into) {
         char hex[16];
         std::snprintf(hex, sizeof hex, "0x%04x", error);
         throw std::runtime_error(std::string("reading a frame back: the GL cannot map its pixel buffer (GL error ") + hex +
-                                 "); one frame is lost, later frames are read synchronously");
+                                 "); the frames in flight are lost, later frames are read synchronously");
     }
     // GL's rows run bottom to top: copied into place, the flip costs nothing extra.
     const std::size_t row = static_cast<std::size_t>(slot.size.x) * 4;

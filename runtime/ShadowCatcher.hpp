@@ -84,7 +84,7 @@ private:
     Image maskImage_;
     std::vector<std::uint8_t> maskTiles_;  // per tile, rows from the bottom: 1 where the mask's blur reaches
     std::vector<std::uint8_t> covered_;    // per tile, rows from the bottom
-    std::vector<float> tiles_;           // two triangles per quad of covered tiles, NDC x, y
+    std::vector<float> tiles_;             // two triangles per quad of covered tiles, NDC x, y
     GlVertexArray tileVao_;
     GlBuffer tileBuffer_;
     ApplyProgram apply_;
