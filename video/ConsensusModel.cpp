@@ -25,6 +25,24 @@ inline std::uint32_t nextRandom(std::uint32_t& state) {
     return state;
 }
 
+// x % d for a divisor known only at run time, by two multiplications
+// instead of a division (Lemire, Kaser and Kurz, "Faster remainder by direct
+// computation", 2019): the same result for every 32-bit x and d >= 1. The
+// model's update draws two or three coin flips a pixel, and each division
+// took tens of cycles.
+class Remainder {
+public:
+    explicit Remainder(std::uint32_t divisor) : divisor_(divisor), magic_(~std::uint64_t{0} / divisor + 1) {}
+    std::uint32_t operator()(std::uint32_t x) const {
+        const std::uint64_t fraction = magic_ * x;  // x / d's fractional part, in 64 bits
+        return static_cast<std::uint32_t>((static_cast<unsigned __int128>(fraction) * divisor_) >> 64);
+    }
+
+private:
+    std::uint32_t divisor_;
+    std::uint64_t magic_;
+};
+
 inline int l1(const std::uint8_t* a, const std::uint8_t* b) {
     return std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]);
 }
@@ -226,7 +244,10 @@ bool ConsensusModel::correctLightChange(const cv::Mat& image, const cv::Mat& lab
 }
 
 void ConsensusModel::update(const cv::Mat& image, const cv::Mat& labels) {
-    const int n = spec_.samples, odds = spec_.updateOdds;
+    const int n = spec_.samples;
+    const Remainder odds(static_cast<std::uint32_t>(spec_.updateOdds)), sample(static_cast<std::uint32_t>(n));
+    // In a register, not re-read after every store into the samples.
+    std::uint32_t random = random_;
     const int stillRadius = static_cast<int>(spec_.colourRadius / 2);
     const double absorb = std::min(65000.0, spec_.absorbSeconds * spec_.fps);
     const auto absorbFrames = static_cast<std::uint16_t>(absorb);
@@ -244,24 +265,25 @@ void ConsensusModel::update(const cv::Mat& image, const cv::Mat& labels) {
                 // unchanged for absorbSeconds; then it is learnt at the
                 // background's own pace, a sample at a time.
                 still[x] = l1(in, last) < stillRadius ? static_cast<std::uint16_t>(std::min<int>(still[x] + 1, 65535)) : 0;
-                if (still[x] >= absorbFrames && nextRandom(random_) % odds == 0)
-                    std::copy(in, in + 3, own + (nextRandom(random_) % n) * 3);
+                if (still[x] >= absorbFrames && odds(nextRandom(random)) == 0)
+                    std::copy(in, in + 3, own + sample(nextRandom(random)) * 3);
                 continue;
             }
             still[x] = 0;
             for (int c = 0; c < 3; ++c) bg[c] = static_cast<std::uint8_t>((bg[c] * 15 + in[c] + 8) >> 4);
-            if (nextRandom(random_) % odds == 0) std::copy(in, in + 3, own + (nextRandom(random_) % n) * 3);
-            if (nextRandom(random_) % odds == 0) {
+            if (odds(nextRandom(random)) == 0) std::copy(in, in + 3, own + sample(nextRandom(random)) * 3);
+            if (odds(nextRandom(random)) == 0) {
                 // Spatial diffusion, but only into a neighbour that is
                 // background too: spreading into a person would eat them.
-                const std::uint32_t r = nextRandom(random_);
+                const std::uint32_t r = nextRandom(random);
                 const int nx = std::clamp(x + static_cast<int>(r % 3) - 1, 0, w - 1);
                 const int ny = std::clamp(y + static_cast<int>((r / 3) % 3) - 1, 0, h - 1);
                 if (labels.ptr<std::uint8_t>(ny)[nx] == 0)
-                    std::copy(in, in + 3, &samples_[(static_cast<std::size_t>(ny) * w + nx) * n * 3 + ((r >> 8) % n) * 3]);
+                    std::copy(in, in + 3, &samples_[(static_cast<std::size_t>(ny) * w + nx) * n * 3 + sample(r >> 8) * 3]);
             }
         }
     }
+    random_ = random;
 }
 
 } // namespace arcomp
