@@ -1,5 +1,6 @@
 #include "video/ConsensusModel.hpp"
 
+#include "video/Remainder.hpp"
 #include "video/VideoError.hpp"
 
 #include <opencv2/imgproc.hpp>
@@ -24,24 +25,6 @@ inline std::uint32_t nextRandom(std::uint32_t& state) {
     state ^= state << 5;
     return state;
 }
-
-// x % d for a divisor known only at run time, by two multiplications
-// instead of a division (Lemire, Kaser and Kurz, "Faster remainder by direct
-// computation", 2019): the same result for every 32-bit x and d >= 1. The
-// model's update draws two or three coin flips a pixel, and each division
-// took tens of cycles.
-class Remainder {
-public:
-    explicit Remainder(std::uint32_t divisor) : divisor_(divisor), magic_(~std::uint64_t{0} / divisor + 1) {}
-    std::uint32_t operator()(std::uint32_t x) const {
-        const std::uint64_t fraction = magic_ * x;  // x / d's fractional part, in 64 bits
-        return static_cast<std::uint32_t>((static_cast<unsigned __int128>(fraction) * divisor_) >> 64);
-    }
-
-private:
-    std::uint32_t divisor_;
-    std::uint64_t magic_;
-};
 
 inline int l1(const std::uint8_t* a, const std::uint8_t* b) {
     return std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]);
