@@ -140,7 +140,8 @@ PersonTiles Compositor::findTiles(const cv::Mat& person) {
     PersonTiles found;
     if (person.type() != CV_8UC4 || person.empty()) return found;  // person() says what is wrong
     const glm::ivec2 size(person.cols, person.rows);
-    const int tx = (size.x + kTile - 1) / kTile, ty = (size.y + kTile - 1) / kTile;
+    const glm::ivec2 grid = tileGrid(size, kTile);
+    const int tx = grid.x, ty = grid.y;
     std::vector<std::uint8_t> occupied(static_cast<std::size_t>(tx * ty), 0);
     // A pixel's alpha byte as a bit mask over the pixel read as one word:
     // a tile's row segment is then one OR over kTile words, which vectorizes.

@@ -51,7 +51,8 @@ ShadowCatcher::ApplyProgram::ApplyProgram()
 
 ShadowCatcher::ShadowCatcher(glm::ivec2 size, Tiles tiles)
     : mask_(glm::max((size + 3) / 4, glm::ivec2(1))),
-      tilesFromMask_(tiles == Tiles::Mask || (tiles == Tiles::Auto && isSoftwareRasterizer())), tileVao_(GlVertexArray::generate()), tileBuffer_(GlBuffer::generate()) {
+      tilesFromMask_(tiles == Tiles::Mask || (tiles == Tiles::Auto && isSoftwareRasterizer())),
+      tileVao_(GlVertexArray::generate()), tileBuffer_(GlBuffer::generate()) {
     glBindVertexArray(tileVao_.get());
     glBindBuffer(GL_ARRAY_BUFFER, tileBuffer_.get());
     glEnableVertexAttribArray(0);
@@ -104,7 +105,7 @@ void ShadowCatcher::cast(const Scene& scene, const DrawList& cg, const View& vie
         flattened_.items.push_back(flat);
     }
     coverRectangles(output.size());
-    if (std::find(covered_.begin(), covered_.end(), 1) == covered_.end()) return;
+    if (rectangles_.empty()) return;  // no shadow reaches the screen
 
     // The same objects in the same places under the same view cast the same
     // mask: a static installation draws it once.
@@ -153,7 +154,8 @@ void ShadowCatcher::coverRectangles(glm::ivec2 size) {
     // Tiles, not the rectangles themselves: the pass multiplies, so a pixel
     // under two rectangles must still be drawn once. Window coordinates,
     // rows from the bottom, as the rectangles are.
-    const int tx = (size.x + kTilePx - 1) / kTilePx, ty = (size.y + kTilePx - 1) / kTilePx;
+    const glm::ivec2 grid = tileGrid(size, kTilePx);
+    const int tx = grid.x, ty = grid.y;
     covered_.assign(static_cast<std::size_t>(tx * ty), 0);
     for (const Rectangle& r : rectangles_)
         for (int j = r.from.y / kTilePx; j <= (r.to.y - 1) / kTilePx; ++j)
@@ -161,7 +163,8 @@ void ShadowCatcher::coverRectangles(glm::ivec2 size) {
 }
 
 void ShadowCatcher::findMaskTiles(glm::ivec2 size) {
-    const int tx = (size.x + kTilePx - 1) / kTilePx, ty = (size.y + kTilePx - 1) / kTilePx;
+    const glm::ivec2 grid = tileGrid(size, kTilePx);
+    const int tx = grid.x, ty = grid.y;
     maskTiles_.assign(static_cast<std::size_t>(tx * ty), 0);
     mask_.read(maskImage_);  // rows top to bottom
     const glm::ivec2 m = mask_.size();

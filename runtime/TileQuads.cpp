@@ -6,7 +6,8 @@ namespace arcomp {
 
 std::size_t appendTileQuads(const std::vector<std::uint8_t>& occupied, glm::ivec2 size, int tile, TileRows rows,
                             std::vector<float>& quads) {
-    const int tx = (size.x + tile - 1) / tile, ty = (size.y + tile - 1) / tile;
+    const glm::ivec2 grid = tileGrid(size, tile);
+    const int tx = grid.x, ty = grid.y;
     const auto ndcX = [&](int x) { return 2.0f * static_cast<float>(x) / static_cast<float>(size.x) - 1.0f; };
     const auto ndcY = [&](int y) {
         const float fromBottom = 2.0f * static_cast<float>(y) / static_cast<float>(size.y) - 1.0f;

@@ -19,7 +19,10 @@ namespace arcomp {
 // bottom (GL window rows).
 enum class TileRows { FromTop, FromBottom };
 
-// `occupied`: per tile, row by row, ceil(size / tile) tiles each way; the
+// The grid's tiles across and down: ceil(size / tile), the last ones partial.
+inline glm::ivec2 tileGrid(glm::ivec2 size, int tile) { return (size + tile - 1) / tile; }
+
+// `occupied`: per tile, row by row, tileGrid(size, tile) tiles each way; the
 // last row and column may be partial. Appends two triangles a quad, NDC x
 // and y, to `quads`; returns the pixels they cover.
 std::size_t appendTileQuads(const std::vector<std::uint8_t>& occupied, glm::ivec2 size, int tile, TileRows rows,
