@@ -2,6 +2,7 @@
 #include "graph/budget/OnScreenPixels.hpp"
 
 #include "graph/lod/LodAlternatives.hpp"
+#include "graph/budget/CostTableFit.hpp"
 #include "graph/budget/RecursiveLeastSquares.hpp"
 #include "graph/core/View.hpp"
 
@@ -102,36 +103,18 @@ CostModel fitCostsOnFrames(const Scene& scene, std::span<const DrawList> lists, 
                            Renderer& renderer, FrameTimer& timer, const CostModel& prior, int frames,
                            const CalibrationOptions& o, unsigned seed) {
     if (lists.empty() || lists.size() != views.size() || frames < 1) return prior;
-    const std::size_t levels = prior.levels();
-    constexpr auto shadings = static_cast<std::size_t>(kShadingCount);
-    // θ = (A of each shading in ms per megapixel, B of each level in ms):
-    // pixels cost what the shading makes them cost, vertices what the level
-    // has. Seven numbers are well determined by a hundred noisy frames where
-    // the 24 of a full table are not. Pixels in megapixels keep both halves
-    // of θ of similar size. The prior is the single-object table averaged
-    // over the other attribute.
-    std::vector<double> theta(shadings + levels, 0.0), variance(shadings + levels);
-    for (std::size_t l = 0; l < levels; ++l)
-        for (std::size_t s = 0; s < shadings; ++s) {
-            const CostCoefficients& c = prior.at(l, static_cast<Shading>(s));
-            theta[s] += c.msPerPixel * 1e6 / static_cast<double>(levels);
-            theta[shadings + l] += c.ms / static_cast<double>(shadings);
-        }
-    // The prior is trusted to about its own size (and at least 1 ms).
-    for (std::size_t k = 0; k < theta.size(); ++k) variance[k] = std::max(theta[k] * theta[k], 1.0);
-    RecursiveLeastSquares fit(theta.size(), 1.0, 1.0, 1e12);
-    fit.reset(theta, variance);
+    CostTableFit fit(prior);
     const LodAlternatives alternatives(scene);
     std::mt19937 rng(seed);
     std::uniform_int_distribution<std::size_t> pickList(0, lists.size() - 1);
-    std::vector<double> x(theta.size());
     DrawList list;
+    std::vector<ChargedItem> charged;
     for (int f = 0; f < frames; ++f) {
         const std::size_t i = pickList(rng);
         list = lists[i];
-        std::fill(x.begin(), x.end(), 0.0);
-        std::discrete_distribution<int> pickLevel = randomMix(levels, rng);
-        std::discrete_distribution<int> pickShading = randomMix(shadings, rng);
+        charged.clear();
+        std::discrete_distribution<int> pickLevel = randomMix(prior.levels(), rng);
+        std::discrete_distribution<int> pickShading = randomMix(kShadingCount, rng);
         for (DrawItem& item : list.items) {
             const int levelCount = alternatives.levelCount(item.node);
             const auto level = static_cast<std::uint8_t>(std::min(pickLevel(rng), levelCount - 1));
@@ -139,19 +122,12 @@ CostModel fitCostsOnFrames(const Scene& scene, std::span<const DrawList> lists, 
             item.part = scene.meshPart(item.node);
             item.level = level;
             item.shading = static_cast<Shading>(pickShading(rng));
-            x[static_cast<std::size_t>(item.shading)] += onScreenPixels(item, scene, views[i]) * 1e-6;
-            x[shadings + std::min<std::size_t>(item.level, levels - 1)] += 1.0;
+            charged.push_back({item.level, item.shading, onScreenPixels(item, scene, views[i])});
         }
         const double ms = timeFrame(scene, list, views[i], renderer, timer, {.repeats = 1, .clearColor = o.clearColor});
-        fit.add(x, ms - prior.overheadMs);
+        fit.addFrame(charged, ms - prior.overheadMs);
     }
-    CostModel model = prior;
-    for (std::size_t l = 0; l < levels; ++l)
-        for (std::size_t s = 0; s < shadings; ++s)
-            model.set(l, static_cast<Shading>(s),
-                      {std::max(0.0, fit.parameters()[s] * 1e-6), std::max(0.0, fit.parameters()[shadings + l])});
-    model.resetFit();
-    return model;
+    return fit.table();
 }
 
 } // namespace arcomp

@@ -46,10 +46,9 @@ CostModel calibrateCosts(const Scene& scene, std::span<const NodeId> levelMeshes
 // the fit: each of `frames` samples takes one of `lists` (a select pass's
 // output, drawn from views[i]), draws a random mix of levels and of
 // shadings for the frame, puts each item at a setting drawn from that mix,
-// and times it; then A per shading and B per level (a pair's A is
-// its shading's, its B its level's) are fitted to all the frames at once by
-// least squares, starting from `prior` averaged over the other attribute.
-// The overhead is kept from `prior`.
+// and times it; then `prior` is scaled to fit all the frames at once, each
+// shading's A by a gain of its own and every B by one
+// (graph/budget/CostTableFit.hpp). The overhead is kept from `prior`.
 CostModel fitCostsOnFrames(const Scene& scene, std::span<const DrawList> lists, std::span<const View> views,
                            Renderer& renderer, FrameTimer& timer, const CostModel& prior, int frames,
                            const CalibrationOptions& options, unsigned seed = 1);

@@ -77,10 +77,11 @@ public:
     // own gain enters the fit within a factor kMaxSampleRatio of the
     // current gain, so a stall of the machine (a frame ten times as long)
     // moves the prediction by a bounded step that the next frames undo.
-    // Before that the clamp only slowed the start: the managed flight needs
-    // a gain of 1.8-2.5 from its first frame (the calibrated table
-    // under-predicts the controller's coarse, unlit mixes), and at 1.25×
-    // per frame its first 3-5 frames ran 25-130% over the target.
+    // Before that the clamp only slowed the start: the managed flight
+    // needed a gain of 1.8-2.5 from its first frame (a table fitted with A
+    // per shading and B per level under-predicted the controller's coarse,
+    // unlit mixes; graph/budget/CostTableFit.hpp), and at 1.25× per frame
+    // its first 3-5 frames ran 25-130% over the target.
     // Letting single stalls pass unheeded, by fitting the median of the last
     // three or five frames' gains, was tried: the view's own changes of
     // cost then reach the gain a frame or two late.
