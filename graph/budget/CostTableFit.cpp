@@ -1,6 +1,7 @@
 #include "graph/budget/CostTableFit.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace arcomp {
 
@@ -26,6 +27,9 @@ void CostTableFit::addFrame(std::span<const ChargedItem> items, double itemsMs) 
         x_[static_cast<std::size_t>(item.shading)] += c.msPerPixel * item.pixels;
         x_[kFixedGain] += c.ms;
     }
+    // A frame the timer could not measure, or pixels that are not a number,
+    // would leave every gain NaN: the frame says nothing, as in observe().
+    if (!std::isfinite(itemsMs) || !std::all_of(x_.begin(), x_.end(), [](double v) { return std::isfinite(v); })) return;
     fit_.add(x_, itemsMs);
 }
 

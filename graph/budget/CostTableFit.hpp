@@ -48,7 +48,8 @@ public:
     explicit CostTableFit(const CostModel& singleObject);
 
     // A timed frame: what it drew, and its measured time less the frame
-    // overhead. Levels beyond the table's are charged as its last.
+    // overhead. Levels beyond the table's are charged as its last. A frame
+    // whose time or pixels are not finite is left out.
     void addFrame(std::span<const ChargedItem> items, double itemsMs);
     std::size_t frames() const { return fit_.samples(); }
 

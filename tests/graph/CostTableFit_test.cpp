@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -151,4 +152,19 @@ TEST(CostTableFit, noCostComesOutBelowZero) {
     for (int f = 0; f < 20; ++f) fit.addFrame(items, -1.0);
     EXPECT_EQ(fit.table().at(0, Shading::Flat).ms, 0.0);
     EXPECT_GE(fit.table().at(0, Shading::Flat).msPerPixel, 0.0);
+}
+
+TEST(CostTableFit, aFrameThatIsNotANumberIsLeftOut) {
+    const CostModel prior = singleObjectTable();
+    CostTableFit fit(prior);
+    const std::vector<ChargedItem> items{{0, Shading::Phong, 3e4}, {2, Shading::Unlit, 1e4}};
+    const std::vector<ChargedItem> endless{{0, Shading::Phong, std::numeric_limits<double>::infinity()}};
+    fit.addFrame(items, std::numeric_limits<double>::quiet_NaN());
+    fit.addFrame(items, std::numeric_limits<double>::infinity());
+    fit.addFrame(endless, 5.0);
+    EXPECT_EQ(fit.frames(), 0u);
+    fit.addFrame(items, 2.0);
+    EXPECT_EQ(fit.frames(), 1u);
+    for (double g : fit.gains()) EXPECT_TRUE(std::isfinite(g));
+    EXPECT_TRUE(std::isfinite(fit.table().itemMs(0, Shading::Phong, 3e4)));
 }
