@@ -225,10 +225,19 @@ struct SelectPass {
     // Visits the LOD node's child number `level`, or its last child when it
     // has fewer.
     void visitLevel(std::uint32_t lodSlot, std::uint8_t level, bool inside, float fade) {
-        const std::uint32_t first = layout.slots[lodSlot].firstChild, end = layout.childEnd(lodSlot);
-        if (first == end) return;
-        const auto shown = static_cast<std::uint8_t>(std::min<std::uint32_t>(level, end - first - 1));
-        visit(first + shown, inside, shown, fade);
+        const SiblingLayout::Slot& lod = layout.slots[lodSlot];
+        if (lod.childCount == 0) return;
+        const auto shown = static_cast<std::uint8_t>(std::min<std::uint32_t>(level, lod.childCount - 1));
+        const std::uint32_t child = lod.firstChild + shown;
+        const SiblingLayout::Slot& s = layout.slots[child];
+        if (s.kind != NodeKind::Mesh || s.childCount != 0) return visit(child, inside, shown, fade);
+        // A level that is one mesh, the common case: its item, without the walk's general step.
+        ++out.nodesVisited;
+        if (!inside && frustum.classify(s.bound) == Containment::Outside) {
+            ++out.nodesCulled;
+            return;
+        }
+        addMesh(s, shown, fade);
     }
 };
 

@@ -139,3 +139,65 @@ TEST(LodSelect, withLodOffTheFinestLevelIsShown) {
     ASSERT_EQ(list.items.size(), row.positions.size());
     for (const DrawItem& item : list.items) EXPECT_EQ(item.level, 2);
 }
+
+namespace {
+
+// A unit sphere's geometry moved to `center`.
+Geometry sphereAt(glm::vec3 center) {
+    Geometry g = makeUvSphere(1.0f, 8, 4);
+    for (glm::vec3& p : g.positions) p += center;
+    g.finalize();
+    return g;
+}
+
+} // namespace
+
+TEST(LodSelect, aLevelOutsideTheViewIsCulledThoughItsLodNodeIsNot) {
+    World world;
+    Scene& scene = world.scene;
+    const std::uint32_t material = scene.addMaterial({});
+    LodNode node;
+    node.setThresholds({1000.0f});  // every distance here: level 0
+    const NodeId lod = scene.addNode(scene.root(), NodeKind::Lod, world.lods.add(node));
+    // Level 0 lies far to the right, out of view; level 1 straight ahead.
+    scene.addMesh(lod, {scene.addGeometry(sphereAt({60, 0, -20})), material});
+    scene.addMesh(lod, {scene.addGeometry(sphereAt({0, 0, -20})), material});
+    scene.update();
+    DrawList list;
+    select(world, camera, {}, list);
+    EXPECT_TRUE(list.items.empty());
+    EXPECT_EQ(list.nodesCulled, 1u);
+
+    // Far enough for level 1: that one is in view.
+    node.setThresholds({1.0f});
+    World near;
+    const std::uint32_t m = near.scene.addMaterial({});
+    const NodeId lod1 = near.scene.addNode(near.scene.root(), NodeKind::Lod, near.lods.add(node));
+    near.scene.addMesh(lod1, {near.scene.addGeometry(sphereAt({60, 0, -20})), m});
+    const NodeId shown = near.scene.addMesh(lod1, {near.scene.addGeometry(sphereAt({0, 0, -20})), m});
+    near.scene.update();
+    select(near, camera, {}, list);
+    ASSERT_EQ(list.items.size(), 1u);
+    EXPECT_EQ(list.items[0].node, shown);
+    EXPECT_EQ(list.items[0].level, 1);
+}
+
+TEST(LodSelect, aLevelThatIsASubtreeDrawsAllOfIt) {
+    World world;
+    Scene& scene = world.scene;
+    const std::uint32_t material = scene.addMaterial({});
+    LodNode node;
+    node.setThresholds({1000.0f});
+    const NodeId lod = scene.addNode(scene.root(), NodeKind::Lod, world.lods.add(node));
+    const NodeId fine = scene.addGroup(lod);
+    const NodeId left = scene.addMesh(fine, {scene.addGeometry(sphereAt({-2, 0, -20})), material});
+    const NodeId right = scene.addMesh(fine, {scene.addGeometry(sphereAt({2, 0, -20})), material});
+    scene.addMesh(lod, {scene.addGeometry(sphereAt({0, 0, -20})), material});
+    scene.update();
+    DrawList list;
+    select(world, camera, {}, list);
+    ASSERT_EQ(list.items.size(), 2u);
+    EXPECT_EQ(list.items[0].node, left);
+    EXPECT_EQ(list.items[1].node, right);
+    for (const DrawItem& item : list.items) EXPECT_EQ(item.level, 0);
+}
