@@ -14,14 +14,22 @@ void LodRule::setThresholds(std::initializer_list<float> t) {
 }
 
 std::uint32_t LodTable::add(const LodNode& node) {
-    chosen_.push_back({.rule = node, .lastChosen = -std::numeric_limits<double>::infinity()});
+    const LodRule& rule = node;
+    // Scenes add their nodes' rules in runs of one kind: the last few are
+    // where a repeat is found.
+    constexpr std::size_t kLookBack = 8;
+    const auto repeat = std::find(rules_.end() - static_cast<std::ptrdiff_t>(std::min(rules_.size(), kLookBack)), rules_.end(), rule);
+    const auto shared = static_cast<std::uint32_t>(repeat - rules_.begin());
+    if (repeat == rules_.end()) rules_.push_back(rule);
+    history_.push_back({.lastChosen = -std::numeric_limits<double>::infinity(), .rule = shared});
+    fadeStart_.push_back(0.0);
     gaze_.push_back({node.center, node.meanRadius, node.acuity, {}});
-    return static_cast<std::uint32_t>(chosen_.size() - 1);
+    return static_cast<std::uint32_t>(history_.size() - 1);
 }
 
 LodNode LodTable::node(std::uint32_t i) const {
     LodNode n;
-    static_cast<LodRule&>(n) = chosen_[i].rule;
+    static_cast<LodRule&>(n) = rule(i);
     n.center = gaze_[i].center;
     n.meanRadius = gaze_[i].meanRadius;
     n.acuity = gaze_[i].acuity;
@@ -29,26 +37,28 @@ LodNode LodTable::node(std::uint32_t i) const {
 }
 
 void LodTable::reset() {
-    for (Chosen& c : chosen_) {
-        c.level = c.fadeFrom = kNoLevel;
-        c.lastChosen = -std::numeric_limits<double>::infinity();
+    for (History& h : history_) {
+        h.level = h.fadeFrom = kNoLevel;
+        h.lastChosen = -std::numeric_limits<double>::infinity();
     }
     for (GazeShape& g : gaze_) g.tracked = {};
 }
 
-LodChoice LodTable::fade(Chosen& c, std::uint8_t previous, std::uint8_t level, bool fresh, double timeSeconds) {
+LodChoice LodTable::fade(std::uint32_t i, std::uint8_t previous, std::uint8_t level, bool fresh, double timeSeconds) {
+    History& h = history_[i];
+    double& fadeStart = fadeStart_[i];
     if (previous != kNoLevel && previous != level) {
-        c.fadeFrom = previous;
-        c.fadeStart = timeSeconds;
+        h.fadeFrom = previous;
+        fadeStart = timeSeconds;
     }
-    if (fresh) c.fadeFrom = kNoLevel;
-    if (c.fadeFrom == kNoLevel) return {level, kNoLevel, 1.0f};
-    const double t = (timeSeconds - c.fadeStart) / c.rule.fadeSeconds;
+    if (fresh) h.fadeFrom = kNoLevel;
+    if (h.fadeFrom == kNoLevel) return {level, kNoLevel, 1.0f};
+    const double t = (timeSeconds - fadeStart) / rule(i).fadeSeconds;
     if (t >= 1.0) {
-        c.fadeFrom = kNoLevel;
+        h.fadeFrom = kNoLevel;
         return {level, kNoLevel, 1.0f};
     }
-    return {level, c.fadeFrom, static_cast<float>(std::max(t, 0.0))};
+    return {level, h.fadeFrom, static_cast<float>(std::max(t, 0.0))};
 }
 
 float LodTable::acuity(std::uint32_t i, const glm::mat4& world, const glm::vec3& eye, const glm::vec3& gaze,

@@ -16,8 +16,7 @@
 // PIXEL_SIZE_ON_SCREEN), the paper's gaze acuity k1·k2 (graph/lod/GazeAcuity.hpp),
 // or pixels weighted by acuity. A band around each threshold (hysteresis)
 // keeps a node hovering at a boundary from flipping level every frame; the
-// per-node previous level lives in LodTable, beside the node's rule, not in
-// the scene.
+// per-node previous level lives in LodTable, not in the scene.
 
 #include "graph/lod/GazeAcuity.hpp"
 
@@ -53,6 +52,8 @@ struct LodRule {
 
     // Sets levelCount to thresholds.size() + 1; aborts beyond kMaxLodLevels.
     void setThresholds(std::initializer_list<float> t);
+
+    bool operator==(const LodRule&) const = default;
 };
 
 // An LOD node's settings: its rule, and the shape the gaze policies see.
@@ -113,25 +114,26 @@ struct LodChoice {
 class LodTable {
 public:
     std::uint32_t add(const LodNode& node);
-    std::size_t size() const { return chosen_.size(); }
-    const LodRule& rule(std::uint32_t i) const { return chosen_[i].rule; }
+    std::size_t size() const { return history_.size(); }
+    const LodRule& rule(std::uint32_t i) const { return rules_[history_[i].rule]; }
     LodNode node(std::uint32_t i) const;
 
     // Level shown last (kNoLevel before the first choice).
-    std::uint8_t previousLevel(std::uint32_t i) const { return chosen_[i].level; }
+    std::uint8_t previousLevel(std::uint32_t i) const { return history_[i].level; }
     // Forgets every node's history, e.g. after a cut in a replay.
     void reset();
 
     // Picks node i's level for this frame and records it.
     LodChoice choose(std::uint32_t i, const LodInputs& in, double timeSeconds) {
-        Chosen& c = chosen_[i];
-        const bool fresh = timeSeconds - c.lastChosen > kStaleSeconds;
-        const std::uint8_t previous = fresh ? kNoLevel : c.level;
-        const std::uint8_t level = chooseLevel(c.rule, lodMetric(c.rule.policy, in), previous);
-        c.lastChosen = timeSeconds;
-        c.level = level;
-        if (c.rule.fadeSeconds <= 0.0f) return {level, kNoLevel, 1.0f};
-        return fade(c, previous, level, fresh, timeSeconds);
+        History& h = history_[i];
+        const LodRule& rule = rules_[h.rule];
+        const bool fresh = timeSeconds - h.lastChosen > kStaleSeconds;
+        const std::uint8_t previous = fresh ? kNoLevel : h.level;
+        const std::uint8_t level = chooseLevel(rule, lodMetric(rule.policy, in), previous);
+        h.lastChosen = timeSeconds;
+        h.level = level;
+        if (rule.fadeSeconds <= 0.0f) return {level, kNoLevel, 1.0f};
+        return fade(i, previous, level, fresh, timeSeconds);
     }
 
     // Inputs for the gaze policies: the acuity of node i whose LOD node has
@@ -145,16 +147,17 @@ private:
     // old level, no fade from it, no angular speed over the gap.
     static constexpr double kStaleSeconds = 0.25;
 
-    // A node's rule and its history in one cache line: all that choose()
-    // reads and writes, so a visible node costs the walk one line here.
-    struct alignas(64) Chosen {
-        LodRule rule;
+    // What choose() reads and writes of a node, a quarter of a cache line.
+    // The rule it names is most often shared: a scene's LOD nodes have few
+    // distinct rules, which stay in cache, so a visible node costs the walk
+    // 16 bytes here rather than its own line, read and written back.
+    struct History {
+        double lastChosen;
+        std::uint32_t rule;                // index into rules_
         std::uint8_t level = kNoLevel;     // shown last
         std::uint8_t fadeFrom = kNoLevel;  // level fading out
-        double lastChosen = 0.0;
-        double fadeStart = 0.0;
     };
-    static_assert(sizeof(Chosen) == 64, "one node's rule and history in one cache line");
+    static_assert(sizeof(History) == 16, "four nodes' history to a cache line");
     // The gaze policies' side of a node, read only by acuity().
     struct GazeShape {
         glm::vec3 center;
@@ -164,10 +167,12 @@ private:
         double trackedAt = 0.0;
     };
 
-    // choose() for a node with a cross-fade time.
-    LodChoice fade(Chosen& c, std::uint8_t previous, std::uint8_t level, bool fresh, double timeSeconds);
+    // choose() for node i, whose rule has a cross-fade time.
+    LodChoice fade(std::uint32_t i, std::uint8_t previous, std::uint8_t level, bool fresh, double timeSeconds);
 
-    std::vector<Chosen> chosen_;
+    std::vector<LodRule> rules_;  // a rule repeated by nodes added close together is kept once
+    std::vector<History> history_;
+    std::vector<double> fadeStart_;  // per node, read by fade() only
     std::vector<GazeShape> gaze_;
 };
 

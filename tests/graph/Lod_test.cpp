@@ -99,3 +99,35 @@ TEST(Lod, crossFadeBlendsOldAndNewLevelOverFadeTime) {
     EXPECT_EQ(c.fadingLevel, kNoLevel);
     EXPECT_FLOAT_EQ(c.fade, 1.0f);
 }
+
+TEST(Lod, nodesWithTheSameRuleKeepTheirOwnHistory) {
+    LodTable table;
+    const std::uint32_t a = table.add(distanceNode(0.1f)), b = table.add(distanceNode(0.1f));
+    EXPECT_EQ(table.choose(a, {.distance = 40.0f}, 0.0).level, 0);
+    // 54 is within the band around 50: a, shown fine, stays fine; b, seen
+    // for the first time, has no band.
+    EXPECT_EQ(table.choose(a, {.distance = 54.0f}, 0.016).level, 0);
+    EXPECT_EQ(table.choose(b, {.distance = 54.0f}, 0.016).level, 1);
+    EXPECT_EQ(table.previousLevel(a), 0);
+    EXPECT_EQ(table.previousLevel(b), 1);
+}
+
+TEST(Lod, everyNodeKeepsItsOwnRuleWhereRulesRepeat) {
+    // Every third node has the same rule; the others each have their own,
+    // so repeats lie both next to each other and far apart.
+    const auto nearEdge = [](int k) { return k % 3 == 0 ? 10.0f : 10.0f + static_cast<float>(k); };
+    LodTable table;
+    std::vector<std::uint32_t> nodes;
+    for (int k = 0; k < 40; ++k) {
+        LodNode n = distanceNode(0.0f);
+        n.setThresholds({nearEdge(k), 1000.0f});
+        nodes.push_back(table.add(n));
+    }
+    for (int k = 0; k < 40; ++k) {
+        EXPECT_EQ(table.rule(nodes[k]).thresholds[0], nearEdge(k)) << "node " << k;
+        EXPECT_EQ(table.node(nodes[k]).thresholds[0], nearEdge(k)) << "node " << k;
+        // Just short of its own first threshold: fine; just past it: coarser.
+        EXPECT_EQ(table.choose(nodes[k], {.distance = nearEdge(k) - 0.5f}, 0.0).level, 0) << "node " << k;
+        EXPECT_EQ(table.choose(nodes[k], {.distance = nearEdge(k) + 0.5f}, 0.016).level, 1) << "node " << k;
+    }
+}
