@@ -1,6 +1,7 @@
 // arcomp bench cull: the select traversal (cull + LOD + draw-list build) on
 // the scene of CullScene.hpp, timed against OpenSceneGraph's CullVisitor on
-// the same scene in the same run where OpenSceneGraph is available.
+// the same scene in the same run where OpenSceneGraph is available, the two
+// sides taking turns a block of frames at a time.
 //
 // One JSON line: per side, the median, 95th percentile, minimum and maximum
 // frame time over the measured frames (a median alone hides the frames a
@@ -20,13 +21,17 @@
 #include <algorithm>
 #include <chrono>
 #include <iostream>
-#include <memory>
+#include <utility>
 
 namespace arcomp {
 
 namespace {
 
 constexpr int kWarmupFrames = 20;
+// Frames a side is timed in one turn, and the untimed ones that start each
+// later turn.
+constexpr int kBlockFrames = 20;
+constexpr int kBlockWarmupFrames = 2;
 
 struct ArcompCullScene {
     World world;
@@ -65,24 +70,29 @@ View cameraView(const CullScene& s, int frame, int frames) {
     return View::lookAt(c.eye, c.target, {0, 1, 0}, kCullFovyDegrees, {kCullWidth, kCullHeight}, kCullNear, kCullFar);
 }
 
-CullRun runArcompCull(ArcompCullScene& a, const CullScene& s, int frames) {
-    CullRun run;
-    DrawList list;
-    for (int f = -kWarmupFrames; f < frames; ++f) {
-        const int frame = std::max(f, 0);
-        const View view = cameraView(s, frame, frames);
-        const SelectSettings settings{.timeSeconds = frame / 60.0};
-        const auto start = std::chrono::steady_clock::now();
-        select(a.world, view, settings, list);
-        const auto stop = std::chrono::steady_clock::now();
-        if (f < 0) continue;
-        run.msPerFrame.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
-        CullFrameCounts counts;
-        counts.visible = static_cast<std::uint32_t>(list.items.size());
-        for (const DrawItem& item : list.items) ++counts.levels[std::min<int>(item.level, 2)];
+// One select of frame `frame` of `frames`: its wall milliseconds and what it found.
+std::pair<double, CullFrameCounts> arcompFrame(ArcompCullScene& a, const CullScene& s, DrawList& list, int frame, int frames) {
+    const View view = cameraView(s, frame, frames);
+    const SelectSettings settings{.timeSeconds = frame / 60.0};
+    const auto start = std::chrono::steady_clock::now();
+    select(a.world, view, settings, list);
+    const auto stop = std::chrono::steady_clock::now();
+    CullFrameCounts counts;
+    counts.visible = static_cast<std::uint32_t>(list.items.size());
+    for (const DrawItem& item : list.items) ++counts.levels[std::min<int>(item.level, 2)];
+    return {std::chrono::duration<double, std::milli>(stop - start).count(), counts};
+}
+
+// Frames [first, last) of the path on one side, after `warmup` untimed
+// frames that bring that side's data back into cache; `cull(frame)` culls
+// one frame and returns its time and counts.
+template <class Cull> void timeBlock(CullRun& run, int first, int last, int warmup, Cull&& cull) {
+    for (int f = 0; f < warmup; ++f) cull(first);
+    for (int f = first; f < last; ++f) {
+        const auto [ms, counts] = cull(f);
+        run.msPerFrame.push_back(ms);
         run.counts.push_back(counts);
     }
-    return run;
 }
 
 struct Summary {
@@ -114,30 +124,49 @@ int runCullBench(std::uint32_t objects, const std::string& layoutName, int frame
     const CullScene description = makeCullScene(objects, layout);
 
     std::cerr << "cull: building " << objects << " objects (" << layoutName << ")\n";
-    auto scene = std::make_unique<ArcompCullScene>();
-    build(*scene, description);
-    std::cerr << "cull: " << scene->scene.nodeCount() << " nodes; timing arcomp\n";
-    const CullRun ours = runArcompCull(*scene, description, frames);
-    const Summary s = summarize(ours);
+    ArcompCullScene scene;
+    build(scene, description);
+    DrawList list;
+    const auto ours = [&](int f) { return arcompFrame(scene, description, list, f, frames); };
+    CullRun ourRun;
+#ifdef ARCOMP_HAVE_OSG
+    OsgCull osgCull(description);
+    const auto osg = [&](int f) { return osgCull.frame(f, frames); };
+    CullRun osgRun;
+    // The two sides take turns, a block of frames each, so that both are
+    // timed through the same spells of the machine: on a shared one, a core
+    // has run 1.6x slower than its sibling for minutes at a time, and a
+    // process moved between the two sides' runs would carry that into
+    // their ratio.
+    std::cerr << "cull: " << scene.scene.nodeCount() << " nodes; timing arcomp and OpenSceneGraph CullVisitor in turns\n";
+    for (int first = 0; first < frames; first += kBlockFrames) {
+        const int last = std::min(frames, first + kBlockFrames);
+        const int warmup = first == 0 ? kWarmupFrames : kBlockWarmupFrames;
+        timeBlock(ourRun, first, last, warmup, ours);
+        timeBlock(osgRun, first, last, warmup, osg);
+    }
+#else
+    std::cerr << "cull: " << scene.scene.nodeCount() << " nodes; timing arcomp\n";
+    timeBlock(ourRun, 0, frames, kWarmupFrames, ours);
+#endif
+    const Summary s = summarize(ourRun);
 
     BenchJson json;
     const auto levelCounts = [&json](const char* key, const Summary& summary) {
         json.beginArray(key).value(summary.levels[0]).value(summary.levels[1]).value(summary.levels[2]).end();
     };
     json.field("bench", "cull").field("objects", objects).field("layout", layoutName).field("frames", frames)
-        .field("warmup_frames", kWarmupFrames).field("ms_per_frame_median", s.medianMs)
+        .field("measured_frames", ourRun.msPerFrame.size()).field("warmup_frames", kWarmupFrames).field("ms_per_frame_median", s.medianMs)
         .field("ms_per_frame_p95", s.p95Ms).field("ms_per_frame_min", s.minMs).field("ms_per_frame_max", s.maxMs)
         .field("ns_per_object_median", s.medianMs * 1e6 / objects).field("visible_median", s.visibleMedian);
     levelCounts("lod_level_counts", s);
-    json.field("nodes", scene->scene.nodeCount());
+    json.field("nodes", scene.scene.nodeCount()).field("block_frames", kBlockFrames)
+        .field("block_warmup_frames", kBlockWarmupFrames);
 #ifdef ARCOMP_HAVE_OSG
-    scene.reset();  // give OpenSceneGraph the memory
-    std::cerr << "cull: timing OpenSceneGraph CullVisitor\n";
-    const CullRun osg = runOsgCull(description, kWarmupFrames, frames);
-    const Summary o = summarize(osg);
+    const Summary o = summarize(osgRun);
     std::size_t mismatched = 0;
-    for (std::size_t f = 0; f < ours.counts.size(); ++f) mismatched += ours.counts[f] == osg.counts[f] ? 0 : 1;
-    json.field("osg_ms_per_frame_median", o.medianMs).field("osg_ms_per_frame_p95", o.p95Ms)
+    for (std::size_t f = 0; f < ourRun.counts.size(); ++f) mismatched += ourRun.counts[f] == osgRun.counts[f] ? 0 : 1;
+    json.field("osg_measured_frames", osgRun.msPerFrame.size()).field("osg_ms_per_frame_median", o.medianMs).field("osg_ms_per_frame_p95", o.p95Ms)
         .field("osg_ms_per_frame_min", o.minMs)
         .field("osg_ms_per_frame_max", o.maxMs).field("osg_visible_median", o.visibleMedian);
     levelCounts("osg_lod_level_counts", o);

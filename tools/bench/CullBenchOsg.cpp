@@ -92,69 +92,75 @@ CullFrameCounts countLeaves(osgUtil::RenderBin& bin, const OsgScene& scene) {
 
 } // namespace
 
-CullRun runOsgCull(const CullScene& s, int warmup, int frames) {
+struct OsgCull::State {
+    explicit State(const CullScene& s) : description(s) {}
     OsgScene scene;
-    for (int l = 0; l < 3; ++l) scene.levels[l] = makeLevel(makeUvSphere(1.0f, kCullSphereSlices[l], kCullSphereStacks[l]));
-    addGroup(scene, s, 0, scene.root.get());
-    scene.root->getBound();  // bounds are computed lazily; not part of a frame
-
     osg::ref_ptr<osgUtil::CullVisitor> cull = new osgUtil::CullVisitor;
     osg::ref_ptr<osgUtil::StateGraph> stateGraph = new osgUtil::StateGraph;
     osg::ref_ptr<osgUtil::RenderStage> stage = new osgUtil::RenderStage;
     osg::ref_ptr<osg::StateSet> localState = new osg::StateSet;
     osg::ref_ptr<osg::Viewport> viewport = new osg::Viewport(0, 0, kCullWidth, kCullHeight);
     osg::ref_ptr<osg::FrameStamp> frameStamp = new osg::FrameStamp;
+    osg::Matrixd projection =
+        osg::Matrixd::perspective(kCullFovyDegrees, double(kCullWidth) / kCullHeight, kCullNear, kCullFar);
+    const CullScene& description;
+    unsigned frameNumber = 0;
+};
+
+OsgCull::OsgCull(const CullScene& s) : state_(std::make_unique<State>(s)) {
+    State& st = *state_;
+    for (int l = 0; l < 3; ++l) st.scene.levels[l] = makeLevel(makeUvSphere(1.0f, kCullSphereSlices[l], kCullSphereStacks[l]));
+    addGroup(st.scene, s, 0, st.scene.root.get());
+    st.scene.root->getBound();  // bounds are computed lazily; not part of a frame
     // All six planes and no small-feature culling, as our select pass; near
     // and far are fixed, not computed from the scene.
-    cull->setCullingMode(osg::CullSettings::VIEW_FRUSTUM_CULLING);
-    cull->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
-    const osg::Matrixd projection =
-        osg::Matrixd::perspective(kCullFovyDegrees, double(kCullWidth) / kCullHeight, kCullNear, kCullFar);
+    st.cull->setCullingMode(osg::CullSettings::VIEW_FRUSTUM_CULLING);
+    st.cull->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
+}
 
-    CullRun run;
-    for (int f = -warmup; f < frames; ++f) {
-        const int frame = std::max(f, 0);
-        const CullCamera c = cullCamera(s, frame, frames);
-        const osg::Matrixd view = osg::Matrixd::lookAt(osg::Vec3d(c.eye.x, c.eye.y, c.eye.z),
-                                                       osg::Vec3d(c.target.x, c.target.y, c.target.z),
-                                                       osg::Vec3d(0, 1, 0));
-        const auto start = std::chrono::steady_clock::now();
-        // As SceneView::cullStage: reset, hand over the render graph, push
-        // viewport and matrices, traverse, pop, sort and prune.
-        frameStamp->setFrameNumber(static_cast<unsigned>(f + warmup));
-        cull->reset();
-        cull->setFrameStamp(frameStamp.get());
-        cull->setTraversalNumber(frameStamp->getFrameNumber());
-        stateGraph->clean();
-        stage->reset();
-        cull->setStateGraph(stateGraph.get());
-        cull->setRenderStage(stage.get());
-        stage->setViewport(viewport.get());
-        stage->setInitialViewMatrix(new osg::RefMatrix(view));
-        cull->pushStateSet(localState.get());
-        cull->pushViewport(viewport.get());
-        cull->pushProjectionMatrix(new osg::RefMatrix(projection));
-        cull->pushModelViewMatrix(new osg::RefMatrix(view), osg::Transform::ABSOLUTE_RF);
-        scene.root->accept(*cull);
-        cull->popModelViewMatrix();
-        cull->popProjectionMatrix();
-        cull->popViewport();
-        cull->popStateSet();
-        stage->sort();
-        stateGraph->prune();
-        const auto stop = std::chrono::steady_clock::now();
-        if (f < 0) continue;
-        run.msPerFrame.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
-        run.counts.push_back(countLeaves(*stage, scene));
-    }
+OsgCull::~OsgCull() {
     // Tearing the scene down would take longer than the benchmark: every
     // LOD leaves the parent list of the shared Geodes, one erase at a time,
     // which is quadratic in the object count. The process ends right after.
-    stage->reset();
-    stateGraph->clean();
-    static_cast<void>(scene.root.release());
-    for (auto& level : scene.levels) static_cast<void>(level.release());
-    return run;
+    State& st = *state_;
+    st.stage->reset();
+    st.stateGraph->clean();
+    static_cast<void>(st.scene.root.release());
+    for (auto& level : st.scene.levels) static_cast<void>(level.release());
+}
+
+std::pair<double, CullFrameCounts> OsgCull::frame(int frame, int frames) {
+    State& st = *state_;
+    const CullCamera c = cullCamera(st.description, frame, frames);
+    const osg::Matrixd view = osg::Matrixd::lookAt(osg::Vec3d(c.eye.x, c.eye.y, c.eye.z),
+                                                   osg::Vec3d(c.target.x, c.target.y, c.target.z),
+                                                   osg::Vec3d(0, 1, 0));
+    const auto start = std::chrono::steady_clock::now();
+    // As SceneView::cullStage: reset, hand over the render graph, push
+    // viewport and matrices, traverse, pop, sort and prune.
+    st.frameStamp->setFrameNumber(st.frameNumber++);
+    st.cull->reset();
+    st.cull->setFrameStamp(st.frameStamp.get());
+    st.cull->setTraversalNumber(st.frameStamp->getFrameNumber());
+    st.stateGraph->clean();
+    st.stage->reset();
+    st.cull->setStateGraph(st.stateGraph.get());
+    st.cull->setRenderStage(st.stage.get());
+    st.stage->setViewport(st.viewport.get());
+    st.stage->setInitialViewMatrix(new osg::RefMatrix(view));
+    st.cull->pushStateSet(st.localState.get());
+    st.cull->pushViewport(st.viewport.get());
+    st.cull->pushProjectionMatrix(new osg::RefMatrix(st.projection));
+    st.cull->pushModelViewMatrix(new osg::RefMatrix(view), osg::Transform::ABSOLUTE_RF);
+    st.scene.root->accept(*st.cull);
+    st.cull->popModelViewMatrix();
+    st.cull->popProjectionMatrix();
+    st.cull->popViewport();
+    st.cull->popStateSet();
+    st.stage->sort();
+    st.stateGraph->prune();
+    const auto stop = std::chrono::steady_clock::now();
+    return {std::chrono::duration<double, std::milli>(stop - start).count(), countLeaves(*st.stage, st.scene)};
 }
 
 } // namespace arcomp

@@ -12,7 +12,9 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace arcomp {
@@ -62,8 +64,23 @@ struct CullRun {
     std::vector<CullFrameCounts> counts;       // per measured frame
 };
 
-// Times OpenSceneGraph's CullVisitor on the same scene and path; defined
-// only where OpenSceneGraph was found (ARCOMP_HAVE_OSG).
-CullRun runOsgCull(const CullScene& s, int warmup, int frames);
+// OpenSceneGraph's CullVisitor on the same scene and path, built once and
+// timed one frame at a time, so that the bench can alternate between the
+// two sides; defined only where OpenSceneGraph was found (ARCOMP_HAVE_OSG).
+class OsgCull {
+public:
+    explicit OsgCull(const CullScene& s);
+    ~OsgCull();
+    OsgCull(const OsgCull&) = delete;
+    OsgCull& operator=(const OsgCull&) = delete;
+
+    // Culls frame `frame` of `frames` of the path: its wall milliseconds
+    // (the cull alone) and what it found.
+    std::pair<double, CullFrameCounts> frame(int frame, int frames);
+
+private:
+    struct State;
+    std::unique_ptr<State> state_;
+};
 
 } // namespace arcomp
