@@ -18,7 +18,8 @@ std::uint32_t LodTable::add(const LodNode& node) {
     // Scenes add their nodes' rules in runs of one kind: the last few are
     // where a repeat is found.
     constexpr std::size_t kLookBack = 8;
-    const auto repeat = std::find(rules_.end() - static_cast<std::ptrdiff_t>(std::min(rules_.size(), kLookBack)), rules_.end(), rule);
+    const auto lookBack = static_cast<std::ptrdiff_t>(std::min(rules_.size(), kLookBack));
+    const auto repeat = std::find(rules_.end() - lookBack, rules_.end(), rule);
     const auto shared = static_cast<std::uint32_t>(repeat - rules_.begin());
     if (repeat == rules_.end()) rules_.push_back(rule);
     history_.push_back({.lastChosen = -std::numeric_limits<double>::infinity(), .rule = shared});

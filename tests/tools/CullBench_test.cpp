@@ -10,7 +10,8 @@
 TEST(CullBench, bothSidesSeeTheSameObjectsEveryFrameInBothLayouts) {
     for (const char* layout : {"flat", "tree"}) {
         // 45 frames: two full turns of 20 and a short third one.
-        const auto r = arcomp::test::arcompCommand(std::string("bench cull --objects 2000 --frames 45 --layout ") + layout, false);
+        const auto r =
+            arcomp::test::arcompCommand(std::string("bench cull --objects 2000 --frames 45 --layout ") + layout, false);
         ASSERT_EQ(r.code, 0) << r.out;
         const YAML::Node json = YAML::Load(arcomp::test::lastLine(r.out));
         EXPECT_EQ(json["frames"].as<int>(), 45);

@@ -71,7 +71,8 @@ View cameraView(const CullScene& s, int frame, int frames) {
 }
 
 // One select of frame `frame` of `frames`: its wall milliseconds and what it found.
-std::pair<double, CullFrameCounts> arcompFrame(ArcompCullScene& a, const CullScene& s, DrawList& list, int frame, int frames) {
+std::pair<double, CullFrameCounts> arcompFrame(ArcompCullScene& a, const CullScene& s, DrawList& list, int frame,
+                                               int frames) {
     const View view = cameraView(s, frame, frames);
     const SelectSettings settings{.timeSeconds = frame / 60.0};
     const auto start = std::chrono::steady_clock::now();
@@ -138,7 +139,8 @@ int runCullBench(std::uint32_t objects, const std::string& layoutName, int frame
     // has run 1.6x slower than its sibling for minutes at a time, and a
     // process moved between the two sides' runs would carry that into
     // their ratio.
-    std::cerr << "cull: " << scene.scene.nodeCount() << " nodes; timing arcomp and OpenSceneGraph CullVisitor in turns\n";
+    std::cerr << "cull: " << scene.scene.nodeCount()
+              << " nodes; timing arcomp and OpenSceneGraph CullVisitor in turns\n";
     for (int first = 0; first < frames; first += kBlockFrames) {
         const int last = std::min(frames, first + kBlockFrames);
         const int warmup = first == 0 ? kWarmupFrames : kBlockWarmupFrames;
@@ -156,7 +158,8 @@ int runCullBench(std::uint32_t objects, const std::string& layoutName, int frame
         json.beginArray(key).value(summary.levels[0]).value(summary.levels[1]).value(summary.levels[2]).end();
     };
     json.field("bench", "cull").field("objects", objects).field("layout", layoutName).field("frames", frames)
-        .field("measured_frames", ourRun.msPerFrame.size()).field("warmup_frames", kWarmupFrames).field("ms_per_frame_median", s.medianMs)
+        .field("measured_frames", ourRun.msPerFrame.size()).field("warmup_frames", kWarmupFrames)
+        .field("ms_per_frame_median", s.medianMs)
         .field("ms_per_frame_p95", s.p95Ms).field("ms_per_frame_min", s.minMs).field("ms_per_frame_max", s.maxMs)
         .field("ns_per_object_median", s.medianMs * 1e6 / objects).field("visible_median", s.visibleMedian);
     levelCounts("lod_level_counts", s);
@@ -166,7 +169,8 @@ int runCullBench(std::uint32_t objects, const std::string& layoutName, int frame
     const Summary o = summarize(osgRun);
     std::size_t mismatched = 0;
     for (std::size_t f = 0; f < ourRun.counts.size(); ++f) mismatched += ourRun.counts[f] == osgRun.counts[f] ? 0 : 1;
-    json.field("osg_measured_frames", osgRun.msPerFrame.size()).field("osg_ms_per_frame_median", o.medianMs).field("osg_ms_per_frame_p95", o.p95Ms)
+    json.field("osg_measured_frames", osgRun.msPerFrame.size()).field("osg_ms_per_frame_median", o.medianMs)
+        .field("osg_ms_per_frame_p95", o.p95Ms)
         .field("osg_ms_per_frame_min", o.minMs)
         .field("osg_ms_per_frame_max", o.maxMs).field("osg_visible_median", o.visibleMedian);
     levelCounts("osg_lod_level_counts", o);

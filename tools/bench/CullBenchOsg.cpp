@@ -109,7 +109,8 @@ struct OsgCull::State {
 
 OsgCull::OsgCull(const CullScene& s) : state_(std::make_unique<State>(s)) {
     State& st = *state_;
-    for (int l = 0; l < 3; ++l) st.scene.levels[l] = makeLevel(makeUvSphere(1.0f, kCullSphereSlices[l], kCullSphereStacks[l]));
+    for (int l = 0; l < 3; ++l)
+        st.scene.levels[l] = makeLevel(makeUvSphere(1.0f, kCullSphereSlices[l], kCullSphereStacks[l]));
     addGroup(st.scene, s, 0, st.scene.root.get());
     st.scene.root->getBound();  // bounds are computed lazily; not part of a frame
     // All six planes and no small-feature culling, as our select pass; near
