@@ -136,13 +136,17 @@ void Compositor::beginHoldout() {
 
 void Compositor::endHoldout() { glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE); }
 
-PersonTiles Compositor::findTiles(const cv::Mat& person) {
-    PersonTiles found;
-    if (person.type() != CV_8UC4 || person.empty()) return found;  // person() says what is wrong
+void Compositor::findTiles(const cv::Mat& person, PersonTiles& found) {
+    found.quads.clear();
+    found.count = 0;
+    found.rows = glm::ivec2(0);
+    found.occupied.clear();
+    if (person.type() != CV_8UC4 || person.empty()) return;  // person() says what is wrong
     const glm::ivec2 size(person.cols, person.rows);
     const glm::ivec2 grid = tileGrid(size, kTile);
     const int tx = grid.x, ty = grid.y;
-    std::vector<std::uint8_t> occupied(static_cast<std::size_t>(tx * ty), 0);
+    std::vector<std::uint8_t>& occupied = found.occupied;
+    occupied.assign(static_cast<std::size_t>(tx * ty), 0);
     // A pixel's alpha byte as a bit mask over the pixel read as one word:
     // a tile's row segment is then one OR over kTile words, which vectorizes.
     constexpr std::array<std::uint8_t, 4> kAlphaBytes{0, 0, 0, 0xFF};
@@ -168,7 +172,6 @@ PersonTiles Compositor::findTiles(const cv::Mat& person) {
             found.rows = {std::min(found.rows.x, j * kTile), std::min(size.y, (j + 1) * kTile)};
         }
     appendTileQuads(occupied, size, kTile, TileRows::FromTop, found.quads);
-    return found;
 }
 
 void Compositor::uploadSlots(const PersonDepths& depths) {
@@ -190,7 +193,7 @@ void Compositor::uploadSlots(const PersonDepths& depths) {
 }
 
 void Compositor::person(const cv::Mat& person, const PersonDepths& depths, const glm::mat4& projection) {
-    ownTiles_ = findTiles(person);
+    findTiles(person, ownTiles_);
     this->person(person, ownTiles_, depths, projection);
 }
 

@@ -37,14 +37,17 @@
 
 #include <opencv2/core/mat.hpp>
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
 namespace arcomp {
 
 // The tiles of a person layer that hold any of it, which is all that
-// Compositor::person draws and uploads.
+// Compositor::person draws and uploads. Found again into the same value
+// each frame, which keeps its buffers.
 struct PersonTiles {
+    std::vector<std::uint8_t> occupied;  // per tile, row by row from the top (tileGrid)
     std::vector<float> quads;  // the occupied tiles as quads (TileQuads), two triangles each, NDC x, y
     std::size_t count = 0;
     glm::ivec2 rows{0};  // the image rows [x, y) the occupied tiles cover
@@ -82,9 +85,9 @@ public:
     // person() with the layer's tiles from findTiles, which a pipelined
     // station finds on its capture thread.
     void person(const cv::Mat& person, const PersonTiles& tiles, const PersonDepths& depths, const glm::mat4& projection);
-    // The kTile-square tiles where `person` (premultiplied BGRA) has alpha;
-    // none for an image of another type.
-    static PersonTiles findTiles(const cv::Mat& person);
+    // The kTile-square tiles where `person` (premultiplied BGRA) has alpha,
+    // into `tiles` (its buffers are reused); none for an image of another type.
+    static void findTiles(const cv::Mat& person, PersonTiles& tiles);
 
     // The composited frame: a texture a window can sample or blit from.
     const RenderTarget& output() const { return output_; }

@@ -31,19 +31,16 @@ private:
     std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_ = start_;
 };
 
-// Waits for a future on the way out of a scope, exceptions included.
-template <class Future>
-class JoinOnExit {
+// Waits for the worker's job on the way out of a scope, exceptions included.
+class WaitOnExit {
 public:
-    explicit JoinOnExit(Future& future) : future_(future) {}
-    JoinOnExit(const JoinOnExit&) = delete;
-    JoinOnExit& operator=(const JoinOnExit&) = delete;
-    ~JoinOnExit() {
-        if (future_.valid()) future_.wait();
-    }
+    explicit WaitOnExit(WorkerThread& worker) : worker_(worker) {}
+    WaitOnExit(const WaitOnExit&) = delete;
+    WaitOnExit& operator=(const WaitOnExit&) = delete;
+    ~WaitOnExit() { worker_.wait(); }
 
 private:
-    Future& future_;
+    WorkerThread& worker_;
 };
 
 } // namespace
@@ -101,60 +98,64 @@ Station::Station(const StationConfig& cfg, StationInput input)
 
 Station::~Station() { finish(); }
 
-Station::CapturedFrame Station::captureAndMatte() {
-    CapturedFrame f;
+void Station::captureAndMatte(CapturedFrame& f, const CapturedFrame& shown) {
     StageClock clock;
-    if (!capture_.next()) return f;
-    f.ok = true;
+    f.ok = capture_.next();
+    if (!f.ok) return;
     f.image = capture_.image();
     f.newFrame = capture_.newFrame();
     f.seconds = capture_.seconds();
     f.frameSeconds = capture_.frameSeconds();
+    // A live frame that did not change keeps the shown frame's plate and
+    // tiles: copied into this frame's own buffers, never shared, so that
+    // neither frame writes what the other one reads.
+    const bool same = !f.newFrame && shown.ok;
     if (cfg_.compositing.compositor.backdropVideo) {
-        // Two plates in turn, as the matte's layers: the shown frame's stays
-        // whole while the next one is made.
-        if (f.newFrame || plates_[currentPlate_].empty()) {
-            currentPlate_ ^= 1U;
-            Compositor::makePlate(f.image, plates_[currentPlate_]);
-        }
-        f.plate = plates_[currentPlate_];
+        if (same && !shown.plate.empty())
+            shown.plate.copyTo(f.plate);
+        else
+            Compositor::makePlate(f.image, f.plate);
     }
     f.captureMs = clock.lap();
     matte_.run(f.image, f.newFrame);
     f.person = matte_.person();
-    // The layer's tiles change only with the layer: a live frame that did
-    // not change keeps both.
-    if (f.newFrame || !personTiles_) personTiles_ = Compositor::findTiles(f.person);
-    f.tiles = *personTiles_;
+    if (same)
+        f.tiles = shown.tiles;
+    else
+        Compositor::findTiles(f.person, f.tiles);
     f.matteMs = clock.lap();
-    return f;
 }
 
 bool Station::frame() {
     StageClock clock;
     // The first frame (and any after the input ended) is captured here;
-    // every other was captured while the previous frame rendered. get()
+    // every other was captured while the previous frame rendered. finish()
     // rethrows what the front threw (a damaged file), at the frame it
     // belongs to.
-    CapturedFrame now = ahead_.valid() ? ahead_.get() : captureAndMatte();
-    if (!now.ok) return false;
-    shown_ = std::move(now);
-    // The front writes a new image and the other person layer
+    const unsigned next = shownFront_ ^ 1U;
+    if (front_.busy())
+        front_.finish();
+    else
+        captureAndMatte(fronts_[next], shown());
+    if (!fronts_[next].ok) return false;
+    shownFront_ = next;
+    const CapturedFrame& now = shown();
+    // The front writes the other frame and the other person layer
     // (MatteStage), so this frame's stay as they are while it runs.
-    ahead_ = std::async(std::launch::async, [this] { return captureAndMatte(); });
+    front_.start([this] { captureAndMatte(fronts_[shownFront_ ^ 1U], shown()); });
     // Whatever a stage below throws, the front is done before frame() ends.
-    const JoinOnExit join(ahead_);
-    stats_.newVideoFrame = shown_.newFrame;
-    stats_.captureMs = shown_.captureMs;
-    stats_.matteMs = shown_.matteMs;
+    const WaitOnExit join(front_);
+    stats_.newVideoFrame = now.newFrame;
+    stats_.captureMs = now.captureMs;
+    stats_.matteMs = now.matteMs;
     clock.lap();
-    personDepths_.run(shown_.person, shown_.newFrame);
+    personDepths_.run(now.person, now.newFrame);
     stats_.people = static_cast<std::size_t>(personDepths_.depths().people);
     stats_.trackMs = clock.lap();
 
-    const double seconds = shown_.seconds;
+    const double seconds = now.seconds;
     moveObjects(world_, seconds);
-    animateObjects(world_, shown_.frameSeconds);
+    animateObjects(world_, now.frameSeconds);
     world_.scene.update();
     stats_.updateMs = clock.lap();
 
@@ -170,7 +171,7 @@ bool Station::frame() {
 
     const CompositorConfig& comp = cfg_.compositing.compositor;
     gpuTimes_->time(kGpuBackdrop, [&] {
-        compositor_->beginWithPlate(shown_.plate, {.backdropVideo = comp.backdropVideo, .backdropColor = comp.backdropColor});
+        compositor_->beginWithPlate(now.plate, {.backdropVideo = comp.backdropVideo, .backdropColor = comp.backdropColor});
     });
     if (shadows_)
         gpuTimes_->time(kGpuShadow, [&] {
@@ -187,15 +188,15 @@ bool Station::frame() {
     const PersonDepths& people = personDepths_.depths();
     gpuTimes_->time(kGpuHoldout,
                     [&] { holdout_.cut(world_, drawList_, view_, people.farthest(), *renderer_, *compositor_, stats_); });
-    gpuTimes_->time(kGpuPerson, [&] { compositor_->person(shown_.person, shown_.tiles, people, view_.projection); });
+    gpuTimes_->time(kGpuPerson, [&] { compositor_->person(now.person, now.tiles, people, view_.projection); });
     gpuTimes_->endFrame();
     stats_.personTiles = compositor_->personTiles();
     ++stats_.frame;
     clock.lap();
 
-    outputs_.write(compositor_->output(), shown_.person);
+    outputs_.write(compositor_->output(), now.person);
     stats_.outputMs = clock.lap();
-    ahead_.wait();
+    front_.wait();
     stats_.totalMs = clock.total();
     return true;
 }
@@ -235,7 +236,10 @@ StationInput Station::releaseInput() {
     finish();
     // The frame read ahead was never shown: the next station starts with it.
     bool readAhead = false;
-    if (ahead_.valid()) readAhead = ahead_.get().ok;
+    if (front_.busy()) {
+        front_.finish();
+        readAhead = fronts_[shownFront_ ^ 1U].ok;
+    }
     return capture_.release(readAhead);
 }
 

@@ -24,16 +24,29 @@
 //
 // Pipelined: the CPU front of frame N+1 (capture with its decode and the
 // video plate the compositor uploads, then the matte and the tiles its
-// person layer covers) runs on a thread of its own while frame N's GL
-// stages run here,
-// and frame() returns once both are done, so no thread runs between calls.
-// Each frame is still composited with its own video image and its own
-// matte, in order, so replay stays deterministic; the last frame of a file
-// is composited as before. The cost is one frame of latency: a live frame
-// is taken from the camera one frame() earlier than it is shown (one frame
+// person layer covers) runs on a thread of its own (WorkerThread, one for
+// the station's life) while frame N's GL stages run here, and frame()
+// returns once both are done, so no thread runs between calls. Each frame
+// is still composited with its own video image and its own matte, in
+// order, so replay stays deterministic; the last frame of a file is
+// composited as before. The cost is one frame of latency: a live frame is
+// taken from the camera one frame() earlier than it is shown (one frame
 // period, 33 ms at 30 fps). In stats(), captureMs and matteMs are that
 // thread's times (during the previous frame); totalMs is this thread's wall
 // time, the wait for the front included, so 1000 / totalMs is the rate.
+//
+// Threads: none is started per frame, per request or per reconnect. Each
+// thread a station uses (this front, a camera's CaptureThread, the status
+// server's, OpenCV's and llvmpipe's pools) starts once and lives as long as
+// its owner: libraries keep per-thread data that outlives a thread, so a
+// thread a frame piles it up (runtime/WorkerThread.hpp).
+//
+// Memory: every per-frame buffer is allocated once, at its steady size, and
+// written in place from then on. The front fills two frames in turn (the
+// shown one stays whole while the next is made), each keeping its plate
+// and its tiles; MatteStage keeps its two person layers the same way. A
+// station's memory is flat after its first frames (bench soak, and the
+// SoakGuard test in CI).
 
 #include "graph/core/DrawList.hpp"
 #include "graph/core/View.hpp"
@@ -51,11 +64,11 @@
 #include "runtime/PersonDepthStage.hpp"
 #include "runtime/Renderer.hpp"
 #include "runtime/StationConfig.hpp"
+#include "runtime/WorkerThread.hpp"
 
 #include <array>
 #include <chrono>
 #include <cstdint>
-#include <future>
 #include <memory>
 #include <optional>
 #include <string>
@@ -118,10 +131,10 @@ public:
     // keeps the holdout only as depth.
     Image readHoldout();
     // The last matte output (premultiplied BGRA, video size).
-    const cv::Mat& personLayer() const { return shown_.person; }
+    const cv::Mat& personLayer() const { return shown().person; }
     // The last frame's video as uploaded (RGBA, rows bottom first); empty
     // without a video backdrop.
-    const cv::Mat& videoPlate() const { return shown_.plate; }
+    const cv::Mat& videoPlate() const { return shown().plate; }
     // Where the last frame's people stood (all on the person plane without a calibrated camera).
     const PersonDepths& personDepths() const { return personDepths_.depths(); }
     const std::vector<StandingPerson>& standingPeople() const { return personDepths_.standing(); }
@@ -143,7 +156,8 @@ public:
 
 private:
     // One frame's CPU front: its video image and person layer, and the
-    // times the stage clock and the movers run on for it.
+    // times the stage clock and the movers run on for it. Filled in place:
+    // its plate and tiles keep their buffers from one use to the next.
     struct CapturedFrame {
         bool ok = false;  // false: a replay input has ended
         cv::Mat image;    // BGR, video size; never written after capture
@@ -154,7 +168,10 @@ private:
         double seconds = 0, frameSeconds = 0;
         double captureMs = 0, matteMs = 0;
     };
-    CapturedFrame captureAndMatte();
+    // Fills `next` from the input; `shown` is the frame on screen, whose
+    // plate and tiles a live frame that did not change takes over.
+    void captureAndMatte(CapturedFrame& next, const CapturedFrame& shown);
+    const CapturedFrame& shown() const { return fronts_[shownFront_]; }
 
     glm::vec3 gazeAt(double seconds);
     void collectGpuTimes();
@@ -162,9 +179,6 @@ private:
     StationConfig cfg_;
     CaptureStage capture_;
     MatteStage matte_;
-    std::array<cv::Mat, 2> plates_;
-    unsigned currentPlate_ = 0;
-    std::optional<PersonTiles> personTiles_;  // the matte's current layer's
     PersonDepthStage personDepths_;
     World world_;
     View view_;
@@ -183,10 +197,12 @@ private:
     std::unique_ptr<GpuStageTimes> gpuTimes_;
     std::vector<std::string> warnings_;
     FrameStats stats_;
-    CapturedFrame shown_;  // the frame last composited
-    // The next frame's front, started during this one and done when frame()
+    // The frame last composited and the one the front fills next, in turn.
+    std::array<CapturedFrame, 2> fronts_;
+    unsigned shownFront_ = 1;  // the first frame goes into fronts_[0]
+    // Runs the next frame's front during this one; it is done when frame()
     // returns. Last, so that it is joined before the stages it uses go.
-    std::future<CapturedFrame> ahead_;
+    WorkerThread front_;
 };
 
 } // namespace arcomp

@@ -150,20 +150,29 @@ TEST(Compositor, aTileShowsNothingOfTheLastFramesPerson) {
 }
 
 // The tiles a pipelined station finds on its capture thread: only where
-// alpha is not 0, at a ragged edge too, and the image rows they span.
+// alpha is not 0, at a ragged edge too, and the image rows they span; found
+// again into the same value, nothing of the last layer's stays.
 TEST(Compositor, findTilesKeepsTheTilesWithAlphaAndTheRowsTheySpan) {
     cv::Mat person(70, 100, CV_8UC4, cv::Scalar(0, 0, 0, 0));  // 13 x 9 tiles, the last column and row partial
     person.at<cv::Vec4b>(69, 99) = cv::Vec4b(0, 0, 0, 1);      // the last pixel of the last tile
     person.at<cv::Vec4b>(40, 5) = cv::Vec4b(9, 9, 9, 0);       // colour without alpha: no tile
-    PersonTiles tiles = Compositor::findTiles(person);
+    PersonTiles tiles;
+    Compositor::findTiles(person, tiles);
     EXPECT_EQ(tiles.count, 1u);
     EXPECT_EQ(tiles.quads.size(), 12u);
     EXPECT_EQ(tiles.rows, glm::ivec2(64, 70));
     person.at<cv::Vec4b>(3, 40) = cv::Vec4b(0, 0, 0, 255);
-    tiles = Compositor::findTiles(person);
+    Compositor::findTiles(person, tiles);
     EXPECT_EQ(tiles.count, 2u);
+    EXPECT_EQ(tiles.quads.size(), 24u);
     EXPECT_EQ(tiles.rows, glm::ivec2(0, 70));
-    EXPECT_EQ(Compositor::findTiles(cv::Mat(70, 100, CV_8UC3, cv::Scalar(255, 255, 255))).count, 0u);
+    Compositor::findTiles(cv::Mat(70, 100, CV_8UC4, cv::Scalar(0, 0, 0, 0)), tiles);
+    EXPECT_EQ(tiles.count, 0u);
+    EXPECT_TRUE(tiles.quads.empty());
+    Compositor::findTiles(person, tiles);
+    Compositor::findTiles(cv::Mat(70, 100, CV_8UC3, cv::Scalar(255, 255, 255)), tiles);
+    EXPECT_EQ(tiles.count, 0u);
+    EXPECT_TRUE(tiles.quads.empty());
 }
 
 TEST(Compositor, halfTransparentPersonBlendsPremultiplied) {
