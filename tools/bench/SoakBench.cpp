@@ -16,6 +16,7 @@
 
 #include "graph/core/ElapsedTime.hpp"
 #include "runtime/GlContext.hpp"
+#include "runtime/ProcessMemory.hpp"
 #include "runtime/ReplayInput.hpp"
 #include "runtime/StationRunner.hpp"
 #include "tools/arcomp/Command.hpp"
@@ -54,17 +55,19 @@ constexpr double kRssGrowthLimitMb = 2.0;
 constexpr double kDriftLimitRatio = 0.10;
 constexpr double kDriftLimitMs = 1.0;
 
-double residentMb() {
-    std::ifstream statm("/proc/self/statm");
-    long pages = 0, resident = 0;
-    statm >> pages >> resident;
-    return static_cast<double>(resident) * static_cast<double>(::sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
-}
+constexpr double kMb = 1024.0 * 1024.0;
 
-int openFds() {
-    int n = 0;
-    for ([[maybe_unused]] const auto& e : fs::directory_iterator("/proc/self/fd")) ++n;
-    return n - 1;  // the iterator's own descriptor
+double mb(std::size_t bytes) { return static_cast<double>(bytes) / kMb; }
+
+// Least-squares slope of y over x.
+double slope(std::span<const double> x, std::span<const double> y) {
+    const double n = static_cast<double>(x.size());
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        sx += x[i], sy += y[i], sxx += x[i] * x[i], sxy += x[i] * y[i];
+    }
+    const double d = n * sxx - sx * sx;
+    return d > 0 ? (n * sxy - sx * sy) / d : 0.0;
 }
 
 int soak(const SoakOptions& o) {
@@ -106,8 +109,12 @@ int soak(const SoakOptions& o) {
         if (frame >= warmup && frame < warmup + window) w.first[w.firstCount++] = ms;
         w.last[static_cast<std::size_t>(frame % window)] = ms;
     };
-    double rssStart = 0.0, rssPeak = 0.0;
+    double rssStart = 0.0, rssPeak = 0.0, heapStart = 0.0;
     int fdStart = 0;
+    // RSS every 1,000 frames after warm-up, for the slope.
+    std::vector<double> sampleFrames, sampleRss;
+    sampleFrames.reserve(static_cast<std::size_t>(o.frames / 1000 + 2));
+    sampleRss.reserve(sampleFrames.capacity());
     long done = 0;
     const auto begin = Clock::now();
     while (done < o.frames) {
@@ -117,16 +124,25 @@ int soak(const SoakOptions& o) {
         record(wallMs, done, std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
         record(cpuMs, done, processCpuMs() - c0);
         ++done;
+        // Read every 100 frames, the peak too: listing the fds every frame would weigh on the frame times.
+        if (done < warmup || (done != warmup && done % 100 != 0)) continue;
+        const ProcessMemory m = ProcessMemory::now();
         if (done == warmup) {
-            rssStart = residentMb();
-            fdStart = openFds();
+            rssStart = mb(m.resident);
+            heapStart = mb(m.heapInUse);
+            fdStart = m.fileDescriptors;
         }
-        if (done >= warmup) rssPeak = std::max(rssPeak, residentMb());
-        if (done % 1000 == 0)
-            std::fprintf(stderr, "bench soak: frame %ld, RSS %.1f MB, fds %d\n", done, residentMb(), openFds());
+        rssPeak = std::max(rssPeak, mb(m.resident));
+        if (done % 1000 == 0) {
+            sampleFrames.push_back(static_cast<double>(done));
+            sampleRss.push_back(mb(m.resident));
+            std::fprintf(stderr, "bench soak: frame %ld, RSS %.1f MB, heap in use %.2f MB, fds %d\n", done,
+                         mb(m.resident), mb(m.heapInUse), m.fileDescriptors);
+        }
     }
-    const double rssEnd = residentMb();
-    const int fdEnd = openFds();
+    const ProcessMemory end = ProcessMemory::now();
+    const double rssEnd = mb(end.resident), heapEnd = mb(end.heapInUse);
+    const int fdEnd = end.fileDescriptors;
     const double seconds = std::chrono::duration<double>(Clock::now() - begin).count();
     runner.finish();
     fs::remove_all(dir);
@@ -154,8 +170,14 @@ int soak(const SoakOptions& o) {
         .field("end", Fixed{rssEnd, 2})
         .field("peak", Fixed{rssPeak, 2})
         .field("growth", Fixed{rssEnd - rssStart, 2})
+        .field("slope_per_1000_frames", Fixed{1000.0 * slope(sampleFrames, sampleRss), 4})
         .field("limit", Fixed{kRssGrowthLimitMb, 1})
         .field("ok", rssOk)
+        .end();
+    j.beginObject("heap_in_use_mb")
+        .field("start", Fixed{heapStart, 2})
+        .field("end", Fixed{heapEnd, 2})
+        .field("growth", Fixed{heapEnd - heapStart, 3})
         .end();
     j.beginObject("fds").field("start", fdStart).field("end", fdEnd).field("ok", fdOk).end();
     j.beginObject("frame_ms")
