@@ -100,8 +100,12 @@ Station::~Station() { finish(); }
 
 void Station::captureAndMatte(CapturedFrame& f, const CapturedFrame& shown) {
     StageClock clock;
-    f.ok = capture_.next();
-    if (!f.ok) return;
+    f.ok = false;  // and so it stays when the capture throws
+    // The frame before the shown one lets its image go before the decoder
+    // asks for a new one, which can then take the same memory.
+    f.image.release();
+    if (!capture_.next()) return;
+    f.ok = true;
     f.image = capture_.image();
     f.newFrame = capture_.newFrame();
     f.seconds = capture_.seconds();
