@@ -1,12 +1,12 @@
 #pragma once
 // What the process holds, for the checks that a station stays flat all day
 // (bench soak, tests/runtime/SoakGuard_test.cpp):
-// - residentBytes(): the pages the kernel counts for it (RSS);
-// - heapBytesInUse(): what the program holds from malloc, in every arena
-//   (glibc's mallinfo2, or AddressSanitizer's own count in a sanitized
-//   build). A leak grows both; the allocator settling on its pages grows
-//   RSS alone, in steps, and stops;
-// - openFileDescriptors().
+// - resident: the pages the kernel counts for it (RSS);
+// - heapInUse: what the program holds from malloc, in every arena (glibc's
+//   mallinfo2, or AddressSanitizer's own count in a sanitized build). A
+//   leak grows both; the allocator settling on its pages grows RSS alone,
+//   in steps, and stops;
+// - fileDescriptors: the descriptors open.
 //
 //   const ProcessMemory before = ProcessMemory::now();
 //   runFrames(1000);
