@@ -30,10 +30,10 @@
 // decode/encode per pixel, at the price of slightly dark soft edges between
 // very different colours.
 
-#include "runtime/GlHandle.hpp"
+#include "runtime/gl/GlHandle.hpp"
 #include "runtime/PersonDepths.hpp"
-#include "runtime/RenderTarget.hpp"
-#include "runtime/ShaderProgram.hpp"
+#include "runtime/gl/RenderTarget.hpp"
+#include "runtime/gl/ShaderProgram.hpp"
 
 #include <opencv2/core/mat.hpp>
 

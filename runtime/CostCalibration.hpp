@@ -16,7 +16,7 @@
 
 #include "graph/budget/CostModel.hpp"
 #include "graph/core/Scene.hpp"
-#include "runtime/FrameTimer.hpp"
+#include "runtime/gl/FrameTimer.hpp"
 #include "runtime/Renderer.hpp"
 
 #include <optional>

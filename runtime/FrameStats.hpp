@@ -2,7 +2,7 @@
 // One station frame in numbers: each stage's milliseconds and the counters
 // an operator watches (runtime/StationMetrics.hpp serves them). CPU stages
 // are this frame's wall time. GL stages are the previous frame's, from
-// runtime/GpuStageTimes.hpp: read one frame late so that timing never
+// runtime/gl/GpuStageTimes.hpp: read one frame late so that timing never
 // stalls a GPU (on a software rasterizer, the stage's wall time, waited for).
 
 #include "graph/budget/FrameBudget.hpp"

@@ -1,6 +1,6 @@
 #include "runtime/ImpostorBaker.hpp"
 
-#include "runtime/RenderTarget.hpp"
+#include "runtime/gl/RenderTarget.hpp"
 #include "runtime/Renderer.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>

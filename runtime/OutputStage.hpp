@@ -12,8 +12,8 @@
 //   out.finish();                                                    // closes the video file
 
 #include "runtime/CompositingConfig.hpp"
-#include "runtime/FrameReadback.hpp"
-#include "runtime/RenderTarget.hpp"
+#include "runtime/gl/FrameReadback.hpp"
+#include "runtime/gl/RenderTarget.hpp"
 #include "video/VideoFileWriter.hpp"
 
 #include <glm/glm.hpp>

@@ -23,8 +23,8 @@
 #include "graph/points/LdiRenderer.hpp"
 #include "graph/points/PointCloudNodes.hpp"
 #include "graph/core/View.hpp"
-#include "runtime/GlHandle.hpp"
-#include "runtime/ShaderProgram.hpp"
+#include "runtime/gl/GlHandle.hpp"
+#include "runtime/gl/ShaderProgram.hpp"
 
 #include <memory>
 #include <optional>

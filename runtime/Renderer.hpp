@@ -22,9 +22,9 @@
 #include "graph/animation/Skin.hpp"
 #include "graph/core/DrawList.hpp"
 #include "graph/core/View.hpp"
-#include "runtime/GlHandle.hpp"
+#include "runtime/gl/GlHandle.hpp"
 #include "runtime/ImageBasedLight.hpp"
-#include "runtime/ShaderProgram.hpp"
+#include "runtime/gl/ShaderProgram.hpp"
 
 #include <array>
 #include <map>

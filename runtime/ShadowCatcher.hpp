@@ -23,9 +23,9 @@
 #include "graph/core/Scene.hpp"
 #include "graph/core/View.hpp"
 #include "runtime/CompositingConfig.hpp"
-#include "runtime/RenderTarget.hpp"
+#include "runtime/gl/RenderTarget.hpp"
 #include "runtime/Renderer.hpp"
-#include "runtime/ShaderProgram.hpp"
+#include "runtime/gl/ShaderProgram.hpp"
 
 #include <vector>
 

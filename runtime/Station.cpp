@@ -13,7 +13,7 @@ namespace arcomp {
 
 namespace {
 
-// The frame's GL stages, timed on the GPU (runtime/GpuStageTimes.hpp).
+// The frame's GL stages, timed on the GPU (runtime/gl/GpuStageTimes.hpp).
 enum GpuStage { kGpuBackdrop, kGpuShadow, kGpuRender, kGpuHoldout, kGpuPerson, kGpuStageCount };
 
 // Milliseconds of each CPU stage, one lap after another.

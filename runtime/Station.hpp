@@ -56,7 +56,7 @@
 #include "runtime/Compositor.hpp"
 #include "runtime/FrameStats.hpp"
 #include "runtime/GazeSource.hpp"
-#include "runtime/GpuStageTimes.hpp"
+#include "runtime/gl/GpuStageTimes.hpp"
 #include "runtime/HoldoutBake.hpp"
 #include "runtime/HoldoutStage.hpp"
 #include "runtime/MatteStage.hpp"

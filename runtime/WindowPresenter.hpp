@@ -10,9 +10,9 @@
 //   window.swap();
 //   writePng("shot.png", presenter.screenshot(window.framebufferSize()));
 
-#include "runtime/GlHandle.hpp"
-#include "runtime/RenderTarget.hpp"
-#include "runtime/ShaderProgram.hpp"
+#include "runtime/gl/GlHandle.hpp"
+#include "runtime/gl/RenderTarget.hpp"
+#include "runtime/gl/ShaderProgram.hpp"
 
 #include <opencv2/core.hpp>
 

@@ -2,7 +2,7 @@
 // behind, the holdout lets CG in front show, the backdrop shows elsewhere.
 
 #include "runtime/Compositor.hpp"
-#include "runtime/GlContext.hpp"
+#include "runtime/gl/GlContext.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 

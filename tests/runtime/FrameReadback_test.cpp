@@ -2,8 +2,8 @@
 // the pixel-buffer pair each comes back one call later, the last through
 // drain(), with its own size and its rows top to bottom.
 
-#include "runtime/FrameReadback.hpp"
-#include "runtime/GlContext.hpp"
+#include "runtime/gl/FrameReadback.hpp"
+#include "runtime/gl/GlContext.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,9 +2,9 @@
 // driver has them (desktop GL 3.3; ES only with GL_EXT_disjoint_timer_query),
 // otherwise the wall clock around glFinish, never a failure.
 
-#include "runtime/FrameTimer.hpp"
-#include "runtime/GlContext.hpp"
-#include "runtime/RenderTarget.hpp"
+#include "runtime/gl/FrameTimer.hpp"
+#include "runtime/gl/GlContext.hpp"
+#include "runtime/gl/RenderTarget.hpp"
 
 #include <gtest/gtest.h>
 

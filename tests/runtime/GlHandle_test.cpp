@@ -2,8 +2,8 @@
 // and a moved-from handle owns nothing. Programs show it: asking about a
 // deleted program's name is GL_INVALID_VALUE on both APIs.
 
-#include "runtime/GlContext.hpp"
-#include "runtime/GlHandle.hpp"
+#include "runtime/gl/GlContext.hpp"
+#include "runtime/gl/GlHandle.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,9 +2,9 @@
 // stalls the GPU: a stage reads what it took in the previous frame, and 0
 // when the previous frame skipped it.
 
-#include "runtime/GpuStageTimes.hpp"
-#include "runtime/GlContext.hpp"
-#include "runtime/RenderTarget.hpp"
+#include "runtime/gl/GpuStageTimes.hpp"
+#include "runtime/gl/GlContext.hpp"
+#include "runtime/gl/RenderTarget.hpp"
 
 #include <gtest/gtest.h>
 

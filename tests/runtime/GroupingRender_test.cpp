@@ -2,11 +2,11 @@
 // impostors show the baked members, and both draw far fewer triangles.
 
 #include "graph/scenes/ForestExperiment.hpp"
-#include "runtime/GlContext.hpp"
+#include "runtime/gl/GlContext.hpp"
 #include "runtime/ImageDifference.hpp"
 #include "runtime/ImageFile.hpp"
 #include "runtime/ImpostorBaker.hpp"
-#include "runtime/RenderTarget.hpp"
+#include "runtime/gl/RenderTarget.hpp"
 #include "runtime/Renderer.hpp"
 
 #include <gtest/gtest.h>

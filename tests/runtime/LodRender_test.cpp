@@ -5,9 +5,9 @@
 #include "graph/lod/GazeAcuity.hpp"
 #include "graph/lod/Lod.hpp"
 #include "graph/core/SelectPass.hpp"
-#include "runtime/GlContext.hpp"
+#include "runtime/gl/GlContext.hpp"
 #include "runtime/ImageFile.hpp"
-#include "runtime/RenderTarget.hpp"
+#include "runtime/gl/RenderTarget.hpp"
 #include "runtime/Renderer.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>

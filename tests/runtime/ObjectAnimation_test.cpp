@@ -3,7 +3,7 @@
 
 #include "graph/core/SelectPass.hpp"
 #include "runtime/ConfigError.hpp"
-#include "runtime/GlContext.hpp"
+#include "runtime/gl/GlContext.hpp"
 #include "runtime/ReplayInput.hpp"
 #include "runtime/SceneFile.hpp"
 #include "runtime/Station.hpp"

@@ -3,7 +3,7 @@
 // matte's PNG is written at once either way.
 
 #include "runtime/OutputStage.hpp"
-#include "runtime/GlContext.hpp"
+#include "runtime/gl/GlContext.hpp"
 #include "runtime/ImageFile.hpp"
 #include "tests/support/TempDir.hpp"
 

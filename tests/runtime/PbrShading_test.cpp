@@ -4,10 +4,10 @@
 // texture slots (sampler, transform, TEXCOORD_1), vertex colours, sides.
 
 #include "graph/core/SelectPass.hpp"
-#include "runtime/GlContext.hpp"
+#include "runtime/gl/GlContext.hpp"
 #include "runtime/ImageBasedLight.hpp"
 #include "runtime/ImageFile.hpp"
-#include "runtime/RenderTarget.hpp"
+#include "runtime/gl/RenderTarget.hpp"
 #include "runtime/Renderer.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>

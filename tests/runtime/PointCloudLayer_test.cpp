@@ -3,9 +3,9 @@
 // puts a box in front of a tree and a ball behind one.
 
 #include "graph/core/SelectPass.hpp"
-#include "runtime/GlContext.hpp"
+#include "runtime/gl/GlContext.hpp"
 #include "runtime/PointCloudLayer.hpp"
-#include "runtime/RenderTarget.hpp"
+#include "runtime/gl/RenderTarget.hpp"
 #include "runtime/Renderer.hpp"
 #include "runtime/SceneFile.hpp"
 

@@ -1,8 +1,8 @@
 // A render target reads back as an image with its rows top to bottom, into
 // a fresh image or into one kept from an earlier frame of another size.
 
-#include "runtime/RenderTarget.hpp"
-#include "runtime/GlContext.hpp"
+#include "runtime/gl/RenderTarget.hpp"
+#include "runtime/gl/GlContext.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,10 +2,10 @@
 // one variant reads -1 (which glUniform ignores), a required one that is
 // missing names itself, and a kept location draws.
 
-#include "runtime/GlContext.hpp"
-#include "runtime/GlHandle.hpp"
-#include "runtime/RenderTarget.hpp"
-#include "runtime/ShaderProgram.hpp"
+#include "runtime/gl/GlContext.hpp"
+#include "runtime/gl/GlHandle.hpp"
+#include "runtime/gl/RenderTarget.hpp"
+#include "runtime/gl/ShaderProgram.hpp"
 
 #include <gtest/gtest.h>
 

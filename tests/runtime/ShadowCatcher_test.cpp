@@ -5,7 +5,7 @@
 
 #include "graph/core/SelectPass.hpp"
 #include "runtime/Compositor.hpp"
-#include "runtime/GlContext.hpp"
+#include "runtime/gl/GlContext.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

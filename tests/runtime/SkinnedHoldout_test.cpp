@@ -4,10 +4,10 @@
 
 #include "graph/core/SelectPass.hpp"
 #include "graph/io/ModelLoader.hpp"
-#include "runtime/GlContext.hpp"
+#include "runtime/gl/GlContext.hpp"
 #include "runtime/HoldoutBake.hpp"
 #include "runtime/ImageFile.hpp"
-#include "runtime/RenderTarget.hpp"
+#include "runtime/gl/RenderTarget.hpp"
 #include "runtime/Renderer.hpp"
 
 #include "../support/GltfFile.hpp"

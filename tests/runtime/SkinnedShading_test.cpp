@@ -3,9 +3,9 @@
 // OpenGL 3.3 and on OpenGL ES 3.0.
 
 #include "graph/core/SelectPass.hpp"
-#include "runtime/GlContext.hpp"
+#include "runtime/gl/GlContext.hpp"
 #include "runtime/ImageFile.hpp"
-#include "runtime/RenderTarget.hpp"
+#include "runtime/gl/RenderTarget.hpp"
 #include "runtime/Renderer.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>

@@ -22,7 +22,7 @@
 // - a thread a frame (the code before runtime/WorkerThread): heap +834 and
 //   +842 B/frame, RSS's smaller growth +799 and +840 B/frame.
 
-#include "runtime/GlContext.hpp"
+#include "runtime/gl/GlContext.hpp"
 #include "runtime/ProcessMemory.hpp"
 #include "runtime/ReplayInput.hpp"
 #include "runtime/Station.hpp"

@@ -3,7 +3,7 @@
 // that another program holds, and reloading the config at a frame boundary
 // (good and bad configs).
 
-#include "runtime/GlContext.hpp"
+#include "runtime/gl/GlContext.hpp"
 #include "runtime/ShutdownSignals.hpp"
 #include "runtime/StationRunner.hpp"
 #include "runtime/StatusServer.hpp"

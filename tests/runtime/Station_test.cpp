@@ -6,7 +6,7 @@
 #include "graph/core/SelectPass.hpp"
 #include "runtime/CalibrationFile.hpp"
 #include "runtime/CameraFile.hpp"
-#include "runtime/GlContext.hpp"
+#include "runtime/gl/GlContext.hpp"
 #include "runtime/ImageFile.hpp"
 #include "runtime/ReplayInput.hpp"
 #include "runtime/SceneFile.hpp"

@@ -3,7 +3,7 @@
 
 #include "graph/core/SelectPass.hpp"
 #include "runtime/Renderer.hpp"
-#include "runtime/WindowContext.hpp"
+#include "runtime/gl/WindowContext.hpp"
 
 #include <gtest/gtest.h>
 

@@ -7,9 +7,9 @@
 #include "graph/animation/Skinning.hpp"
 #include "graph/core/SelectPass.hpp"
 #include "graph/io/ModelLoader.hpp"
-#include "runtime/GlContext.hpp"
+#include "runtime/gl/GlContext.hpp"
 #include "runtime/ImageFile.hpp"
-#include "runtime/RenderTarget.hpp"
+#include "runtime/gl/RenderTarget.hpp"
 #include "runtime/Renderer.hpp"
 
 #include "../support/TempDir.hpp"

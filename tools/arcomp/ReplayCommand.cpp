@@ -3,7 +3,7 @@
 // composited frames go to DIR as frame-000000.png, ... Deterministic: the
 // same input gives bit-identical images on the same machine.
 
-#include "runtime/GlContext.hpp"
+#include "runtime/gl/GlContext.hpp"
 #include "runtime/ReplayInput.hpp"
 #include "runtime/ShutdownSignals.hpp"
 #include "runtime/StationLog.hpp"

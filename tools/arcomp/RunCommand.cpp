@@ -15,7 +15,7 @@
 #include "runtime/StationLog.hpp"
 #include "runtime/StationRunner.hpp"
 #include "runtime/StatsOverlay.hpp"
-#include "runtime/WindowContext.hpp"
+#include "runtime/gl/WindowContext.hpp"
 #include "runtime/WindowPresenter.hpp"
 #include "runtime/ImageFile.hpp"
 #include "tools/arcomp/CliParse.hpp"

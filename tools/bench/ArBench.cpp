@@ -26,7 +26,7 @@
 
 #include "graph/core/SelectPass.hpp"
 #include "runtime/CameraFile.hpp"
-#include "runtime/GlContext.hpp"
+#include "runtime/gl/GlContext.hpp"
 #include "runtime/ReplayInput.hpp"
 #include "runtime/SceneFile.hpp"
 #include "runtime/Station.hpp"

@@ -7,7 +7,7 @@
 //
 //   arcomp bench budget --out build/bench-budget [--target-ms T] [--frames 600]
 //
-// Frame time is what the timer (runtime/FrameTimer.hpp) gives for the
+// Frame time is what the timer (runtime/gl/FrameTimer.hpp) gives for the
 // draw, clear to glFinish; select and the controller's own CPU time are
 // reported apart (apply_us). The cost model is calibrated in the same run
 // (or read with --calibration) and re-fitted online during the managed run.
@@ -58,8 +58,8 @@
 #include "graph/core/SelectPass.hpp"
 #include "runtime/CalibrationFile.hpp"
 #include "runtime/CostCalibration.hpp"
-#include "runtime/GlContext.hpp"
-#include "runtime/RenderTarget.hpp"
+#include "runtime/gl/GlContext.hpp"
+#include "runtime/gl/RenderTarget.hpp"
 #include "tools/arcomp/CliParse.hpp"
 #include "tools/arcomp/Command.hpp"
 #include "tools/bench/BenchJson.hpp"

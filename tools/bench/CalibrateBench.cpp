@@ -7,8 +7,8 @@
 
 #include "runtime/CalibrationFile.hpp"
 #include "runtime/CostCalibration.hpp"
-#include "runtime/GlContext.hpp"
-#include "runtime/RenderTarget.hpp"
+#include "runtime/gl/GlContext.hpp"
+#include "runtime/gl/RenderTarget.hpp"
 #include "tools/arcomp/CliParse.hpp"
 #include "tools/arcomp/Command.hpp"
 #include "tools/bench/BenchJson.hpp"

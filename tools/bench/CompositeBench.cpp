@@ -39,8 +39,8 @@
 // the station's own GpuStageTimes: timer queries read a frame late on a GPU;
 // on llvmpipe, each stage waited for and timed on the wall clock.
 
-#include "runtime/FrameReadback.hpp"
-#include "runtime/GlContext.hpp"
+#include "runtime/gl/FrameReadback.hpp"
+#include "runtime/gl/GlContext.hpp"
 #include "runtime/ReplayInput.hpp"
 #include "runtime/Station.hpp"
 #include "tools/arcomp/Command.hpp"

@@ -8,11 +8,11 @@
 // the same run: simplification alone.
 
 #include "graph/scenes/ForestExperiment.hpp"
-#include "runtime/GlContext.hpp"
+#include "runtime/gl/GlContext.hpp"
 #include "runtime/ImageDifference.hpp"
 #include "runtime/ImageFile.hpp"
 #include "runtime/ImpostorBaker.hpp"
-#include "runtime/RenderTarget.hpp"
+#include "runtime/gl/RenderTarget.hpp"
 #include "runtime/Renderer.hpp"
 #include "tools/arcomp/CliParse.hpp"
 #include "tools/arcomp/Command.hpp"

@@ -15,7 +15,7 @@
 // outputs are dropped, so a soak never fills a disk.
 
 #include "graph/core/ElapsedTime.hpp"
-#include "runtime/GlContext.hpp"
+#include "runtime/gl/GlContext.hpp"
 #include "runtime/ProcessMemory.hpp"
 #include "runtime/ReplayInput.hpp"
 #include "runtime/StationRunner.hpp"

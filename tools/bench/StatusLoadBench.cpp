@@ -24,7 +24,7 @@
 // and the station's median frame time in the loaded slices within 5 % of
 // the quiet slices' median. The last line is one JSON object.
 
-#include "runtime/GlContext.hpp"
+#include "runtime/gl/GlContext.hpp"
 #include "runtime/ReplayInput.hpp"
 #include "runtime/StationRunner.hpp"
 #include "tools/arcomp/Command.hpp"

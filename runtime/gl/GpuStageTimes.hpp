@@ -18,8 +18,8 @@
 //
 // Stages must not overlap: GL allows one TIME_ELAPSED query at a time.
 
-#include "runtime/GlApi.hpp"
-#include "runtime/GlHandle.hpp"
+#include "runtime/gl/GlApi.hpp"
+#include "runtime/gl/GlHandle.hpp"
 
 #include <array>
 #include <chrono>

@@ -1,4 +1,4 @@
-#include "runtime/WindowContext.hpp"
+#include "runtime/gl/WindowContext.hpp"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

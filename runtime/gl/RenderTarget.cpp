@@ -1,4 +1,4 @@
-#include "runtime/RenderTarget.hpp"
+#include "runtime/gl/RenderTarget.hpp"
 
 #include <cstdint>
 #include <cstring>

@@ -16,8 +16,8 @@
 // time, as a timer query gives it on a GPU, and time other programs took
 // from the machine's cores is left out of it, as it is on a GPU.
 
-#include "runtime/GlApi.hpp"
-#include "runtime/GlHandle.hpp"
+#include "runtime/gl/GlApi.hpp"
+#include "runtime/gl/GlHandle.hpp"
 
 #include <chrono>
 #include <string_view>

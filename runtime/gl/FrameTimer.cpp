@@ -1,4 +1,4 @@
-#include "runtime/FrameTimer.hpp"
+#include "runtime/gl/FrameTimer.hpp"
 
 #include "graph/core/ElapsedTime.hpp"
 

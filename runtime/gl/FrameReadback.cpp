@@ -1,4 +1,4 @@
-#include "runtime/FrameReadback.hpp"
+#include "runtime/gl/FrameReadback.hpp"
 
 #include <cstdint>
 #include <cstdio>

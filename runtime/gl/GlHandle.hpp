@@ -10,7 +10,7 @@
 //
 // The context that made an object must be current where its handle goes.
 
-#include "runtime/GlApi.hpp"
+#include "runtime/gl/GlApi.hpp"
 
 #include <type_traits>
 #include <utility>

@@ -11,7 +11,7 @@
 //   const GLint baseColor = p.location("uBaseColor");
 //   p.use(); glUniform4f(baseColor, ...);
 
-#include "runtime/GlHandle.hpp"
+#include "runtime/gl/GlHandle.hpp"
 
 #include <string>
 

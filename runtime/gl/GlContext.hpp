@@ -6,7 +6,7 @@
 //   auto ctx = HeadlessContext::create(GlRequest::Auto);  // gl33, else es3
 //   ctx->api();   // what we got
 
-#include "runtime/GlApi.hpp"
+#include "runtime/gl/GlApi.hpp"
 
 #include <memory>
 #include <string>

@@ -1,4 +1,4 @@
-#include "runtime/GlApi.hpp"
+#include "runtime/gl/GlApi.hpp"
 
 #include <cstring>
 #include <stdexcept>

@@ -5,7 +5,7 @@
 //   auto window = WindowContext::create({.title = "arcomp", .size = {1280, 720}}, GlRequest::Auto);
 //   while (!window->shouldClose()) { draw(); window->swap(); window->poll(); }
 
-#include "runtime/GlContext.hpp"
+#include "runtime/gl/GlContext.hpp"
 
 #include <glm/glm.hpp>
 

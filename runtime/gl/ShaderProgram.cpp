@@ -1,4 +1,4 @@
-#include "runtime/ShaderProgram.hpp"
+#include "runtime/gl/ShaderProgram.hpp"
 
 #include <algorithm>
 #include <stdexcept>

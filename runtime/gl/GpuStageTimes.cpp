@@ -1,4 +1,4 @@
-#include "runtime/GpuStageTimes.hpp"
+#include "runtime/gl/GpuStageTimes.hpp"
 
 #include <algorithm>
 

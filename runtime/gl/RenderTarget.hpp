@@ -8,8 +8,8 @@
 //   Image img = target.read();   // rows top to bottom, premultiplied RGBA
 
 #include "graph/core/Material.hpp"
-#include "runtime/GlApi.hpp"
-#include "runtime/GlHandle.hpp"
+#include "runtime/gl/GlApi.hpp"
+#include "runtime/gl/GlHandle.hpp"
 
 #include <glm/glm.hpp>
 

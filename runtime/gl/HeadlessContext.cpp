@@ -1,4 +1,4 @@
-#include "runtime/GlContext.hpp"
+#include "runtime/gl/GlContext.hpp"
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>

@@ -17,8 +17,8 @@
 //   if (readback.drain(image)) write(image);          // at the end: the one still in flight
 
 #include "graph/core/Material.hpp"
-#include "runtime/GlHandle.hpp"
-#include "runtime/RenderTarget.hpp"
+#include "runtime/gl/GlHandle.hpp"
+#include "runtime/gl/RenderTarget.hpp"
 
 #include <array>
 
