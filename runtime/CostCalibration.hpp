@@ -17,7 +17,7 @@
 #include "graph/budget/CostModel.hpp"
 #include "graph/core/Scene.hpp"
 #include "runtime/gl/FrameTimer.hpp"
-#include "runtime/Renderer.hpp"
+#include "runtime/render/Renderer.hpp"
 
 #include <optional>
 #include <span>

@@ -14,7 +14,7 @@
 #include "graph/core/World.hpp"
 #include "runtime/Compositor.hpp"
 #include "runtime/FrameStats.hpp"
-#include "runtime/Renderer.hpp"
+#include "runtime/render/Renderer.hpp"
 
 namespace arcomp {
 

@@ -24,7 +24,7 @@
 #include "graph/core/View.hpp"
 #include "runtime/CompositingConfig.hpp"
 #include "runtime/gl/RenderTarget.hpp"
-#include "runtime/Renderer.hpp"
+#include "runtime/render/Renderer.hpp"
 #include "runtime/gl/ShaderProgram.hpp"
 
 #include <vector>

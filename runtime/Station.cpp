@@ -3,9 +3,9 @@
 #include "graph/core/ElapsedTime.hpp"
 #include "graph/core/SelectPass.hpp"
 #include "runtime/CalibrationFile.hpp"
-#include "runtime/Environment.hpp"
-#include "runtime/ImpostorBaker.hpp"
-#include "runtime/PointCloudLayer.hpp"
+#include "runtime/render/Environment.hpp"
+#include "runtime/render/ImpostorBaker.hpp"
+#include "runtime/render/PointCloudLayer.hpp"
 #include "runtime/SceneFile.hpp"
 #include "runtime/ShadowCatcher.hpp"
 

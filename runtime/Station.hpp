@@ -62,7 +62,7 @@
 #include "runtime/MatteStage.hpp"
 #include "runtime/OutputStage.hpp"
 #include "runtime/PersonDepthStage.hpp"
-#include "runtime/Renderer.hpp"
+#include "runtime/render/Renderer.hpp"
 #include "runtime/StationConfig.hpp"
 #include "runtime/WorkerThread.hpp"
 

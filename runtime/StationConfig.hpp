@@ -73,7 +73,7 @@ struct RenderConfig {
     std::string gl = "auto";
     glm::vec4 background{0.08f, 0.08f, 0.1f, 1.0f};
     // The image-based light: an equirectangular .hdr or .png, empty for the
-    // built-in neutral studio (runtime/Environment.hpp). A file that cannot
+    // built-in neutral studio (runtime/render/Environment.hpp). A file that cannot
     // be read fails `arcomp check` and a reload; at start the station says so
     // and lights with the neutral one.
     std::filesystem::path environment;

@@ -16,7 +16,7 @@
 //
 // Proxies (selectable per node): the paper's box in the group's mean colour,
 // alpha-blended, or a camera-facing billboard with an image of the members
-// baked at load time (runtime/ImpostorBaker.hpp); a group with no baked
+// baked at load time (runtime/render/ImpostorBaker.hpp); a group with no baked
 // image falls back to the box.
 
 #include "graph/grouping/GroupingTree.hpp"

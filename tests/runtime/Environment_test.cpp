@@ -3,8 +3,8 @@
 // sum) and how a station config names one.
 
 #include "graph/core/BadInput.hpp"
-#include "runtime/Environment.hpp"
-#include "runtime/ImageBasedLight.hpp"
+#include "runtime/render/Environment.hpp"
+#include "runtime/render/ImageBasedLight.hpp"
 #include "runtime/ImageFile.hpp"
 #include "runtime/Station.hpp"
 #include "runtime/StationConfig.hpp"

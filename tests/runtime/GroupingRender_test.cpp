@@ -5,9 +5,9 @@
 #include "runtime/gl/GlContext.hpp"
 #include "runtime/ImageDifference.hpp"
 #include "runtime/ImageFile.hpp"
-#include "runtime/ImpostorBaker.hpp"
+#include "runtime/render/ImpostorBaker.hpp"
 #include "runtime/gl/RenderTarget.hpp"
-#include "runtime/Renderer.hpp"
+#include "runtime/render/Renderer.hpp"
 
 #include <gtest/gtest.h>
 

@@ -8,7 +8,7 @@
 #include "runtime/gl/GlContext.hpp"
 #include "runtime/ImageFile.hpp"
 #include "runtime/gl/RenderTarget.hpp"
-#include "runtime/Renderer.hpp"
+#include "runtime/render/Renderer.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

@@ -5,10 +5,10 @@
 
 #include "graph/core/SelectPass.hpp"
 #include "runtime/gl/GlContext.hpp"
-#include "runtime/ImageBasedLight.hpp"
+#include "runtime/render/ImageBasedLight.hpp"
 #include "runtime/ImageFile.hpp"
 #include "runtime/gl/RenderTarget.hpp"
-#include "runtime/Renderer.hpp"
+#include "runtime/render/Renderer.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

@@ -4,9 +4,9 @@
 
 #include "graph/core/SelectPass.hpp"
 #include "runtime/gl/GlContext.hpp"
-#include "runtime/PointCloudLayer.hpp"
+#include "runtime/render/PointCloudLayer.hpp"
 #include "runtime/gl/RenderTarget.hpp"
-#include "runtime/Renderer.hpp"
+#include "runtime/render/Renderer.hpp"
 #include "runtime/SceneFile.hpp"
 
 #include <gtest/gtest.h>

@@ -8,7 +8,7 @@
 #include "runtime/HoldoutBake.hpp"
 #include "runtime/ImageFile.hpp"
 #include "runtime/gl/RenderTarget.hpp"
-#include "runtime/Renderer.hpp"
+#include "runtime/render/Renderer.hpp"
 
 #include "../support/GltfFile.hpp"
 #include "../support/TempDir.hpp"

@@ -2,7 +2,7 @@
 // tests/CMakeLists.txt through xvfb-run) drawn by the same renderer.
 
 #include "graph/core/SelectPass.hpp"
-#include "runtime/Renderer.hpp"
+#include "runtime/render/Renderer.hpp"
 #include "runtime/gl/WindowContext.hpp"
 
 #include <gtest/gtest.h>

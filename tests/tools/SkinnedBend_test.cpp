@@ -10,7 +10,7 @@
 #include "runtime/gl/GlContext.hpp"
 #include "runtime/ImageFile.hpp"
 #include "runtime/gl/RenderTarget.hpp"
-#include "runtime/Renderer.hpp"
+#include "runtime/render/Renderer.hpp"
 
 #include "../support/TempDir.hpp"
 

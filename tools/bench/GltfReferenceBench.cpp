@@ -26,7 +26,7 @@
 //
 //   tools/gltf-reference/setup && arcomp bench gltf-reference --out build/bench-gltf-reference
 
-#include "runtime/Environment.hpp"
+#include "runtime/render/Environment.hpp"
 #include "tools/arcomp/CliParse.hpp"
 #include "tools/arcomp/Command.hpp"
 #include "tools/bench/BenchJson.hpp"

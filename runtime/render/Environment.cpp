@@ -1,4 +1,4 @@
-#include "runtime/Environment.hpp"
+#include "runtime/render/Environment.hpp"
 
 #include "graph/core/BadInput.hpp"
 

@@ -1,4 +1,4 @@
-#include "runtime/PointCloudLayer.hpp"
+#include "runtime/render/PointCloudLayer.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
 

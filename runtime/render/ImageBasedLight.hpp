@@ -19,7 +19,7 @@
 // - the split sum's second factor, the environment BRDF, as a table over
 //   (n.v, roughness): F0 * scale + bias.
 
-#include "runtime/Environment.hpp"
+#include "runtime/render/Environment.hpp"
 
 #include <array>
 #include <vector>

@@ -1,7 +1,7 @@
-#include "runtime/ImpostorBaker.hpp"
+#include "runtime/render/ImpostorBaker.hpp"
 
 #include "runtime/gl/RenderTarget.hpp"
-#include "runtime/Renderer.hpp"
+#include "runtime/render/Renderer.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -1,4 +1,4 @@
-#include "runtime/Renderer.hpp"
+#include "runtime/render/Renderer.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
 

@@ -1,4 +1,4 @@
-#include "runtime/ImageBasedLight.hpp"
+#include "runtime/render/ImageBasedLight.hpp"
 
 #include <opencv2/imgproc.hpp>
 

@@ -23,7 +23,7 @@
 #include "graph/core/DrawList.hpp"
 #include "graph/core/View.hpp"
 #include "runtime/gl/GlHandle.hpp"
-#include "runtime/ImageBasedLight.hpp"
+#include "runtime/render/ImageBasedLight.hpp"
 #include "runtime/gl/ShaderProgram.hpp"
 
 #include <array>
