@@ -8,7 +8,7 @@
 //   const std::filesystem::path folder = bakeCacheFolder(cfg.compositing.compositor);
 //   const std::filesystem::path file = folder / bakeCacheFileName(cfg.file, "tree", node, ".lod");
 
-#include "runtime/CompositingConfig.hpp"
+#include "runtime/config/CompositingConfig.hpp"
 
 #include <cstddef>
 #include <cstdint>

@@ -1,6 +1,6 @@
 #include "runtime/BudgetStage.hpp"
 
-#include "runtime/CalibrationFile.hpp"
+#include "runtime/config/CalibrationFile.hpp"
 
 #include <algorithm>
 

@@ -10,7 +10,7 @@
 //   stats.budget = budget.plan(scene, list, view, gaze, stats);
 
 #include "graph/budget/FrameBudget.hpp"
-#include "runtime/BudgetConfig.hpp"
+#include "runtime/config/BudgetConfig.hpp"
 #include "runtime/FrameStats.hpp"
 
 namespace arcomp {

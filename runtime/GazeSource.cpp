@@ -139,4 +139,13 @@ glm::vec3 gazeThroughPixel(const View& view, glm::vec2 pixel) {
     return glm::length(d) > 0.0f ? glm::normalize(d) : view.forward;
 }
 
+std::unique_ptr<GazeSource> makeGazeSource(const GazeConfig& config, const View& view) {
+    switch (config.kind) {
+    case GazeKind::ScreenCentre: return nullptr;
+    case GazeKind::Fixed: return std::make_unique<FixedGaze>(view.eye, glm::normalize(config.direction));
+    case GazeKind::Track: return std::make_unique<RecordedGaze>(readGazeTrackCsv(config.track));
+    }
+    return nullptr;
+}
+
 } // namespace arcomp

@@ -7,6 +7,7 @@
 //
 //   RecordedGaze track(readGazeTrackCsv("session.csv"));   // throws GazeTrackError
 //   if (auto g = track.sample(t)) settings.gaze = g->direction;
+//   std::unique_ptr<GazeSource> g = makeGazeSource(cfg.gaze, view);   // null: screen centre
 //
 // Track CSV: one sample a line, `time,eye_x,eye_y,eye_z,gaze_x,gaze_y,gaze_z`
 // (seconds, world units, a world direction of any non-zero length); an
@@ -15,9 +16,11 @@
 
 #include "graph/core/BadInput.hpp"
 #include "graph/core/View.hpp"
+#include "runtime/config/GazeConfig.hpp"
 
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -103,5 +106,9 @@ std::vector<GazeSample> parseGazeTrackCsv(std::string_view text, const std::stri
 // The world direction through a pixel of the view (origin top left), for a
 // mouse standing in for the eyes.
 glm::vec3 gazeThroughPixel(const View& view, glm::vec2 pixel);
+
+// The source a config's `gaze` section names; null for the screen centre.
+// Throws GazeTrackError (with the file and line) for a bad track.
+std::unique_ptr<GazeSource> makeGazeSource(const GazeConfig& config, const View& view);
 
 } // namespace arcomp

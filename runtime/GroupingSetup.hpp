@@ -9,7 +9,7 @@
 //   finishGrouping(cfg.grouping, scene, g, table, lods);
 
 #include "graph/lod/Lod.hpp"
-#include "runtime/GroupingConfig.hpp"
+#include "runtime/config/GroupingConfig.hpp"
 
 namespace arcomp {
 

@@ -12,7 +12,7 @@
 #include "graph/core/View.hpp"
 #include "graph/core/World.hpp"
 #include "runtime/BakeCache.hpp"
-#include "runtime/CompositingConfig.hpp"
+#include "runtime/config/CompositingConfig.hpp"
 
 #include <filesystem>
 

@@ -11,7 +11,7 @@
 //   out.write(compositor.output(), matte.person());                  // once a frame
 //   out.finish();                                                    // closes the video file
 
-#include "runtime/CompositingConfig.hpp"
+#include "runtime/config/CompositingConfig.hpp"
 #include "runtime/gl/FrameReadback.hpp"
 #include "runtime/gl/RenderTarget.hpp"
 #include "video/VideoFileWriter.hpp"

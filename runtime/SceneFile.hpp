@@ -9,7 +9,7 @@
 #include "graph/core/World.hpp"
 #include "graph/core/View.hpp"
 #include "runtime/BakeCache.hpp"
-#include "runtime/StationConfig.hpp"
+#include "runtime/config/StationConfig.hpp"
 
 #include <optional>
 

@@ -22,7 +22,7 @@
 #include "graph/core/DrawList.hpp"
 #include "graph/core/Scene.hpp"
 #include "graph/core/View.hpp"
-#include "runtime/CompositingConfig.hpp"
+#include "runtime/config/CompositingConfig.hpp"
 #include "runtime/gl/RenderTarget.hpp"
 #include "runtime/render/Renderer.hpp"
 #include "runtime/gl/ShaderProgram.hpp"

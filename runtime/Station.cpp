@@ -2,7 +2,7 @@
 
 #include "graph/core/ElapsedTime.hpp"
 #include "graph/core/SelectPass.hpp"
-#include "runtime/CalibrationFile.hpp"
+#include "runtime/config/CalibrationFile.hpp"
 #include "runtime/render/Environment.hpp"
 #include "runtime/render/ImpostorBaker.hpp"
 #include "runtime/render/PointCloudLayer.hpp"

@@ -63,7 +63,7 @@
 #include "runtime/OutputStage.hpp"
 #include "runtime/PersonDepthStage.hpp"
 #include "runtime/render/Renderer.hpp"
-#include "runtime/StationConfig.hpp"
+#include "runtime/config/StationConfig.hpp"
 #include "runtime/WorkerThread.hpp"
 
 #include <array>

@@ -5,17 +5,9 @@
 //
 //   configureLogging({.level = "info", .file = "/var/log/arcomp/station.log"});
 
-#include <filesystem>
-#include <string>
+#include "runtime/config/OperatorConfig.hpp"
 
 namespace arcomp {
-
-struct LogSettings {
-    std::string level = "info";  // trace, debug, info, warn, error, critical, off
-    std::filesystem::path file;  // empty: stderr only
-    int maxMegabytes = 10;       // per file
-    int files = 5;               // rotated files kept
-};
 
 // Replaces the default logger. Throws std::runtime_error naming the file
 // when the log file cannot be opened (the caller decides whether to go on

@@ -1,7 +1,7 @@
 #include "runtime/StationRunner.hpp"
 #include "graph/core/JoinText.hpp"
 
-#include "runtime/ConfigError.hpp"
+#include "runtime/config/ConfigError.hpp"
 #include "runtime/ShutdownSignals.hpp"
 
 #include <spdlog/spdlog.h>

@@ -3,7 +3,7 @@
 #include "graph/core/BadInput.hpp"
 #include "runtime/FileDescriptor.hpp"
 #include "runtime/HttpRequest.hpp"
-#include "runtime/StatusAccess.hpp"
+#include "runtime/config/StatusAccess.hpp"
 
 #include <arpa/inet.h>
 #include <netinet/in.h>

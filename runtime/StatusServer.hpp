@@ -3,7 +3,7 @@
 // thread answering GET /status (JSON) and GET /metrics (Prometheus text
 // format, so fleets are scraped like any other service). Binds to loopback
 // unless the config says otherwise, and beyond loopback answers only
-// requests that carry the bearer token (runtime/StatusAccess.hpp).
+// requests that carry the bearer token (runtime/config/StatusAccess.hpp).
 //
 //   StatusServer server(metrics, {.bind = "127.0.0.1", .port = 9464});
 //   int port = server.port();   // the bound port (useful with port 0)
@@ -22,6 +22,7 @@
 // runs on without a status endpoint.
 
 #include "runtime/StationMetrics.hpp"
+#include "runtime/config/OperatorConfig.hpp"
 
 #include <chrono>
 #include <cstdint>
@@ -30,21 +31,6 @@
 #include <string>
 
 namespace arcomp {
-
-struct StatusLimits {
-    int maxConnections = 128;
-    int maxPerClient = 16;  // per client IP address
-    std::chrono::milliseconds requestTimeout{2000};
-    bool operator==(const StatusLimits&) const = default;
-};
-
-struct StatusEndpoint {
-    std::string bind = "127.0.0.1";
-    int port = 0;                     // 0: any free port
-    std::filesystem::path tokenFile = {};  // required when `bind` is not loopback
-    StatusLimits limits = {};
-    bool operator==(const StatusEndpoint&) const = default;
-};
 
 // What the server has turned away since it started, for the load bench and
 // for tests.

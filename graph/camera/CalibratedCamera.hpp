@@ -5,7 +5,7 @@
 // The CG camera is built from it, so that a CG point lands on the pixel
 // where the real point at the same place appears.
 //
-//   CalibratedCamera camera = readCameraFile("station-camera.yaml");   // runtime/CameraFile.hpp
+//   CalibratedCamera camera = readCameraFile("station-camera.yaml");   // runtime/config/CameraFile.hpp
 //   View view = camera.view(videoSize, 0.1f, 500.0f);
 //
 // Axes follow OpenCV (x right, y down, z forward from the lens), so that the

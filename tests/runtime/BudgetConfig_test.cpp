@@ -1,7 +1,7 @@
 // The station config's budget section: absent means off; on with a target
 // and a calibration; every mistake reported with its place.
-#include "runtime/ConfigError.hpp"
-#include "runtime/StationConfig.hpp"
+#include "runtime/config/ConfigError.hpp"
+#include "runtime/config/StationConfig.hpp"
 
 #include "../support/TempDir.hpp"
 

@@ -1,7 +1,7 @@
 // The cost model's calibration file: written and read back, bad files
 // reported with their place.
-#include "runtime/CalibrationFile.hpp"
-#include "runtime/ConfigError.hpp"
+#include "runtime/config/CalibrationFile.hpp"
+#include "runtime/config/ConfigError.hpp"
 
 #include "../support/TempDir.hpp"
 

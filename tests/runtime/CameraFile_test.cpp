@@ -1,7 +1,7 @@
-#include "runtime/CameraFile.hpp"
+#include "runtime/config/CameraFile.hpp"
 
 #include "../support/TempDir.hpp"
-#include "runtime/ConfigError.hpp"
+#include "runtime/config/ConfigError.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>

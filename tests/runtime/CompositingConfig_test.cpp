@@ -1,8 +1,8 @@
 // The video, matte, compositor and output sections: read with defaults,
 // relative paths resolved, mistakes reported with their place.
 
-#include "runtime/ConfigError.hpp"
-#include "runtime/StationConfig.hpp"
+#include "runtime/config/ConfigError.hpp"
+#include "runtime/config/StationConfig.hpp"
 
 #include "../support/TempDir.hpp"
 

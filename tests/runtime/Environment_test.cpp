@@ -7,7 +7,7 @@
 #include "runtime/render/ImageBasedLight.hpp"
 #include "runtime/ImageFile.hpp"
 #include "runtime/Station.hpp"
-#include "runtime/StationConfig.hpp"
+#include "runtime/config/StationConfig.hpp"
 
 #include "../support/TempDir.hpp"
 

@@ -2,9 +2,9 @@
 
 #include "graph/scenes/ForestExperiment.hpp"
 #include "graph/core/SelectPass.hpp"
-#include "runtime/ConfigError.hpp"
+#include "runtime/config/ConfigError.hpp"
 #include "runtime/SceneFile.hpp"
-#include "runtime/StationConfig.hpp"
+#include "runtime/config/StationConfig.hpp"
 
 #include "../support/TempDir.hpp"
 

@@ -2,12 +2,12 @@
 // the model is loaded, and a station that plays it on the video's clock.
 
 #include "graph/core/SelectPass.hpp"
-#include "runtime/ConfigError.hpp"
+#include "runtime/config/ConfigError.hpp"
 #include "runtime/gl/GlContext.hpp"
 #include "runtime/ReplayInput.hpp"
 #include "runtime/SceneFile.hpp"
 #include "runtime/Station.hpp"
-#include "runtime/StationConfig.hpp"
+#include "runtime/config/StationConfig.hpp"
 #include "video/TestPatternSource.hpp"
 
 #include "../support/ConfigIssues.hpp"

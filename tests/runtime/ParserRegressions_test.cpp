@@ -2,12 +2,12 @@
 // gaze-track readers and the status endpoint's request parser
 // (tests/support/ParserRegressions.hpp), fed to them again.
 
-#include "runtime/CalibrationFile.hpp"
-#include "runtime/CameraFile.hpp"
-#include "runtime/ConfigError.hpp"
+#include "runtime/config/CalibrationFile.hpp"
+#include "runtime/config/CameraFile.hpp"
+#include "runtime/config/ConfigError.hpp"
 #include "runtime/GazeSource.hpp"
 #include "runtime/HttpRequest.hpp"
-#include "runtime/StationConfig.hpp"
+#include "runtime/config/StationConfig.hpp"
 #include "tests/support/ParserRegressions.hpp"
 
 #include <gtest/gtest.h>

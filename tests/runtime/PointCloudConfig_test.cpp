@@ -1,8 +1,8 @@
 // The station config's point_clouds section and the cloud nodes it adds.
 
-#include "runtime/ConfigError.hpp"
+#include "runtime/config/ConfigError.hpp"
 #include "runtime/SceneFile.hpp"
-#include "runtime/StationConfig.hpp"
+#include "runtime/config/StationConfig.hpp"
 
 #include "../support/TempDir.hpp"
 

@@ -1,7 +1,7 @@
 // Config errors: every class reported with its line and column, all at once.
 
-#include "runtime/ConfigError.hpp"
-#include "runtime/StationConfig.hpp"
+#include "runtime/config/ConfigError.hpp"
+#include "runtime/config/StationConfig.hpp"
 
 #include "../support/ConfigIssues.hpp"
 #include "../support/TempDir.hpp"

@@ -4,8 +4,8 @@
 // path; replay determinism.
 
 #include "graph/core/SelectPass.hpp"
-#include "runtime/CalibrationFile.hpp"
-#include "runtime/CameraFile.hpp"
+#include "runtime/config/CalibrationFile.hpp"
+#include "runtime/config/CameraFile.hpp"
 #include "runtime/gl/GlContext.hpp"
 #include "runtime/ImageFile.hpp"
 #include "runtime/ReplayInput.hpp"

@@ -4,8 +4,8 @@
 //   auto issues = configIssues(dir.write("station.yaml", text));
 //   EXPECT_TRUE(hasIssue(issues, 3, "expected a number")) << describe(issues);
 
-#include "runtime/ConfigError.hpp"
-#include "runtime/StationConfig.hpp"
+#include "runtime/config/ConfigError.hpp"
+#include "runtime/config/StationConfig.hpp"
 
 #include <filesystem>
 #include <optional>

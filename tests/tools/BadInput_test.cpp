@@ -3,7 +3,7 @@
 
 #include "graph/core/BadInput.hpp"
 #include "graph/io/ModelError.hpp"
-#include "runtime/ConfigError.hpp"
+#include "runtime/config/ConfigError.hpp"
 #include "runtime/GazeSource.hpp"
 #include "tools/arcomp/Command.hpp"
 #include "video/VideoError.hpp"

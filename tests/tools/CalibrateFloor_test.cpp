@@ -3,7 +3,7 @@
 // corners; too few, collinear or malformed points, a marker not in view, or
 // no lens, are refused with exit 2 and say what is wrong.
 #include "../support/TempDir.hpp"
-#include "runtime/CameraFile.hpp"
+#include "runtime/config/CameraFile.hpp"
 #include "tests/support/Shell.hpp"
 #include "tools/bench/SyntheticCamera.hpp"
 

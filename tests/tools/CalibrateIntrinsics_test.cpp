@@ -4,7 +4,7 @@
 // too few views, a board too small in the picture, bad board sizes and a
 // missing input are refused with exit 2 and say what is wrong.
 #include "../support/TempDir.hpp"
-#include "runtime/CameraFile.hpp"
+#include "runtime/config/CameraFile.hpp"
 #include "tests/support/Shell.hpp"
 #include "tools/bench/SyntheticCamera.hpp"
 

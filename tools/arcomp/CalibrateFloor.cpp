@@ -7,11 +7,11 @@
 // lying on the floor, found in the image (--marker, FloorMarker.hpp), which
 // then is the floor's origin. Prints the reprojection error, the camera's
 // height and tilt, and writes the camera file a station's
-// `camera.calibration` names (runtime/CameraFile.hpp).
+// `camera.calibration` names (runtime/config/CameraFile.hpp).
 // With --preview it also draws the points, their reprojections and a 1 m
 // floor grid over the image, to be looked at before it is trusted.
 
-#include "runtime/CameraFile.hpp"
+#include "runtime/config/CameraFile.hpp"
 #include "tools/arcomp/Command.hpp"
 #include "tools/arcomp/FloorMarker.hpp"
 

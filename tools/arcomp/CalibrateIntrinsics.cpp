@@ -6,9 +6,9 @@
 // through it; from a V4L2 camera (/dev/video*, /dev/v4l/by-id/...) it takes a
 // view every half second while someone moves the board, until it has K.
 // Prints the reprojection error and how many views it used, and writes a
-// lens file (runtime/CameraFile.hpp) that `calibrate floor --intrinsics` reads.
+// lens file (runtime/config/CameraFile.hpp) that `calibrate floor --intrinsics` reads.
 
-#include "runtime/CameraFile.hpp"
+#include "runtime/config/CameraFile.hpp"
 #include "tools/arcomp/CalibrationBoard.hpp"
 #include "tools/arcomp/Command.hpp"
 #include "video/OpenSource.hpp"

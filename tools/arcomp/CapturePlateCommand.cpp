@@ -5,7 +5,7 @@
 // The place must be empty while it runs: a person in view becomes part of
 // the plate.
 
-#include "runtime/StationConfig.hpp"
+#include "runtime/config/StationConfig.hpp"
 #include "tools/arcomp/Command.hpp"
 #include "video/OpenSource.hpp"
 

@@ -5,7 +5,7 @@
 
 #include "runtime/SceneFile.hpp"
 #include "runtime/Station.hpp"
-#include "runtime/StationConfig.hpp"
+#include "runtime/config/StationConfig.hpp"
 #include "tools/arcomp/Command.hpp"
 
 #include <iostream>

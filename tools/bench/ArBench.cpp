@@ -25,7 +25,7 @@
 //   arcomp bench ar --out build/bench-ar
 
 #include "graph/core/SelectPass.hpp"
-#include "runtime/CameraFile.hpp"
+#include "runtime/config/CameraFile.hpp"
 #include "runtime/gl/GlContext.hpp"
 #include "runtime/ReplayInput.hpp"
 #include "runtime/SceneFile.hpp"

@@ -56,7 +56,7 @@
 #include "graph/budget/OnScreenPixels.hpp"
 #include "graph/lod/LodAlternatives.hpp"
 #include "graph/core/SelectPass.hpp"
-#include "runtime/CalibrationFile.hpp"
+#include "runtime/config/CalibrationFile.hpp"
 #include "runtime/CostCalibration.hpp"
 #include "runtime/gl/GlContext.hpp"
 #include "runtime/gl/RenderTarget.hpp"

@@ -5,7 +5,7 @@
 //
 //   arcomp bench calibrate --out build/bench-budget   # writes calibration.yaml
 
-#include "runtime/CalibrationFile.hpp"
+#include "runtime/config/CalibrationFile.hpp"
 #include "runtime/CostCalibration.hpp"
 #include "runtime/gl/GlContext.hpp"
 #include "runtime/gl/RenderTarget.hpp"

@@ -1,6 +1,6 @@
 // libFuzzer target: cost-model calibration YAML through readCalibration.
-#include "runtime/CalibrationFile.hpp"
-#include "runtime/ConfigError.hpp"
+#include "runtime/config/CalibrationFile.hpp"
+#include "runtime/config/ConfigError.hpp"
 #include "tools/fuzz/FuzzInput.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

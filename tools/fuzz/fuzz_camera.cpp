@@ -1,6 +1,6 @@
 // libFuzzer target: camera files (camera.calibration, arcomp calibrate) through readCameraFile.
-#include "runtime/CameraFile.hpp"
-#include "runtime/ConfigError.hpp"
+#include "runtime/config/CameraFile.hpp"
+#include "runtime/config/ConfigError.hpp"
 #include "tools/fuzz/FuzzInput.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

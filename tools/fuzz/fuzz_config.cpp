@@ -1,6 +1,6 @@
 // libFuzzer target: station config YAML text through loadStationConfig.
-#include "runtime/ConfigError.hpp"
-#include "runtime/StationConfig.hpp"
+#include "runtime/config/ConfigError.hpp"
+#include "runtime/config/StationConfig.hpp"
 #include "tools/fuzz/FuzzInput.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

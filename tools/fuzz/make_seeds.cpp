@@ -8,8 +8,8 @@
 #include "graph/io/LodFile.hpp"
 #include "graph/io/SilhouetteFile.hpp"
 #include "graph/io/VoxelFile.hpp"
-#include "runtime/CalibrationFile.hpp"
-#include "runtime/CameraFile.hpp"
+#include "runtime/config/CalibrationFile.hpp"
+#include "runtime/config/CameraFile.hpp"
 
 #include <filesystem>
 #include <fstream>

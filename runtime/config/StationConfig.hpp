@@ -8,12 +8,12 @@
 #include "graph/camera/CalibratedCamera.hpp"
 #include "graph/lod/Lod.hpp"
 #include "graph/core/Shading.hpp"
-#include "runtime/CompositingConfig.hpp"
-#include "runtime/OperatorConfig.hpp"
-#include "runtime/BudgetConfig.hpp"
-#include "runtime/GroupingConfig.hpp"
-#include "runtime/GazeConfig.hpp"
-#include "runtime/PointCloudConfig.hpp"
+#include "runtime/config/CompositingConfig.hpp"
+#include "runtime/config/OperatorConfig.hpp"
+#include "runtime/config/BudgetConfig.hpp"
+#include "runtime/config/GroupingConfig.hpp"
+#include "runtime/config/GazeConfig.hpp"
+#include "runtime/config/PointCloudConfig.hpp"
 
 #include <glm/glm.hpp>
 
@@ -56,7 +56,7 @@ struct ObjectConfig {
 struct CameraConfig {
     bool given = false;
     // With `calibration`, the real camera's pose and intrinsics
-    // (runtime/CameraFile.hpp) replace eye, target, up and fovy_deg.
+    // (runtime/config/CameraFile.hpp) replace eye, target, up and fovy_deg.
     std::filesystem::path calibration;
     std::optional<CalibratedCamera> calibrated;
     glm::vec3 eye{0.0f, 1.6f, 5.0f};

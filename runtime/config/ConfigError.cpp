@@ -1,4 +1,4 @@
-#include "runtime/ConfigError.hpp"
+#include "runtime/config/ConfigError.hpp"
 
 namespace arcomp {
 

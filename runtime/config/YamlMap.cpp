@@ -1,4 +1,4 @@
-#include "runtime/YamlMap.hpp"
+#include "runtime/config/YamlMap.hpp"
 
 #include <cmath>
 #include <fstream>

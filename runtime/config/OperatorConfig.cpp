@@ -1,8 +1,8 @@
-#include "runtime/OperatorConfig.hpp"
+#include "runtime/config/OperatorConfig.hpp"
 
 #include "graph/core/BadInput.hpp"
-#include "runtime/StatusAccess.hpp"
-#include "runtime/YamlMap.hpp"
+#include "runtime/config/StatusAccess.hpp"
+#include "runtime/config/YamlMap.hpp"
 
 #include <arpa/inet.h>
 

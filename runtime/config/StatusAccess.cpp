@@ -1,4 +1,4 @@
-#include "runtime/StatusAccess.hpp"
+#include "runtime/config/StatusAccess.hpp"
 
 #include "graph/core/BadInput.hpp"
 

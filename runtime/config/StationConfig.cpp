@@ -1,8 +1,8 @@
-#include "runtime/StationConfig.hpp"
+#include "runtime/config/StationConfig.hpp"
 
 #include "graph/core/BadInput.hpp"
-#include "runtime/CameraFile.hpp"
-#include "runtime/YamlMap.hpp"
+#include "runtime/config/CameraFile.hpp"
+#include "runtime/config/YamlMap.hpp"
 
 #include <limits>
 

@@ -1,10 +1,10 @@
-#include "runtime/PointCloudConfig.hpp"
+#include "runtime/config/PointCloudConfig.hpp"
 
 #include "graph/points/LdiCamera.hpp"
 #include "graph/scenes/ProceduralTree.hpp"
 #include "graph/io/VoxelFile.hpp"
 #include "graph/points/Voxelizer.hpp"
-#include "runtime/YamlMap.hpp"
+#include "runtime/config/YamlMap.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -1,6 +1,6 @@
-#include "runtime/CompositingConfig.hpp"
+#include "runtime/config/CompositingConfig.hpp"
 
-#include "runtime/YamlMap.hpp"
+#include "runtime/config/YamlMap.hpp"
 
 namespace arcomp {
 

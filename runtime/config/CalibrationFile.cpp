@@ -1,6 +1,6 @@
-#include "runtime/CalibrationFile.hpp"
+#include "runtime/config/CalibrationFile.hpp"
 
-#include "runtime/YamlMap.hpp"
+#include "runtime/config/YamlMap.hpp"
 
 #include <algorithm>
 #include <fstream>

@@ -1,7 +1,7 @@
-#include "runtime/CameraFile.hpp"
+#include "runtime/config/CameraFile.hpp"
 
 #include "graph/io/AtomicFile.hpp"
-#include "runtime/YamlMap.hpp"
+#include "runtime/config/YamlMap.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -10,7 +10,7 @@
 //   camera.finish();                                 // unknown keys
 //   report.throwIfAny();
 
-#include "runtime/ConfigError.hpp"
+#include "runtime/config/ConfigError.hpp"
 
 #include <glm/glm.hpp>
 #include <yaml-cpp/yaml.h>

@@ -1,6 +1,6 @@
-#include "runtime/GazeConfig.hpp"
+#include "runtime/config/GazeConfig.hpp"
 
-#include "runtime/YamlMap.hpp"
+#include "runtime/config/YamlMap.hpp"
 
 namespace arcomp {
 
@@ -14,15 +14,6 @@ void readGazeConfig(YamlMap& root, GazeConfig& out) {
     if (out.kind == GazeKind::Fixed && glm::length(out.direction) == 0.0f)
         gaze.report().add(gaze.mark(), "gaze.direction: must not be zero");
     gaze.finish();
-}
-
-std::unique_ptr<GazeSource> makeGazeSource(const GazeConfig& config, const View& view) {
-    switch (config.kind) {
-    case GazeKind::ScreenCentre: return nullptr;
-    case GazeKind::Fixed: return std::make_unique<FixedGaze>(view.eye, glm::normalize(config.direction));
-    case GazeKind::Track: return std::make_unique<RecordedGaze>(readGazeTrackCsv(config.track));
-    }
-    return nullptr;
 }
 
 } // namespace arcomp

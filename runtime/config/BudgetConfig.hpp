@@ -15,7 +15,7 @@
 // select pass chose them, as before.
 
 #include "graph/budget/FrameBudget.hpp"
-#include "runtime/YamlMap.hpp"
+#include "runtime/config/YamlMap.hpp"
 
 #include <filesystem>
 

@@ -1,4 +1,4 @@
-#include "runtime/BudgetConfig.hpp"
+#include "runtime/config/BudgetConfig.hpp"
 
 namespace arcomp {
 

@@ -5,13 +5,10 @@
 //
 //   gaze: {source: track, track: session.csv}     # a recorded track, for replay
 //   gaze: {source: fixed, direction: [0.3, 0, -1]}
-//
-//   std::unique_ptr<GazeSource> g = makeGazeSource(cfg.gaze, view);   // null: screen centre
 
-#include "runtime/GazeSource.hpp"
+#include <glm/vec3.hpp>
 
 #include <filesystem>
-#include <memory>
 
 namespace arcomp {
 
@@ -26,7 +23,5 @@ struct GazeConfig {
 };
 
 void readGazeConfig(YamlMap& root, GazeConfig& out);
-// Throws GazeTrackError (with the file and line) for a bad track.
-std::unique_ptr<GazeSource> makeGazeSource(const GazeConfig& config, const View& view);
 
 } // namespace arcomp

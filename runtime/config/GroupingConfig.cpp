@@ -1,6 +1,6 @@
-#include "runtime/GroupingConfig.hpp"
+#include "runtime/config/GroupingConfig.hpp"
 
-#include "runtime/YamlMap.hpp"
+#include "runtime/config/YamlMap.hpp"
 
 namespace arcomp {
 
