@@ -12,7 +12,7 @@
 #include "graph/core/DrawList.hpp"
 #include "graph/core/View.hpp"
 #include "graph/core/World.hpp"
-#include "runtime/Compositor.hpp"
+#include "runtime/composite/Compositor.hpp"
 #include "runtime/FrameStats.hpp"
 #include "runtime/render/Renderer.hpp"
 

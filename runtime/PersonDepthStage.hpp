@@ -20,7 +20,7 @@
 // which distance they got, so that an overlay can show it on the video.
 
 #include "graph/camera/CalibratedCamera.hpp"
-#include "runtime/PersonDepths.hpp"
+#include "runtime/composite/PersonDepths.hpp"
 #include "video/PersonTracker.hpp"
 
 #include <glm/glm.hpp>

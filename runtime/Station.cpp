@@ -7,7 +7,7 @@
 #include "runtime/render/ImpostorBaker.hpp"
 #include "runtime/render/PointCloudLayer.hpp"
 #include "runtime/SceneFile.hpp"
-#include "runtime/ShadowCatcher.hpp"
+#include "runtime/composite/ShadowCatcher.hpp"
 
 namespace arcomp {
 

@@ -53,7 +53,7 @@
 #include "graph/core/World.hpp"
 #include "runtime/BudgetStage.hpp"
 #include "runtime/CaptureStage.hpp"
-#include "runtime/Compositor.hpp"
+#include "runtime/composite/Compositor.hpp"
 #include "runtime/FrameStats.hpp"
 #include "runtime/GazeSource.hpp"
 #include "runtime/gl/GpuStageTimes.hpp"

@@ -22,8 +22,8 @@
 // the test pattern if its camera is gone too); a replay ends.
 
 #include "runtime/Station.hpp"
-#include "runtime/StationMetrics.hpp"
-#include "runtime/StatusServer.hpp"
+#include "runtime/operator/StationMetrics.hpp"
+#include "runtime/operator/StatusServer.hpp"
 
 #include <chrono>
 #include <functional>

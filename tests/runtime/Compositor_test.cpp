@@ -1,7 +1,7 @@
 // The compositor's layers on hand-painted inputs: the person covers CG
 // behind, the holdout lets CG in front show, the backdrop shows elsewhere.
 
-#include "runtime/Compositor.hpp"
+#include "runtime/composite/Compositor.hpp"
 #include "runtime/gl/GlContext.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>

@@ -6,7 +6,7 @@
 #include "runtime/config/CameraFile.hpp"
 #include "runtime/config/ConfigError.hpp"
 #include "runtime/GazeSource.hpp"
-#include "runtime/HttpRequest.hpp"
+#include "runtime/operator/HttpRequest.hpp"
 #include "runtime/config/StationConfig.hpp"
 #include "tests/support/ParserRegressions.hpp"
 

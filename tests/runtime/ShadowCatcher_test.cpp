@@ -1,10 +1,10 @@
 // Contact shadows on the video: where a box's shadow falls on the floor for
 // a given light, how dark it is, that its edge is soft, and that nothing
 // else in the picture changes.
-#include "runtime/ShadowCatcher.hpp"
+#include "runtime/composite/ShadowCatcher.hpp"
 
 #include "graph/core/SelectPass.hpp"
-#include "runtime/Compositor.hpp"
+#include "runtime/composite/Compositor.hpp"
 #include "runtime/gl/GlContext.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>

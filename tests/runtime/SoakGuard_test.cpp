@@ -23,7 +23,7 @@
 //   +842 B/frame, RSS's smaller growth +799 and +840 B/frame.
 
 #include "runtime/gl/GlContext.hpp"
-#include "runtime/ProcessMemory.hpp"
+#include "runtime/operator/ProcessMemory.hpp"
 #include "runtime/ReplayInput.hpp"
 #include "runtime/Station.hpp"
 

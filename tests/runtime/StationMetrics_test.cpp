@@ -1,4 +1,4 @@
-#include "runtime/StationMetrics.hpp"
+#include "runtime/operator/StationMetrics.hpp"
 
 #include <gtest/gtest.h>
 

@@ -6,7 +6,7 @@
 #include "runtime/gl/GlContext.hpp"
 #include "runtime/ShutdownSignals.hpp"
 #include "runtime/StationRunner.hpp"
-#include "runtime/StatusServer.hpp"
+#include "runtime/operator/StatusServer.hpp"
 #include "tests/support/TempDir.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "runtime/StatusServer.hpp"
+#include "runtime/operator/StatusServer.hpp"
 
 #include "../support/TempDir.hpp"
 #include "graph/core/BadInput.hpp"

@@ -2,7 +2,7 @@
 // same runs are one quad together, partial tiles at the image's edge are
 // cut to it, and rows count from the top or the bottom as asked.
 
-#include "runtime/TileQuads.hpp"
+#include "runtime/composite/TileQuads.hpp"
 
 #include <gtest/gtest.h>
 

@@ -6,7 +6,7 @@
 #include "runtime/gl/GlContext.hpp"
 #include "runtime/ReplayInput.hpp"
 #include "runtime/ShutdownSignals.hpp"
-#include "runtime/StationLog.hpp"
+#include "runtime/operator/StationLog.hpp"
 #include "runtime/StationRunner.hpp"
 #include "tools/arcomp/Command.hpp"
 

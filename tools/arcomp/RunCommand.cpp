@@ -12,7 +12,7 @@
 #include "runtime/CalibrationOverlay.hpp"
 #include "runtime/ShutdownSignals.hpp"
 #include "graph/core/JoinText.hpp"
-#include "runtime/StationLog.hpp"
+#include "runtime/operator/StationLog.hpp"
 #include "runtime/StationRunner.hpp"
 #include "runtime/StatsOverlay.hpp"
 #include "runtime/gl/WindowContext.hpp"

@@ -8,7 +8,7 @@
 //   HttpProbeReply r = httpGet(port, "/metrics", {.timeout = 1s});
 //   if (r.status == 200) ...
 
-#include "runtime/FileDescriptor.hpp"
+#include "runtime/operator/FileDescriptor.hpp"
 
 #include <chrono>
 #include <string>

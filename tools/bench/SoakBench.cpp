@@ -16,7 +16,7 @@
 
 #include "graph/core/ElapsedTime.hpp"
 #include "runtime/gl/GlContext.hpp"
-#include "runtime/ProcessMemory.hpp"
+#include "runtime/operator/ProcessMemory.hpp"
 #include "runtime/ReplayInput.hpp"
 #include "runtime/StationRunner.hpp"
 #include "tools/arcomp/Command.hpp"

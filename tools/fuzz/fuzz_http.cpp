@@ -3,7 +3,7 @@
 // relies on: a complete head has a method and a path starting with '/',
 // and the head's end is decided by bytes already received, so any prefix
 // that parses as complete parses the same as the whole input.
-#include "runtime/HttpRequest.hpp"
+#include "runtime/operator/HttpRequest.hpp"
 
 #include <cstdint>
 #include <cstdlib>

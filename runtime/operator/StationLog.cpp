@@ -1,4 +1,4 @@
-#include "runtime/StationLog.hpp"
+#include "runtime/operator/StationLog.hpp"
 
 #include <spdlog/sinks/rotating_file_sink.h>
 #include <spdlog/sinks/stdout_color_sinks.h>

@@ -1,4 +1,4 @@
-#include "runtime/TileQuads.hpp"
+#include "runtime/composite/TileQuads.hpp"
 
 #include <algorithm>
 

@@ -1,8 +1,8 @@
-#include "runtime/StatusServer.hpp"
+#include "runtime/operator/StatusServer.hpp"
 
 #include "graph/core/BadInput.hpp"
-#include "runtime/FileDescriptor.hpp"
-#include "runtime/HttpRequest.hpp"
+#include "runtime/operator/FileDescriptor.hpp"
+#include "runtime/operator/HttpRequest.hpp"
 #include "runtime/config/StatusAccess.hpp"
 
 #include <arpa/inet.h>

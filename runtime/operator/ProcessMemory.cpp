@@ -1,4 +1,4 @@
-#include "runtime/ProcessMemory.hpp"
+#include "runtime/operator/ProcessMemory.hpp"
 
 #include <unistd.h>
 

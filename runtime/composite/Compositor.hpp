@@ -31,7 +31,7 @@
 // very different colours.
 
 #include "runtime/gl/GlHandle.hpp"
-#include "runtime/PersonDepths.hpp"
+#include "runtime/composite/PersonDepths.hpp"
 #include "runtime/gl/RenderTarget.hpp"
 #include "runtime/gl/ShaderProgram.hpp"
 

@@ -21,7 +21,7 @@
 // error with the address or file in the message; the station logs it and
 // runs on without a status endpoint.
 
-#include "runtime/StationMetrics.hpp"
+#include "runtime/operator/StationMetrics.hpp"
 #include "runtime/config/OperatorConfig.hpp"
 
 #include <chrono>

@@ -1,6 +1,6 @@
-#include "runtime/Compositor.hpp"
+#include "runtime/composite/Compositor.hpp"
 
-#include "runtime/TileQuads.hpp"
+#include "runtime/composite/TileQuads.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
 #include <opencv2/core.hpp>

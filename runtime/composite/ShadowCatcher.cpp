@@ -1,6 +1,6 @@
-#include "runtime/ShadowCatcher.hpp"
+#include "runtime/composite/ShadowCatcher.hpp"
 
-#include "runtime/TileQuads.hpp"
+#include "runtime/composite/TileQuads.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "runtime/HttpRequest.hpp"
+#include "runtime/operator/HttpRequest.hpp"
 
 #include <algorithm>
 #include <cctype>
