@@ -19,7 +19,7 @@ enum class GazeKind { ScreenCentre, Fixed, Track };
 struct GazeConfig {
     GazeKind kind = GazeKind::ScreenCentre;
     glm::vec3 direction{0.0f, 0.0f, -1.0f};  // fixed: world space
-    std::filesystem::path track;             // track: CSV (runtime/GazeSource.hpp)
+    std::filesystem::path track;             // track: CSV (runtime/station/GazeSource.hpp)
 };
 
 void readGazeConfig(YamlMap& root, GazeConfig& out);

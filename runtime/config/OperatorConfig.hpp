@@ -16,7 +16,7 @@ namespace arcomp {
 class YamlMap;
 
 // How many connections the status endpoint holds, and for how long
-// (runtime/StatusServer.hpp).
+// (runtime/operator/StatusServer.hpp).
 struct StatusLimits {
     int maxConnections = 128;
     int maxPerClient = 16;  // per client IP address

@@ -3,8 +3,8 @@
 // horizon (floor behind the lens is not folded into the sky), and each
 // person's marker and label sit at their foot pixel.
 
-#include "runtime/CalibrationOverlay.hpp"
-#include "runtime/ImageFile.hpp"
+#include "runtime/app/CalibrationOverlay.hpp"
+#include "runtime/station/ImageFile.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The capture stage's clocks: the time of the frame on screen, which model
 // animations run on, from the frames' own stamps (no waiting, no timing).
 
-#include "runtime/CaptureStage.hpp"
+#include "runtime/station/CaptureStage.hpp"
 #include "video/TestPatternSource.hpp"
 
 #include <gtest/gtest.h>

@@ -5,8 +5,8 @@
 #include "graph/core/BadInput.hpp"
 #include "runtime/render/Environment.hpp"
 #include "runtime/render/ImageBasedLight.hpp"
-#include "runtime/ImageFile.hpp"
-#include "runtime/Station.hpp"
+#include "runtime/station/ImageFile.hpp"
+#include "runtime/station/Station.hpp"
 #include "runtime/config/StationConfig.hpp"
 
 #include "../support/TempDir.hpp"

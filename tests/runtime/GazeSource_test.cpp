@@ -1,4 +1,4 @@
-#include "runtime/GazeSource.hpp"
+#include "runtime/station/GazeSource.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 #include "graph/scenes/ForestExperiment.hpp"
 #include "graph/core/SelectPass.hpp"
 #include "runtime/config/ConfigError.hpp"
-#include "runtime/SceneFile.hpp"
+#include "runtime/station/SceneFile.hpp"
 #include "runtime/config/StationConfig.hpp"
 
 #include "../support/TempDir.hpp"

@@ -6,7 +6,7 @@
 #include "graph/lod/Lod.hpp"
 #include "graph/core/SelectPass.hpp"
 #include "runtime/gl/GlContext.hpp"
-#include "runtime/ImageFile.hpp"
+#include "runtime/station/ImageFile.hpp"
 #include "runtime/gl/RenderTarget.hpp"
 #include "runtime/render/Renderer.hpp"
 

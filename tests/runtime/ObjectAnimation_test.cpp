@@ -4,9 +4,9 @@
 #include "graph/core/SelectPass.hpp"
 #include "runtime/config/ConfigError.hpp"
 #include "runtime/gl/GlContext.hpp"
-#include "runtime/ReplayInput.hpp"
-#include "runtime/SceneFile.hpp"
-#include "runtime/Station.hpp"
+#include "runtime/station/ReplayInput.hpp"
+#include "runtime/station/SceneFile.hpp"
+#include "runtime/station/Station.hpp"
 #include "runtime/config/StationConfig.hpp"
 #include "video/TestPatternSource.hpp"
 

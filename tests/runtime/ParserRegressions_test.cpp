@@ -5,7 +5,7 @@
 #include "runtime/config/CalibrationFile.hpp"
 #include "runtime/config/CameraFile.hpp"
 #include "runtime/config/ConfigError.hpp"
-#include "runtime/GazeSource.hpp"
+#include "runtime/station/GazeSource.hpp"
 #include "runtime/operator/HttpRequest.hpp"
 #include "runtime/config/StationConfig.hpp"
 #include "tests/support/ParserRegressions.hpp"

@@ -6,7 +6,7 @@
 #include "graph/core/SelectPass.hpp"
 #include "runtime/gl/GlContext.hpp"
 #include "runtime/render/ImageBasedLight.hpp"
-#include "runtime/ImageFile.hpp"
+#include "runtime/station/ImageFile.hpp"
 #include "runtime/gl/RenderTarget.hpp"
 #include "runtime/render/Renderer.hpp"
 

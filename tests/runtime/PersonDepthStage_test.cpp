@@ -3,7 +3,7 @@
 // reduced size), the distance their feet give, and whether that distance was
 // measured now, kept from an earlier frame, or is the person plane's.
 
-#include "runtime/PersonDepthStage.hpp"
+#include "runtime/station/PersonDepthStage.hpp"
 
 #include <gtest/gtest.h>
 

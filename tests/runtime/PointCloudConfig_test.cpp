@@ -1,7 +1,7 @@
 // The station config's point_clouds section and the cloud nodes it adds.
 
 #include "runtime/config/ConfigError.hpp"
-#include "runtime/SceneFile.hpp"
+#include "runtime/station/SceneFile.hpp"
 #include "runtime/config/StationConfig.hpp"
 
 #include "../support/TempDir.hpp"

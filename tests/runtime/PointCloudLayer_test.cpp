@@ -7,7 +7,7 @@
 #include "runtime/render/PointCloudLayer.hpp"
 #include "runtime/gl/RenderTarget.hpp"
 #include "runtime/render/Renderer.hpp"
-#include "runtime/SceneFile.hpp"
+#include "runtime/station/SceneFile.hpp"
 
 #include <gtest/gtest.h>
 

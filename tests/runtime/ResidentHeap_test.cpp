@@ -1,4 +1,4 @@
-#include "runtime/ResidentHeap.hpp"
+#include "runtime/app/ResidentHeap.hpp"
 
 #include <gtest/gtest.h>
 

@@ -5,8 +5,8 @@
 #include "graph/core/SelectPass.hpp"
 #include "graph/io/ModelLoader.hpp"
 #include "runtime/gl/GlContext.hpp"
-#include "runtime/HoldoutBake.hpp"
-#include "runtime/ImageFile.hpp"
+#include "runtime/station/HoldoutBake.hpp"
+#include "runtime/station/ImageFile.hpp"
 #include "runtime/gl/RenderTarget.hpp"
 #include "runtime/render/Renderer.hpp"
 

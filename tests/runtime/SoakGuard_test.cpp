@@ -3,11 +3,11 @@
 // installation (consensus matte, people's depths, contact shadows). It
 // guards against what once grew a station by about 0.9 KB a frame: a new
 // thread started every frame, whose OpenCV per-thread data outlived it
-// (runtime/WorkerThread.hpp).
+// (runtime/station/WorkerThread.hpp).
 //
 // Two measures, each the peak over a window of frames, three windows after
 // the warm-up, each with its own limit on the growth per frame:
-// - the heap bytes in use (runtime/ProcessMemory.hpp), from the first
+// - the heap bytes in use (runtime/operator/ProcessMemory.hpp), from the first
 //   window to the last: flat to a few bytes a frame on the fixed code, so
 //   its limit is tight;
 // - RSS, which also counts the allocator settling on its pages: a step of
@@ -24,8 +24,8 @@
 
 #include "runtime/gl/GlContext.hpp"
 #include "runtime/operator/ProcessMemory.hpp"
-#include "runtime/ReplayInput.hpp"
-#include "runtime/Station.hpp"
+#include "runtime/station/ReplayInput.hpp"
+#include "runtime/station/Station.hpp"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 // ahead throws from its own frame(), and a hand-over passes on the frame
 // read ahead.
 
-#include "runtime/Station.hpp"
+#include "runtime/station/Station.hpp"
 #include "runtime/gl/GlContext.hpp"
 #include "video/FrameGrabber.hpp"
 #include "video/VideoError.hpp"

@@ -4,8 +4,8 @@
 // (good and bad configs).
 
 #include "runtime/gl/GlContext.hpp"
-#include "runtime/ShutdownSignals.hpp"
-#include "runtime/StationRunner.hpp"
+#include "runtime/app/ShutdownSignals.hpp"
+#include "runtime/app/StationRunner.hpp"
 #include "runtime/operator/StatusServer.hpp"
 #include "tests/support/TempDir.hpp"
 

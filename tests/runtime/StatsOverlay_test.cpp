@@ -2,7 +2,7 @@
 // colour, a lost camera's line turns to it too, and the panel is
 // premultiplied (no channel above its alpha).
 
-#include "runtime/StatsOverlay.hpp"
+#include "runtime/app/StatsOverlay.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The station's front thread: one thread for its whole life, one job at a
 // time, what a job throws rethrown by finish() on the owner's thread.
 
-#include "runtime/WorkerThread.hpp"
+#include "runtime/station/WorkerThread.hpp"
 
 #include <gtest/gtest.h>
 

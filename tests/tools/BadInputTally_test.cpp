@@ -10,7 +10,7 @@
 #include "../support/ChildProcess.hpp"
 #include "../support/TempDir.hpp"
 #include "graph/core/BadInput.hpp"
-#include "runtime/SceneFile.hpp"
+#include "runtime/station/SceneFile.hpp"
 #include "tests/support/BoxStation.hpp"
 
 #include <gtest/gtest.h>

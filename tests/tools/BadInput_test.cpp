@@ -4,7 +4,7 @@
 #include "graph/core/BadInput.hpp"
 #include "graph/io/ModelError.hpp"
 #include "runtime/config/ConfigError.hpp"
-#include "runtime/GazeSource.hpp"
+#include "runtime/station/GazeSource.hpp"
 #include "tools/arcomp/Command.hpp"
 #include "video/VideoError.hpp"
 

@@ -1,6 +1,6 @@
 // The arcomp command line as scripts use it: exit codes, outputs, messages.
 
-#include "runtime/ImageFile.hpp"
+#include "runtime/station/ImageFile.hpp"
 
 #include "../support/TempDir.hpp"
 

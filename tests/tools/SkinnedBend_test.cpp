@@ -8,7 +8,7 @@
 #include "graph/core/SelectPass.hpp"
 #include "graph/io/ModelLoader.hpp"
 #include "runtime/gl/GlContext.hpp"
-#include "runtime/ImageFile.hpp"
+#include "runtime/station/ImageFile.hpp"
 #include "runtime/gl/RenderTarget.hpp"
 #include "runtime/render/Renderer.hpp"
 

@@ -3,8 +3,8 @@
 // error is listed with file:line:column; every model is loaded, so an asset
 // that the station would skip at run time fails the check here.
 
-#include "runtime/SceneFile.hpp"
-#include "runtime/Station.hpp"
+#include "runtime/station/SceneFile.hpp"
+#include "runtime/station/Station.hpp"
 #include "runtime/config/StationConfig.hpp"
 #include "tools/arcomp/Command.hpp"
 

@@ -1,7 +1,7 @@
 // arcomp inspect <scene>: the node tree with counts, and what each drawn
 // material uses. Exit 2 with the reason when the scene is rejected.
 
-#include "runtime/SceneFile.hpp"
+#include "runtime/station/SceneFile.hpp"
 #include "tools/arcomp/Command.hpp"
 
 #include <cstdio>

@@ -4,10 +4,10 @@
 // same input gives bit-identical images on the same machine.
 
 #include "runtime/gl/GlContext.hpp"
-#include "runtime/ReplayInput.hpp"
-#include "runtime/ShutdownSignals.hpp"
+#include "runtime/station/ReplayInput.hpp"
+#include "runtime/app/ShutdownSignals.hpp"
 #include "runtime/operator/StationLog.hpp"
-#include "runtime/StationRunner.hpp"
+#include "runtime/app/StationRunner.hpp"
 #include "tools/arcomp/Command.hpp"
 
 #include <iostream>

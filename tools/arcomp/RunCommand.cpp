@@ -9,15 +9,15 @@
 // the video), F12 or P saves a screenshot, R reloads the config (as SIGHUP
 // does), Esc or Q quits.
 
-#include "runtime/CalibrationOverlay.hpp"
-#include "runtime/ShutdownSignals.hpp"
+#include "runtime/app/CalibrationOverlay.hpp"
+#include "runtime/app/ShutdownSignals.hpp"
 #include "graph/core/JoinText.hpp"
 #include "runtime/operator/StationLog.hpp"
-#include "runtime/StationRunner.hpp"
-#include "runtime/StatsOverlay.hpp"
+#include "runtime/app/StationRunner.hpp"
+#include "runtime/app/StatsOverlay.hpp"
 #include "runtime/gl/WindowContext.hpp"
-#include "runtime/WindowPresenter.hpp"
-#include "runtime/ImageFile.hpp"
+#include "runtime/app/WindowPresenter.hpp"
+#include "runtime/station/ImageFile.hpp"
 #include "tools/arcomp/CliParse.hpp"
 #include "tools/arcomp/Command.hpp"
 #include "video/OpenSource.hpp"

@@ -3,7 +3,7 @@
 // exit codes.
 
 #include "graph/core/BadInput.hpp"
-#include "runtime/ResidentHeap.hpp"
+#include "runtime/app/ResidentHeap.hpp"
 #include "tools/arcomp/Command.hpp"
 
 #include <CLI/CLI.hpp>

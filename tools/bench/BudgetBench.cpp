@@ -39,7 +39,7 @@
 // 95th percentile fell from 8.8% to 6.1%, and the floor fell from about
 // 0.8 of the target to 0.6, which leaves the controller more room. -1
 // leaves the driver's choice. Since the station keeps the memory a frame
-// frees (runtime/ResidentHeap.hpp), frames here take a quarter of the time
+// frees (runtime/app/ResidentHeap.hpp), frames here take a quarter of the time
 // they did (targets near 37 ms, not 140), so the same jitter in ms is a
 // larger share of the target, and the floor is often nearer it again
 // (0.5-0.9 of it in fourteen runs). The JSON reports the platform's own
@@ -57,7 +57,7 @@
 #include "graph/lod/LodAlternatives.hpp"
 #include "graph/core/SelectPass.hpp"
 #include "runtime/config/CalibrationFile.hpp"
-#include "runtime/CostCalibration.hpp"
+#include "tools/bench/CostCalibration.hpp"
 #include "runtime/gl/GlContext.hpp"
 #include "runtime/gl/RenderTarget.hpp"
 #include "tools/arcomp/CliParse.hpp"

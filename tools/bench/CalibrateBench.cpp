@@ -6,7 +6,7 @@
 //   arcomp bench calibrate --out build/bench-budget   # writes calibration.yaml
 
 #include "runtime/config/CalibrationFile.hpp"
-#include "runtime/CostCalibration.hpp"
+#include "tools/bench/CostCalibration.hpp"
 #include "runtime/gl/GlContext.hpp"
 #include "runtime/gl/RenderTarget.hpp"
 #include "tools/arcomp/CliParse.hpp"

@@ -32,7 +32,7 @@
 // --hd-only runs the hd part and its peer alone.
 // Stage times are medians over the measured frames (after warm-up); fps is
 // measured frames / their wall time. The station is pipelined
-// (runtime/Station.hpp): capture and matte of frame N+1 run on their own
+// (runtime/station/Station.hpp): capture and matte of frame N+1 run on their own
 // thread while frame N renders, so the capture and matte medians overlap the
 // others, and a frame is shown one frame later than it would be unpipelined
 // ("pipeline_latency": frames, and ms at the measured rate). GL stages are
@@ -41,8 +41,8 @@
 
 #include "runtime/gl/FrameReadback.hpp"
 #include "runtime/gl/GlContext.hpp"
-#include "runtime/ReplayInput.hpp"
-#include "runtime/Station.hpp"
+#include "runtime/station/ReplayInput.hpp"
+#include "runtime/station/Station.hpp"
 #include "tools/arcomp/Command.hpp"
 #include "tools/bench/BenchJson.hpp"
 #include "tools/bench/ShellCommand.hpp"

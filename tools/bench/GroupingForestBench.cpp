@@ -9,8 +9,8 @@
 
 #include "graph/scenes/ForestExperiment.hpp"
 #include "runtime/gl/GlContext.hpp"
-#include "runtime/ImageDifference.hpp"
-#include "runtime/ImageFile.hpp"
+#include "tools/bench/ImageDifference.hpp"
+#include "runtime/station/ImageFile.hpp"
 #include "runtime/render/ImpostorBaker.hpp"
 #include "runtime/gl/RenderTarget.hpp"
 #include "runtime/render/Renderer.hpp"

@@ -25,8 +25,8 @@
 // the quiet slices' median. The last line is one JSON object.
 
 #include "runtime/gl/GlContext.hpp"
-#include "runtime/ReplayInput.hpp"
-#include "runtime/StationRunner.hpp"
+#include "runtime/station/ReplayInput.hpp"
+#include "runtime/app/StationRunner.hpp"
 #include "tools/arcomp/Command.hpp"
 #include "tools/bench/BenchJson.hpp"
 #include "tools/bench/DemoStation.hpp"

@@ -1,5 +1,5 @@
 // libFuzzer target: recorded gaze track CSV through parseGazeTrackCsv.
-#include "runtime/GazeSource.hpp"
+#include "runtime/station/GazeSource.hpp"
 
 #include <cstdint>
 #include <string_view>
