@@ -12,7 +12,7 @@
 
 #include "graph/core/DrawList.hpp"
 #include "runtime/station/Station.hpp"
-#include "video/SourceStatus.hpp"
+#include "video/sources/SourceStatus.hpp"
 
 #include <opencv2/core.hpp>
 

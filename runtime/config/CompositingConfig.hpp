@@ -7,8 +7,8 @@
 //
 //   readCompositingConfig(root, cfg.compositing);   // inside loadStationConfig
 
-#include "video/MatteSpec.hpp"
-#include "video/SourceSpec.hpp"
+#include "video/matte/MatteSpec.hpp"
+#include "video/sources/SourceSpec.hpp"
 
 #include <glm/glm.hpp>
 

@@ -9,7 +9,7 @@
 //   metrics.setCamera("front", {SourceStatus::Streaming, ""}, drops);
 //   std::string text = metrics.prometheusText();
 
-#include "video/SourceStatus.hpp"
+#include "video/sources/SourceStatus.hpp"
 
 #include <array>
 #include <chrono>

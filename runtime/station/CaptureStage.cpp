@@ -1,6 +1,6 @@
 #include "runtime/station/CaptureStage.hpp"
 
-#include "video/VideoError.hpp"
+#include "video/pixels/VideoError.hpp"
 
 #include <opencv2/imgproc.hpp>
 

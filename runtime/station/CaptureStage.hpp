@@ -8,9 +8,9 @@
 //   CaptureStage capture(StationInput::fromReplay(std::move(grabber), 25.0));  // reads the first frame
 //   while (capture.next()) use(capture.image(), capture.seconds());
 
-#include "video/FrameGrabber.hpp"
-#include "video/FrameSource.hpp"
-#include "video/LensUndistortion.hpp"
+#include "video/sources/FrameGrabber.hpp"
+#include "video/sources/FrameSource.hpp"
+#include "video/sources/LensUndistortion.hpp"
 
 #include <glm/glm.hpp>
 #include <opencv2/core/mat.hpp>

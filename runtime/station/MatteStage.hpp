@@ -10,7 +10,7 @@
 //   matte.run(capture.image(), capture.newFrame());
 //   compositor.person(matte.person());
 
-#include "video/MatteSpec.hpp"
+#include "video/matte/MatteSpec.hpp"
 
 #include <opencv2/core/mat.hpp>
 

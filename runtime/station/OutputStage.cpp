@@ -1,8 +1,8 @@
 #include "runtime/station/OutputStage.hpp"
 
 #include "runtime/station/ImageFile.hpp"
-#include "video/PersonMatte.hpp"
-#include "video/VideoError.hpp"
+#include "video/matte/PersonMatte.hpp"
+#include "video/pixels/VideoError.hpp"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>

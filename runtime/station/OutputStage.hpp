@@ -14,7 +14,7 @@
 #include "runtime/config/CompositingConfig.hpp"
 #include "runtime/gl/FrameReadback.hpp"
 #include "runtime/gl/RenderTarget.hpp"
-#include "video/VideoFileWriter.hpp"
+#include "video/sources/VideoFileWriter.hpp"
 
 #include <glm/glm.hpp>
 #include <opencv2/core/mat.hpp>

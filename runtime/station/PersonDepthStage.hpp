@@ -1,6 +1,6 @@
 #pragma once
 // Each person's distance, from where their feet meet the floor. With a
-// calibrated camera, the matte's blobs are tracked (video/PersonTracker.hpp)
+// calibrated camera, the matte's blobs are tracked (video/matte/PersonTracker.hpp)
 // and each foot point's ray is met with the floor (graph/camera/
 // CalibratedCamera.hpp); the point's depth along the view axis is that
 // person's. Without one, everyone stands on the config's person plane.
@@ -21,7 +21,7 @@
 
 #include "graph/camera/CalibratedCamera.hpp"
 #include "runtime/composite/PersonDepths.hpp"
-#include "video/PersonTracker.hpp"
+#include "video/matte/PersonTracker.hpp"
 
 #include <glm/glm.hpp>
 

@@ -1,8 +1,8 @@
 #include "runtime/station/ReplayInput.hpp"
 
-#include "video/FileSource.hpp"
-#include "video/TestPatternSource.hpp"
-#include "video/VideoError.hpp"
+#include "video/sources/FileSource.hpp"
+#include "video/sources/TestPatternSource.hpp"
+#include "video/pixels/VideoError.hpp"
 
 namespace arcomp {
 

@@ -8,7 +8,7 @@
 //   StationInput in = openReplayInput(*cfg.compositing.video, warnings);
 
 #include "runtime/station/Station.hpp"
-#include "video/SourceSpec.hpp"
+#include "video/sources/SourceSpec.hpp"
 
 namespace arcomp {
 

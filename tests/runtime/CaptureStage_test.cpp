@@ -2,7 +2,7 @@
 // animations run on, from the frames' own stamps (no waiting, no timing).
 
 #include "runtime/station/CaptureStage.hpp"
-#include "video/TestPatternSource.hpp"
+#include "video/sources/TestPatternSource.hpp"
 
 #include <gtest/gtest.h>
 

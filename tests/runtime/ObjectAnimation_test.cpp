@@ -8,7 +8,7 @@
 #include "runtime/station/SceneFile.hpp"
 #include "runtime/station/Station.hpp"
 #include "runtime/config/StationConfig.hpp"
-#include "video/TestPatternSource.hpp"
+#include "video/sources/TestPatternSource.hpp"
 
 #include "../support/ConfigIssues.hpp"
 #include "../support/GltfFile.hpp"

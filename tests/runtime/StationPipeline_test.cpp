@@ -6,8 +6,8 @@
 
 #include "runtime/station/Station.hpp"
 #include "runtime/gl/GlContext.hpp"
-#include "video/FrameGrabber.hpp"
-#include "video/VideoError.hpp"
+#include "video/sources/FrameGrabber.hpp"
+#include "video/pixels/VideoError.hpp"
 
 #include <gtest/gtest.h>
 

@@ -12,8 +12,8 @@
 #include "runtime/station/SceneFile.hpp"
 #include "runtime/station/Station.hpp"
 #include "tests/support/TempDir.hpp"
-#include "video/FileSource.hpp"
-#include "video/TestPatternSource.hpp"
+#include "video/sources/FileSource.hpp"
+#include "video/sources/TestPatternSource.hpp"
 
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>

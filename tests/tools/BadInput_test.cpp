@@ -6,7 +6,7 @@
 #include "runtime/config/ConfigError.hpp"
 #include "runtime/station/GazeSource.hpp"
 #include "tools/arcomp/Command.hpp"
-#include "video/VideoError.hpp"
+#include "video/pixels/VideoError.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // arcomp replay as scripts use it: frame counts, fallbacks, the video
 // output finished properly, exit codes for bad input.
 
-#include "video/FileSource.hpp"
-#include "video/TestPatternSource.hpp"
-#include "video/VideoFileWriter.hpp"
+#include "video/sources/FileSource.hpp"
+#include "video/sources/TestPatternSource.hpp"
+#include "video/sources/VideoFileWriter.hpp"
 
 #include "../support/TempDir.hpp"
 

@@ -2,7 +2,7 @@
 // blocks whose mean lies exactly half-way between two levels, at widths
 // shorter than a vector and with a scalar tail, and at sizes the vector
 // path does not take.
-#include "video/AreaShrink.hpp"
+#include "video/pixels/AreaShrink.hpp"
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>

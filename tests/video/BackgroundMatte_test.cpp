@@ -1,4 +1,4 @@
-#include "video/BackgroundMatte.hpp"
+#include "video/matte/BackgroundMatte.hpp"
 
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>

@@ -1,5 +1,5 @@
-#include "video/CaptureThread.hpp"
-#include "video/TestPatternSource.hpp"
+#include "video/sources/CaptureThread.hpp"
+#include "video/sources/TestPatternSource.hpp"
 
 #include <gtest/gtest.h>
 

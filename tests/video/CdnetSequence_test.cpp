@@ -1,6 +1,6 @@
-#include "video/CdnetSequence.hpp"
+#include "tools/bench/CdnetSequence.hpp"
 
-#include "video/VideoError.hpp"
+#include "video/pixels/VideoError.hpp"
 
 #include "tests/support/TempDir.hpp"
 

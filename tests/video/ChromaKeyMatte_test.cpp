@@ -1,4 +1,4 @@
-#include "video/ChromaKeyMatte.hpp"
+#include "video/matte/ChromaKeyMatte.hpp"
 
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>

@@ -1,10 +1,10 @@
-#include "video/ConsensusMatte.hpp"
+#include "video/matte/ConsensusMatte.hpp"
 
-#include "video/BackgroundMatte.hpp"
-#include "video/CdnetSequence.hpp"
-#include "video/MatteScore.hpp"
+#include "video/matte/BackgroundMatte.hpp"
+#include "tools/bench/CdnetSequence.hpp"
+#include "tools/bench/MatteScore.hpp"
 
-#include "video/VideoError.hpp"
+#include "video/pixels/VideoError.hpp"
 
 #include "tests/support/TempDir.hpp"
 

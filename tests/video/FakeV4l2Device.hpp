@@ -5,10 +5,10 @@
 // unplug). replug() brings it back under a new /dev/videoN behind the same
 // by-id link.
 
-#include "video/PixelFormat.hpp"
-#include "video/TestPatternSource.hpp"
-#include "video/V4l2Device.hpp"
-#include "video/YuvConversion.hpp"
+#include "video/pixels/PixelFormat.hpp"
+#include "video/sources/TestPatternSource.hpp"
+#include "video/sources/V4l2Device.hpp"
+#include "video/pixels/YuvConversion.hpp"
 
 #include <opencv2/imgcodecs.hpp>
 

@@ -1,5 +1,5 @@
-#include "video/FallbackSource.hpp"
-#include "video/OpenSource.hpp"
+#include "video/sources/FallbackSource.hpp"
+#include "video/sources/OpenSource.hpp"
 
 #include <gtest/gtest.h>
 

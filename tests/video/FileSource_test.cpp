@@ -1,5 +1,5 @@
-#include "video/FileSource.hpp"
-#include "video/VideoError.hpp"
+#include "video/sources/FileSource.hpp"
+#include "video/pixels/VideoError.hpp"
 
 #include "tests/support/TempDir.hpp"
 

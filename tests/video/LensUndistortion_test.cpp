@@ -1,4 +1,4 @@
-#include "video/LensUndistortion.hpp"
+#include "video/sources/LensUndistortion.hpp"
 
 #include <gtest/gtest.h>
 #include <opencv2/calib3d.hpp>

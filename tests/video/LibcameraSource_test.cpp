@@ -1,4 +1,4 @@
-#include "video/LibcameraSource.hpp"
+#include "video/sources/LibcameraSource.hpp"
 
 #include <gtest/gtest.h>
 

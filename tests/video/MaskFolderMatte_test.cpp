@@ -1,8 +1,8 @@
 // Masks made elsewhere, one a frame: read in order, premultiplied like any
 // matte, and a mask that is missing or of the wrong size named in the error.
-#include "video/MaskFolderMatte.hpp"
+#include "video/matte/MaskFolderMatte.hpp"
 
-#include "video/VideoError.hpp"
+#include "video/pixels/VideoError.hpp"
 
 #include "../support/TempDir.hpp"
 

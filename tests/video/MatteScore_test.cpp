@@ -1,4 +1,4 @@
-#include "video/MatteScore.hpp"
+#include "tools/bench/MatteScore.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "video/NewestFrameSlot.hpp"
+#include "video/sources/NewestFrameSlot.hpp"
 
 #include <gtest/gtest.h>
 

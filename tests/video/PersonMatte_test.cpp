@@ -1,7 +1,7 @@
 // premultiply, the last step of every matte: each byte is v * alpha / 255
 // rounded to nearest, and where alpha is 0 the layer is 0 whatever the
 // reused buffer held before.
-#include "video/PersonMatte.hpp"
+#include "video/matte/PersonMatte.hpp"
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>

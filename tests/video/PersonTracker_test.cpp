@@ -1,4 +1,4 @@
-#include "video/PersonTracker.hpp"
+#include "video/matte/PersonTracker.hpp"
 
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>

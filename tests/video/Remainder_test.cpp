@@ -1,7 +1,7 @@
 // The remainder by multiplication is the remainder: for every divisor the
 // consensus model may use and more, on random inputs and on the edges.
 
-#include "video/Remainder.hpp"
+#include "video/matte/Remainder.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "video/TestPatternSource.hpp"
+#include "video/sources/TestPatternSource.hpp"
 
 #include <gtest/gtest.h>
 

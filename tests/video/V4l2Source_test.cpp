@@ -1,5 +1,5 @@
 #include "FakeV4l2Device.hpp"
-#include "video/V4l2Source.hpp"
+#include "video/sources/V4l2Source.hpp"
 
 #include <gtest/gtest.h>
 

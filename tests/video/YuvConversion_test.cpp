@@ -1,4 +1,4 @@
-#include "video/YuvConversion.hpp"
+#include "video/pixels/YuvConversion.hpp"
 
 #include <gtest/gtest.h>
 

@@ -11,7 +11,7 @@
 #include "runtime/config/CameraFile.hpp"
 #include "tools/arcomp/CalibrationBoard.hpp"
 #include "tools/arcomp/Command.hpp"
-#include "video/OpenSource.hpp"
+#include "video/sources/OpenSource.hpp"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>

@@ -7,7 +7,7 @@
 
 #include "runtime/config/StationConfig.hpp"
 #include "tools/arcomp/Command.hpp"
-#include "video/OpenSource.hpp"
+#include "video/sources/OpenSource.hpp"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>

@@ -4,10 +4,10 @@
 // lists. pattern[:WxH@fps]: the generated source's settings.
 
 #include "tools/arcomp/Command.hpp"
-#include "video/FileSource.hpp"
-#include "video/LibcameraSource.hpp"
-#include "video/TestPatternSource.hpp"
-#include "video/V4l2Source.hpp"
+#include "video/sources/FileSource.hpp"
+#include "video/sources/LibcameraSource.hpp"
+#include "video/sources/TestPatternSource.hpp"
+#include "video/sources/V4l2Source.hpp"
 
 #include <cstdio>
 

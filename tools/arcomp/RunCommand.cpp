@@ -20,8 +20,8 @@
 #include "runtime/station/ImageFile.hpp"
 #include "tools/arcomp/CliParse.hpp"
 #include "tools/arcomp/Command.hpp"
-#include "video/OpenSource.hpp"
-#include "video/VideoError.hpp"
+#include "video/sources/OpenSource.hpp"
+#include "video/pixels/VideoError.hpp"
 
 #include <GLFW/glfw3.h>
 #include <spdlog/spdlog.h>

@@ -34,7 +34,7 @@
 #include "tools/bench/BenchJson.hpp"
 #include "tools/bench/Stats.hpp"
 #include "tools/bench/SyntheticCamera.hpp"
-#include "video/MaskFolderMatte.hpp"
+#include "video/matte/MaskFolderMatte.hpp"
 
 #include <opencv2/imgcodecs.hpp>
 

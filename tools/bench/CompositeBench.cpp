@@ -47,9 +47,9 @@
 #include "tools/bench/BenchJson.hpp"
 #include "tools/bench/ShellCommand.hpp"
 #include "tools/bench/Stats.hpp"
-#include "video/FileSource.hpp"
-#include "video/TestPatternSource.hpp"
-#include "video/VideoFileWriter.hpp"
+#include "video/sources/FileSource.hpp"
+#include "video/sources/TestPatternSource.hpp"
+#include "video/sources/VideoFileWriter.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -1,13 +1,13 @@
 // arcomp bench matte --sequence DIR [--out DIR]: how well and how fast each
 // person matte cuts people out of a real sequence with ground truth, in the
-// CDnet 2014 layout (video/CdnetSequence.hpp), against OpenCV's own
+// CDnet 2014 layout (tools/bench/CdnetSequence.hpp), against OpenCV's own
 // background subtractors run in the same process on the same frames.
 //  - Methods: every `matte.background.method` of the station with its
 //    defaults (alpha > 127 is the person), and the peers with OpenCV's
 //    defaults and no clean-up: MOG2, KNN and bgsegm's GSOC (their shadow
 //    label 127 counts as background).
 //  - Quality: precision, recall, F, IoU and percentage wrong over the scored
-//    frames, counted the CDnet way (video/MatteScore.hpp).
+//    frames, counted the CDnet way (tools/bench/MatteScore.hpp).
 //  - Speed: ms per frame on the sequence, and on --speed-clip (vtest.avi,
 //    768x576, and the same scaled to 1920x1080): frames are decoded outside
 //    the clock, the first --speed-skip frames (start-up) are not timed, and
@@ -23,9 +23,9 @@
 #include "tools/bench/BenchJson.hpp"
 #include "tools/bench/LinePlot.hpp"
 #include "tools/bench/Stats.hpp"
-#include "video/CdnetSequence.hpp"
-#include "video/MatteScore.hpp"
-#include "video/MatteSpec.hpp"
+#include "tools/bench/CdnetSequence.hpp"
+#include "tools/bench/MatteScore.hpp"
+#include "video/matte/MatteSpec.hpp"
 
 #include <opencv2/bgsegm.hpp>
 #include <opencv2/imgcodecs.hpp>

@@ -16,10 +16,10 @@
 #include "tools/arcomp/Command.hpp"
 #include "tools/bench/BenchJson.hpp"
 #include "tools/bench/Stats.hpp"
-#include "video/CaptureThread.hpp"
-#include "video/FileSource.hpp"
-#include "video/TestPatternSource.hpp"
-#include "video/YuvConversion.hpp"
+#include "video/sources/CaptureThread.hpp"
+#include "video/sources/FileSource.hpp"
+#include "video/sources/TestPatternSource.hpp"
+#include "video/pixels/YuvConversion.hpp"
 
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
