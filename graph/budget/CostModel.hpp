@@ -13,7 +13,7 @@
 //   ... draw, time it ...
 //   model.observe(itemsMs, measuredMs);
 //
-// The calibrated table comes from `arcomp bench calibrate` (runtime/
+// The calibrated table comes from `arcomp-bench calibrate` (runtime/
 // CostCalibration.hpp). While the station runs, observe() re-fits one gain
 // on the table's sum by recursive least squares with forgetting, so the
 // prediction follows the machine as its load changes; the overhead stays as
@@ -64,7 +64,7 @@ public:
     // frame weighs three quarters). The table's error comes from the view
     // (occlusion, overdraw, how well a bounding sphere stands for the pixels
     // drawn) and from the mix of levels and shadings drawn, and it drifts
-    // along a camera path: in `bench budget` one frame's error predicts the
+    // along a camera path: in `arcomp-bench budget` one frame's error predicts the
     // next's with correlation 0.98, so a short memory predicts best. With
     // λ = 0.6 against 0.25, interleaved runs on this 2-core host (nothing
     // else running), p95 |dev| from the target was 13.7-21.9% against

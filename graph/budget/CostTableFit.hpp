@@ -1,7 +1,7 @@
 #pragma once
 // The cost table corrected by whole frames of a scene (paper: uniform-frame-
 // time, t = A·pixels + B). A table measured one object at a time
-// (tools/bench/CostCalibration.hpp) misses what a scene adds: objects hiding one
+// (tools/bench/probes/CostCalibration.hpp) misses what a scene adds: objects hiding one
 // another, overdraw, the mix of meshes drawn together. Timed frames of the
 // scene scale it: every shading's A by a gain of its own, and every B by
 // one gain, fitted to all the frames at once.

@@ -9,7 +9,7 @@
 // serves blocks over 128 KiB (a threshold it raises by itself, but only up to
 // what it has seen freed) with mmap. Either way the next frame takes page
 // faults on zeroed pages. On the VMs this project is measured on that was
-// most of the frame: `bench budget` at 1280x720 drew its unmanaged frames in
+// most of the frame: `arcomp-bench budget` at 1280x720 drew its unmanaged frames in
 // 566 ms (median) with glibc's defaults and in 122 ms with this policy, and
 // the process spent 43 s of 120 in the kernel against 1 s of 29.
 //

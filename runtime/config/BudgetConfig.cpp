@@ -30,7 +30,7 @@ void readBudgetConfig(YamlMap& root, BudgetConfig& out) {
     b.number("eccentricity_floor", out.eccentricityFloor, 0.0, 1.0);
     if (out.enabled && out.calibration.empty())
         b.report().add(b.mark(), "budget.calibration: required when enabled; expected the file that "
-                                 "`arcomp bench calibrate --out DIR` writes");
+                                 "`arcomp-bench calibrate --out DIR` writes");
     b.finish();
 }
 

@@ -6,7 +6,7 @@
 //   budget:
 //     enabled: true
 //     target_ms: 33.3
-//     calibration: station.calibration.yaml   # from `arcomp bench calibrate`
+//     calibration: station.calibration.yaml   # from `arcomp-bench calibrate`
 //
 //   BudgetConfig b;  readBudgetConfig(root, b);      // errors go to root's report
 //   if (b.enabled) FrameBudget budget(readCalibration(b.calibration), toBudgetSettings(b));

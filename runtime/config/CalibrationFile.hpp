@@ -1,5 +1,5 @@
 #pragma once
-// The cost model's calibration on disk: what `arcomp bench calibrate`
+// The cost model's calibration on disk: what `arcomp-bench calibrate`
 // writes and a station's `budget.calibration` names. YAML, one entry per
 // LOD level with [A ms/pixel, B ms] per shading, and the frame overhead:
 //

@@ -3,7 +3,7 @@
 
 #include "graph/scenes/ForestExperiment.hpp"
 #include "runtime/gl/GlContext.hpp"
-#include "tools/bench/ImageDifference.hpp"
+#include "tools/bench/report/ImageDifference.hpp"
 #include "runtime/station/ImageFile.hpp"
 #include "runtime/render/ImpostorBaker.hpp"
 #include "runtime/gl/RenderTarget.hpp"

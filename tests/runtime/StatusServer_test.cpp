@@ -2,7 +2,7 @@
 
 #include "../support/TempDir.hpp"
 #include "graph/core/BadInput.hpp"
-#include "tools/bench/HttpProbe.hpp"
+#include "tools/bench/probes/HttpProbe.hpp"
 
 #include <gtest/gtest.h>
 #include <httplib.h>

@@ -1,9 +1,11 @@
 #pragma once
-// Runs a command line as a script would, for the tests of the arcomp
-// executable: exit code and output (stderr folded in unless asked not to).
+// Runs a command line as a script would, for the tests of the arcomp and
+// arcomp-bench executables: exit code and output (stderr folded in unless
+// asked not to).
 //
 //   const ShellResult r = arcompCommand("check configs/demo-replay.yaml");
 //   EXPECT_EQ(r.code, 0) << r.out;
+//   const ShellResult b = benchCommand("load --repeats 1 --model bunny.obj");
 
 #include <array>
 #include <cstdio>
@@ -30,6 +32,10 @@ inline ShellResult shell(const std::string& command, bool withStderr = true) {
 
 inline ShellResult arcompCommand(const std::string& args, bool withStderr = true) {
     return shell(std::string(ARCOMP_BINARY) + " " + args, withStderr);
+}
+
+inline ShellResult benchCommand(const std::string& args, bool withStderr = true) {
+    return shell(std::string(ARCOMP_BENCH_BINARY) + " " + args, withStderr);
 }
 
 // The last non-empty line: where a benchmark prints its JSON.

@@ -1,4 +1,4 @@
-// `arcomp bench ar` end to end, short: the last line carries the issue's
+// `arcomp-bench ar` end to end, short: the last line carries the issue's
 // fields, the calibration commands it drives give back the camera, and the
 // single person plane is already worse than per-person depth. The layering
 // and cost targets over 300 frames are the benchmark's to judge.
@@ -11,7 +11,7 @@
 
 TEST(ArBench, reportsLayeringCalibrationAndCostAndWritesTheStrip) {
     const std::filesystem::path out = std::filesystem::path(ARCOMP_TEST_OUTPUT) / "bench-ar-short";
-    const auto r = arcomp::test::arcompCommand("bench ar --frames 130 --out " + out.string(), false);
+    const auto r = arcomp::test::benchCommand("ar --frames 130 --out " + out.string(), false);
     ASSERT_EQ(r.code, 0) << r.out;
     const YAML::Node json = YAML::Load(arcomp::test::lastLine(r.out));
     for (const char* key : {"frames", "wrong_layering_pct", "wrong_layering_pct_own_matte", "wrong_layering_pct_single_plane",

@@ -5,7 +5,7 @@
 #include "graph/io/ModelError.hpp"
 #include "runtime/config/ConfigError.hpp"
 #include "runtime/station/GazeSource.hpp"
-#include "tools/arcomp/Command.hpp"
+#include "tools/cli/Command.hpp"
 #include "video/pixels/VideoError.hpp"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // BenchJson's lines parse as JSON (read back here with yaml-cpp, whose
 // parser takes JSON) and say what was written: strings with quotes,
 // backslashes and control characters intact, numbers as the same doubles.
-#include "tools/bench/BenchJson.hpp"
+#include "tools/bench/report/BenchJson.hpp"
 
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>

@@ -5,7 +5,7 @@
 #include "../support/TempDir.hpp"
 #include "runtime/config/CameraFile.hpp"
 #include "tests/support/Shell.hpp"
-#include "tools/bench/SyntheticCamera.hpp"
+#include "tools/bench/scenes/SyntheticCamera.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>

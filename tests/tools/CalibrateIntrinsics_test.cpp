@@ -6,7 +6,7 @@
 #include "../support/TempDir.hpp"
 #include "runtime/config/CameraFile.hpp"
 #include "tests/support/Shell.hpp"
-#include "tools/bench/SyntheticCamera.hpp"
+#include "tools/bench/scenes/SyntheticCamera.hpp"
 
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>

@@ -12,6 +12,7 @@
 #include "tests/support/Shell.hpp"
 
 using arcomp::test::arcompCommand;
+using arcomp::test::benchCommand;
 using arcomp::test::lastLine;
 using arcomp::test::ShellResult;
 using arcomp::test::TempDir;
@@ -87,13 +88,32 @@ TEST(Cli, inspectPrintsTheTreeWithCounts) {
 
 TEST(Cli, benchLoadPrintsOneJsonLineLast) {
     if (!fs::exists(bunny())) GTEST_SKIP() << "shared test data is absent";
-    const ShellResult r = arcompCommand("bench load --repeats 1 --model " + bunny().string());
+    const ShellResult r = benchCommand("load --repeats 1 --model " + bunny().string());
     ASSERT_EQ(r.code, 0) << r.out;
     const std::string json = lastLine(r.out);
     EXPECT_EQ(json.front(), '{');
     EXPECT_EQ(json.back(), '}');
     EXPECT_NE(json.find("\"triangles\":27864"), std::string::npos) << json;
     EXPECT_NE(json.find("\"load_ms\":"), std::string::npos) << json;
+}
+
+// A kiosk's station binary holds what an integrator runs on it; the
+// benches, and OpenSceneGraph that the cull bench compares against, are
+// arcomp-bench's.
+TEST(Cli, theStationBinaryHoldsNoBenchAndNoOpenSceneGraph) {
+    const ShellResult bench = arcompCommand("bench load");
+    EXPECT_EQ(bench.code, 2);
+    EXPECT_NE(bench.out.find("arcomp-bench <name>"), std::string::npos) << bench.out;
+    const ShellResult ldd = arcomp::test::shell(std::string("ldd ") + ARCOMP_BINARY);
+    ASSERT_EQ(ldd.code, 0) << ldd.out;
+    EXPECT_NE(ldd.out.find("libopencv_core"), std::string::npos) << ldd.out;  // ldd lists libraries at all
+    EXPECT_EQ(ldd.out.find("libosg"), std::string::npos) << ldd.out;
+
+    const ShellResult help = benchCommand("--help");
+    ASSERT_EQ(help.code, 0) << help.out;
+    for (const char* bench : {"ar", "budget", "calibrate", "composite", "cull", "gltf-reference", "grouping",
+                              "grouping-forest", "ldi", "load", "matte", "silhouette", "soak", "status-load", "video"})
+        EXPECT_NE(help.out.find(std::string("\n  ") + bench + " "), std::string::npos) << bench << "\n" << help.out;
 }
 
 // What a reference renderer is told must reach arcomp too: the field of view

@@ -1,4 +1,4 @@
-// `arcomp bench cull` end to end, short: both layouts report every frame of
+// `arcomp-bench cull` end to end, short: both layouts report every frame of
 // both sides, and where OpenSceneGraph is built its counts agree with ours
 // frame by frame while the two sides take turns. The speed is the
 // benchmark's to judge.
@@ -11,7 +11,7 @@ TEST(CullBench, bothSidesSeeTheSameObjectsEveryFrameInBothLayouts) {
     for (const char* layout : {"flat", "tree"}) {
         // 45 frames: two full turns of 20 and a short third one.
         const auto r =
-            arcomp::test::arcompCommand(std::string("bench cull --objects 2000 --frames 45 --layout ") + layout, false);
+            arcomp::test::benchCommand(std::string("cull --objects 2000 --frames 45 --layout ") + layout, false);
         ASSERT_EQ(r.code, 0) << r.out;
         const YAML::Node json = YAML::Load(arcomp::test::lastLine(r.out));
         EXPECT_EQ(json["frames"].as<int>(), 45);

@@ -1,7 +1,7 @@
-// The glTF feature models of `arcomp bench gltf-reference`: each is a glTF
+// The glTF feature models of `arcomp-bench gltf-reference`: each is a glTF
 // file arcomp's loader takes without a warning, shows the feature it is
 // named after, and sits inside its own camera's view.
-#include "tools/bench/GltfFeatureModels.hpp"
+#include "tools/bench/scenes/GltfFeatureModels.hpp"
 
 #include "graph/core/View.hpp"
 #include "graph/io/ModelLoader.hpp"

@@ -1,4 +1,4 @@
-// `arcomp bench gltf-reference` without a browser: CI has none, so the bench
+// `arcomp-bench gltf-reference` without a browser: CI has none, so the bench
 // must say it skipped the reference, and why, and exit 0, having still
 // written the models. (Runs with a browser are the benchmark itself.)
 #include "../support/Shell.hpp"
@@ -12,13 +12,13 @@
 namespace arcomp {
 namespace {
 
-using test::arcompCommand;
+using test::benchCommand;
 using test::lastLine;
 using test::TempDir;
 
 TEST(GltfReferenceBench, withoutChromiumSkipsAndSucceeds) {
     TempDir dir;
-    const auto r = arcompCommand("bench gltf-reference --out " + dir.path().string() +
+    const auto r = benchCommand("gltf-reference --out " + dir.path().string() +
                                      " --models emissive,skinned-bend --chromium " + (dir.path() / "no-chromium").string(),
                                  false);
     ASSERT_EQ(r.code, 0) << r.out;
@@ -34,7 +34,7 @@ TEST(GltfReferenceBench, withoutChromiumSkipsAndSucceeds) {
 
 TEST(GltfReferenceBench, unknownModelIsBadInput) {
     TempDir dir;
-    const auto r = arcompCommand("bench gltf-reference --out " + dir.path().string() + " --models teapot");
+    const auto r = benchCommand("gltf-reference --out " + dir.path().string() + " --models teapot");
     EXPECT_EQ(r.code, 2) << r.out;
     EXPECT_NE(r.out.find("teapot"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("vertex-colors"), std::string::npos) << "the error lists the models there are: " << r.out;

@@ -1,4 +1,4 @@
-#include "tools/bench/LinePlot.hpp"
+#include "tools/bench/report/LinePlot.hpp"
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>

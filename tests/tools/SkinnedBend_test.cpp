@@ -1,7 +1,7 @@
 // The skinned-bend feature model through the whole path: loaded with its
 // skin, posed by its animation, culled by a bound that covers every pose and
 // drawn with GPU skinning, on OpenGL 3.3 and on OpenGL ES 3.0.
-#include "tools/bench/GltfFeatureModels.hpp"
+#include "tools/bench/scenes/GltfFeatureModels.hpp"
 
 #include "graph/animation/AnimationPlayer.hpp"
 #include "graph/animation/Skinning.hpp"

@@ -1,6 +1,6 @@
 // SSIM as Wang et al. (2004) define it: 1 for identical images, lower for a
 // blurred or shifted copy, and eq. 13's value where it can be worked by hand.
-#include "tools/bench/Ssim.hpp"
+#include "tools/bench/report/Ssim.hpp"
 
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>

@@ -1,5 +1,5 @@
-#include "tools/bench/BenchJson.hpp"
-#include "tools/bench/Stats.hpp"
+#include "tools/bench/report/BenchJson.hpp"
+#include "tools/bench/report/Stats.hpp"
 
 #include <gtest/gtest.h>
 

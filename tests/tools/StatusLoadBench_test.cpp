@@ -1,4 +1,4 @@
-// `arcomp bench status-load` end to end, small: the last line carries the
+// `arcomp-bench status-load` end to end, small: the last line carries the
 // issue's fields, every scrape was answered while the hostile clients were
 // connected, and those clients really did press on the server's bounds.
 // The latency and frame-time targets are the benchmark's to judge.
@@ -9,7 +9,7 @@
 
 TEST(StatusLoadBench, scrapesAreAnsweredWhileIdleSlowAndGarbageClientsFillTheTable) {
     // 200 idle clients from 64 addresses: past the 128-connection table.
-    const auto r = arcomp::test::arcompCommand("bench status-load --seconds 2 --idle 200 --slow 6 --garbage 6 --fps 0", false);
+    const auto r = arcomp::test::benchCommand("status-load --seconds 2 --idle 200 --slow 6 --garbage 6 --fps 0", false);
     ASSERT_EQ(r.code, 0) << r.out;
     const YAML::Node json = YAML::Load(arcomp::test::lastLine(r.out));
     for (const char* key : {"scrape_p99_ms", "scrape_max_ms", "scrape_failures", "idle_connections", "slow_clients",

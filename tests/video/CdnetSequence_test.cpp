@@ -1,4 +1,4 @@
-#include "tools/bench/CdnetSequence.hpp"
+#include "tools/bench/scenes/CdnetSequence.hpp"
 
 #include "video/pixels/VideoError.hpp"
 

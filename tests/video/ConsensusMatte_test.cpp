@@ -1,8 +1,8 @@
 #include "video/matte/ConsensusMatte.hpp"
 
 #include "video/matte/BackgroundMatte.hpp"
-#include "tools/bench/CdnetSequence.hpp"
-#include "tools/bench/MatteScore.hpp"
+#include "tools/bench/scenes/CdnetSequence.hpp"
+#include "tools/bench/report/MatteScore.hpp"
 
 #include "video/pixels/VideoError.hpp"
 

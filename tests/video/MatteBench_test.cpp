@@ -1,4 +1,4 @@
-// Runs the built `arcomp bench matte`; skips when the executable has not been built.
+// Runs the built `arcomp-bench matte`; skips when the executable has not been built.
 #include "tests/support/Shell.hpp"
 #include "tests/support/TempDir.hpp"
 
@@ -14,7 +14,7 @@ namespace {
 namespace fs = std::filesystem;
 
 arcomp::test::ShellResult bench(const std::string& args) {
-    return arcomp::test::arcompCommand("bench matte --speed-clip /nonexistent/clip.avi " + args);
+    return arcomp::test::benchCommand("matte --speed-clip /nonexistent/clip.avi " + args);
 }
 
 // A tiny CDnet sequence: a grey floor, a dark square crossing it from frame 6,

@@ -1,4 +1,4 @@
-#include "tools/bench/MatteScore.hpp"
+#include "tools/bench/report/MatteScore.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 #include "tools/arcomp/ArucoDictionary.hpp"
 
-#include "tools/arcomp/Command.hpp"
+#include "tools/cli/Command.hpp"
 
 #include <utility>
 

@@ -4,7 +4,7 @@
 
 #include "graph/io/LodFile.hpp"
 #include "graph/io/ModelLoader.hpp"
-#include "tools/arcomp/Command.hpp"
+#include "tools/cli/Command.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -8,7 +8,7 @@
 
 #include "graph/silhouette/FlatMesh.hpp"
 #include "graph/io/SilhouetteFile.hpp"
-#include "tools/arcomp/Command.hpp"
+#include "tools/cli/Command.hpp"
 
 #include <yaml-cpp/yaml.h>
 

@@ -5,7 +5,7 @@
 #include "graph/io/ModelLoader.hpp"
 #include "graph/io/VoxelFile.hpp"
 #include "graph/points/Voxelizer.hpp"
-#include "tools/arcomp/Command.hpp"
+#include "tools/cli/Command.hpp"
 
 #include <chrono>
 #include <cstdio>

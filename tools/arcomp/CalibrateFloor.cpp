@@ -12,7 +12,7 @@
 // floor grid over the image, to be looked at before it is trusted.
 
 #include "runtime/config/CameraFile.hpp"
-#include "tools/arcomp/Command.hpp"
+#include "tools/cli/Command.hpp"
 #include "tools/arcomp/FloorMarker.hpp"
 
 #include <opencv2/calib3d.hpp>

@@ -10,7 +10,7 @@
 
 #include "runtime/config/CameraFile.hpp"
 #include "tools/arcomp/CalibrationBoard.hpp"
-#include "tools/arcomp/Command.hpp"
+#include "tools/cli/Command.hpp"
 #include "video/sources/OpenSource.hpp"
 
 #include <opencv2/imgcodecs.hpp>

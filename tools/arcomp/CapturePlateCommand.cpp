@@ -6,7 +6,7 @@
 // the plate.
 
 #include "runtime/config/StationConfig.hpp"
-#include "tools/arcomp/Command.hpp"
+#include "tools/cli/Command.hpp"
 #include "video/sources/OpenSource.hpp"
 
 #include <opencv2/imgcodecs.hpp>

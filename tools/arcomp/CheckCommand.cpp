@@ -6,7 +6,7 @@
 #include "runtime/station/SceneFile.hpp"
 #include "runtime/station/Station.hpp"
 #include "runtime/config/StationConfig.hpp"
-#include "tools/arcomp/Command.hpp"
+#include "tools/cli/Command.hpp"
 
 #include <iostream>
 #include <memory>

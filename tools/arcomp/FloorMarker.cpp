@@ -1,7 +1,7 @@
 #include "tools/arcomp/FloorMarker.hpp"
 
 #include "tools/arcomp/ArucoDictionary.hpp"
-#include "tools/arcomp/Command.hpp"
+#include "tools/cli/Command.hpp"
 
 #include <opencv2/aruco.hpp>
 #include <opencv2/imgproc.hpp>

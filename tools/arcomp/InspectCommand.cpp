@@ -2,7 +2,7 @@
 // material uses. Exit 2 with the reason when the scene is rejected.
 
 #include "runtime/station/SceneFile.hpp"
-#include "tools/arcomp/Command.hpp"
+#include "tools/cli/Command.hpp"
 
 #include <cstdio>
 #include <iostream>

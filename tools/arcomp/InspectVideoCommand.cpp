@@ -3,7 +3,7 @@
 // devices: every format with its sizes and rates. libcamera: the cameras it
 // lists. pattern[:WxH@fps]: the generated source's settings.
 
-#include "tools/arcomp/Command.hpp"
+#include "tools/cli/Command.hpp"
 #include "video/sources/FileSource.hpp"
 #include "video/sources/LibcameraSource.hpp"
 #include "video/sources/TestPatternSource.hpp"

@@ -11,8 +11,8 @@
 #include "runtime/gl/RenderTarget.hpp"
 #include "runtime/render/Renderer.hpp"
 #include "runtime/station/SceneFile.hpp"
-#include "tools/arcomp/CliParse.hpp"
-#include "tools/arcomp/Command.hpp"
+#include "tools/cli/CliParse.hpp"
+#include "tools/cli/Command.hpp"
 
 #include <algorithm>
 #include <iostream>

@@ -8,7 +8,7 @@
 #include "runtime/app/ShutdownSignals.hpp"
 #include "runtime/operator/StationLog.hpp"
 #include "runtime/app/StationRunner.hpp"
-#include "tools/arcomp/Command.hpp"
+#include "tools/cli/Command.hpp"
 
 #include <iostream>
 #include <memory>

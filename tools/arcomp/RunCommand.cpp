@@ -18,8 +18,8 @@
 #include "runtime/gl/WindowContext.hpp"
 #include "runtime/app/WindowPresenter.hpp"
 #include "runtime/station/ImageFile.hpp"
-#include "tools/arcomp/CliParse.hpp"
-#include "tools/arcomp/Command.hpp"
+#include "tools/cli/CliParse.hpp"
+#include "tools/cli/Command.hpp"
 #include "video/sources/OpenSource.hpp"
 #include "video/pixels/VideoError.hpp"
 

@@ -1,6 +1,6 @@
 // node render.mjs JOBS.json: renders every job of JOBS.json with three.js in
 // headless Chromium (page.html) and writes each job's PNG to job.out.
-// `arcomp bench gltf-reference` writes the jobs file and calls this; by
+// `arcomp-bench gltf-reference` writes the jobs file and calls this; by
 // hand it is a way to look at one model the way three.js draws it.
 //
 // JOBS.json: { "chromium": "/usr/bin/chromium",
