@@ -151,13 +151,13 @@ TEST(GltfAnimation, normalizedIntegerRotationsAreAllowed) {
     GltfFile f;
     const int times = f.add({0, 1}, "SCALAR");
     const std::int16_t q[8] = {0, 0, 0, 32767, 0, 0, 32767, 0};
-    const int rot = f.addBytes(q, sizeof q, 2, "VEC4", 5122, true);
+    const int rot = f.addBytes(q, 2, "VEC4", GltfWriter::kShort, true);
     f.animations = oneChannel(times, rot, "rotation");
     Scene scene;
     const LoadedModel m = loadText(f, scene);
     ASSERT_EQ(m.animations.size(), 1u);
     EXPECT_NEAR(sample(m.animations[0].clip.channels[0], 1.0f).z, 1.0f, 1e-6f);
-    const int raw = f.addBytes(q, sizeof q, 2, "VEC4", 5122, false);
+    const int raw = f.addBytes(q, 2, "VEC4", 5122, false);
     f.animations = oneChannel(times, raw, "rotation");
     expectRejected(f, "/accessors/" + std::to_string(raw) + "/normalized", "must be normalized");
 }
@@ -169,7 +169,7 @@ TEST(GltfAnimation, samplerInputMustBeFloatScalarTimesThatIncrease) {
     f.animations = oneChannel(vec, out, "translation");
     expectRejected(f, "/accessors/" + std::to_string(vec) + "/type", "expected SCALAR (used by /animations/0/samplers/0/input)");
     const std::uint16_t shorts[2] = {0, 1};
-    const int ints = f.addBytes(shorts, sizeof shorts, 2, "SCALAR", 5123);
+    const int ints = f.addBytes(shorts, 2, "SCALAR", 5123);
     f.animations = oneChannel(ints, out, "translation");
     expectRejected(f, "/accessors/" + std::to_string(ints) + "/componentType", "not allowed for /animations/0/samplers/0/input");
     const int flat = f.add({0, 0}, "SCALAR");
@@ -205,7 +205,7 @@ TEST(GltfAnimation, outputTypeFollowsThePath) {
     f.animations = oneChannel(times, vec3, "rotation");
     expectRejected(f, "/accessors/" + std::to_string(vec3) + "/type", "is VEC3, expected VEC4");
     const std::uint8_t bytes[6] = {0, 0, 0, 1, 1, 1};
-    const int byteScale = f.addBytes(bytes, sizeof bytes, 2, "VEC3", 5121, true);
+    const int byteScale = f.addBytes(bytes, 2, "VEC3", 5121, true);
     f.animations = oneChannel(times, byteScale, "scale");
     expectRejected(f, "/accessors/" + std::to_string(byteScale) + "/componentType", "not allowed");
     const int zero = f.add({0, 0, 0, 0, 0, 0, 0, 1}, "VEC4");
@@ -261,7 +261,7 @@ TEST(GltfSkin, jointsAndInverseBindMatricesAreKeptAndTheMeshDrawnInBindPose) {
         const glm::mat4 m = glm::translate(glm::mat4(1.0f), {0, -float(j + 1), 0});
         for (int e = 0; e < 16; ++e) ibm.push_back(m[e / 4][e % 4]);
     }
-    const int matrices = f.add(ibm, "MAT4", 16);
+    const int matrices = f.add(ibm, "MAT4");
     f.skins = R"([{"name": "legs", "joints": [1, 2], "skeleton": 1, "inverseBindMatrices": )" + std::to_string(matrices) + "}]";
     Scene scene;
     const LoadedModel m = loadText(f, scene);
@@ -293,7 +293,7 @@ TEST(GltfSkin, badSkinsAreRejectedWithTheirPointer) {
     f.skins = R"([{"joints": [1]}])";
     expectRejected(f, "/nodes/0/skin", "skin 3 does not exist (1 skins)");
     f.nodes = R"([{"mesh": 0, "skin": 0, "children": [1]}, {}, {}])";
-    const int one = f.add(std::vector<float>(16, 0.0f), "MAT4", 16);
+    const int one = f.add(std::vector<float>(16, 0.0f), "MAT4");
     f.skins = R"([{"joints": [1, 2], "inverseBindMatrices": )" + std::to_string(one) + "}]";
     expectRejected(f, "/skins/0/inverseBindMatrices", "has 1 matrices for 2 joints");
 }

@@ -27,7 +27,7 @@ GltfFile skinnedTriangle(const std::vector<std::uint8_t>& joints, const std::vec
     GltfFile f;
     f.nodes = R"([{"name": "body", "mesh": 0, "skin": 0, "children": [1]}, {"name": "hip", "children": [2]}, {"name": "knee"}])";
     f.skins = R"([{"name": "legs", "joints": [1, 2]}])";
-    const int j = f.addBytes(joints.data(), joints.size(), joints.size() / 4, "VEC4", kUnsignedByte);
+    const int j = f.addBytes(joints.data(), joints.size() / 4, "VEC4", kUnsignedByte);
     const int w = f.add(weights, "VEC4");
     f.attributes = R"(, "JOINTS_0": )" + std::to_string(j) + R"(, "WEIGHTS_0": )" + std::to_string(w);
     return f;
@@ -85,7 +85,7 @@ TEST(SkinInfluences, jointsAndWeightsAreReadAndAJointWithoutWeightBecomesZero) {
 TEST(SkinInfluences, normalizedShortWeightsReadAsFractions) {
     GltfFile f = skinnedTriangle({0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0}, {1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0});
     const std::uint16_t shorts[12] = {16384, 49151, 0, 0, 65535, 0, 0, 0, 0, 65535, 0, 0};
-    const int w = f.addBytes(shorts, sizeof shorts, 3, "VEC4", kUnsignedShort, true);
+    const int w = f.addBytes(shorts, 3, "VEC4", kUnsignedShort, true);
     f.attributes = R"(, "JOINTS_0": 2, "WEIGHTS_0": )" + std::to_string(w);
     Scene scene;
     load(f, scene);
@@ -130,7 +130,7 @@ TEST(SkinInfluences, badInfluencesAreRejectedWithTheirPointer) {
 
     GltfFile rawBytes = skinnedTriangle(joints, weights);
     const std::uint8_t bytes[12] = {255, 0, 0, 0, 255, 0, 0, 0, 255, 0, 0, 0};
-    const int w = rawBytes.addBytes(bytes, sizeof bytes, 3, "VEC4", kUnsignedByte);
+    const int w = rawBytes.addBytes(bytes, 3, "VEC4", kUnsignedByte);
     rawBytes.attributes = R"(, "JOINTS_0": 2, "WEIGHTS_0": )" + std::to_string(w);
     expectRejected(rawBytes, "/accessors/" + std::to_string(w) + "/normalized", "weights must be normalized");
 

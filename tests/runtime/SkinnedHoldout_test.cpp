@@ -30,7 +30,7 @@ std::string slidingSkinnedTriangle() {
     f.nodes = R"([{"name": "body", "mesh": 0, "skin": 0, "children": [1]}, {"name": "bone"}])";
     f.skins = R"([{"name": "rig", "joints": [1]}])";
     const std::uint8_t joints[12] = {};
-    const int j = f.addBytes(joints, sizeof joints, 3, "VEC4", 5121);
+    const int j = f.addBytes(joints, 3, "VEC4", GltfWriter::kUnsignedByte);
     const int w = f.add({1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}, "VEC4");
     f.attributes = R"(, "JOINTS_0": )" + std::to_string(j) + R"(, "WEIGHTS_0": )" + std::to_string(w);
     const int times = f.add({0, 1}, "SCALAR");

@@ -1,6 +1,6 @@
 #pragma once
 // A unit quad in the xy plane (normal +z) as a glTF file with one embedded
-// buffer and a 2x2 PNG, for tests of materials and vertex attributes. The
+// buffer and a 2x2 PNG (written by graph/io/GltfWriter), for tests of materials and vertex attributes. The
 // buffer holds every attribute a test may name; a test picks the ones its
 // primitive uses and writes the material it needs.
 //
@@ -17,11 +17,10 @@
 //   6 COLOR_0 VEC4 normalized unsigned shorts      7 TANGENT: -x at twice unit length, w -0.5
 //   8 COLOR_0 VEC4 unsigned bytes, not normalized   9 indices (two triangles, counter-clockwise)
 
-#include "graph/io/Base64.hpp"
+#include "graph/io/GltfWriter.hpp"
+
 #include <cstdint>
-#include <cstring>
 #include <string>
-#include <vector>
 
 namespace arcomp::test {
 
@@ -41,18 +40,9 @@ struct QuadGltf {
     std::string nodes = R"([{"mesh": 0}])";
     std::string sceneNodes = "[0]";
 
-    struct View {
-        std::size_t offset, length;
-    };
-
-    static std::vector<unsigned char> bytes(std::vector<View>& views) {
-        std::vector<unsigned char> b;
-        const auto add = [&](const void* data, std::size_t size) {
-            views.push_back({b.size(), size});
-            const auto* p = static_cast<const unsigned char*>(data);
-            b.insert(b.end(), p, p + size);
-            b.resize((b.size() + 3) / 4 * 4, 0);
-        };
+    std::string json() const {
+        using Json = GltfWriter::Json;
+        GltfWriter w;
         const float positions[12] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
         const float normals[12] = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
         const float uv0[8] = {0, 1, 1, 1, 1, 0, 0, 0};
@@ -62,43 +52,26 @@ struct QuadGltf {
         const std::uint16_t colorsU16[16] = {65535, 0, 0, 65535, 0, 65535, 0, 65535, 0, 0, 65535, 65535, 0, 0, 0, 0};
         const float tangents[16] = {-2, 0, 0, -0.5f, -2, 0, 0, -0.5f, -2, 0, 0, -0.5f, -2, 0, 0, -0.5f};
         const std::uint16_t indices[6] = {0, 1, 2, 0, 2, 3};
-        add(positions, sizeof positions);
-        add(normals, sizeof normals);
-        add(uv0, sizeof uv0);
-        add(uv1, sizeof uv1);
-        add(colorsU8, sizeof colorsU8);
-        add(colorsF32, sizeof colorsF32);
-        add(colorsU16, sizeof colorsU16);
-        add(tangents, sizeof tangents);
-        add(colorsU8, sizeof colorsU8);
-        add(indices, sizeof indices);
-        return b;
-    }
-
-    std::string json() const {
-        std::vector<View> views;
-        const std::vector<unsigned char> b = bytes(views);
-        std::string bufferViews, accessors;
-        const char* kinds[10][3] = {{"5126", "VEC3", "false"}, {"5126", "VEC3", "false"}, {"5126", "VEC2", "false"},
-                                    {"5126", "VEC2", "false"}, {"5121", "VEC4", "true"},  {"5126", "VEC3", "false"},
-                                    {"5123", "VEC4", "true"},  {"5126", "VEC4", "false"}, {"5121", "VEC4", "false"},
-                                    {"5123", "SCALAR", "false"}};
-        for (std::size_t i = 0; i < views.size(); ++i) {
-            bufferViews += std::string(i ? ", " : "") + R"({"buffer": 0, "byteOffset": )" + std::to_string(views[i].offset) +
-                           R"(, "byteLength": )" + std::to_string(views[i].length) + "}";
-            accessors += std::string(i ? ", " : "") + R"({"bufferView": )" + std::to_string(i) + R"(, "componentType": )" +
-                         kinds[i][0] + R"(, "normalized": )" + kinds[i][2] + R"(, "count": )" + (i == 9 ? "6" : "4") +
-                         R"(, "type": ")" + kinds[i][1] + "\"}";
-        }
-        return R"({"asset": {"version": "2.0"}, "extensionsUsed": )" + extensionsUsed +
-               R"(, "extensionsRequired": )" + extensionsRequired +
-               R"(, "scene": 0, "scenes": [{"nodes": )" + sceneNodes + R"(}], "nodes": )" + nodes + R"(,
-  "meshes": [{"primitives": )" + primitives + R"(}],
-  "materials": )" + materials + R"(, "textures": )" + textures + R"(, "samplers": )" + samplers +
-               R"(, "images": )" + images + R"(,
-  "accessors": [)" + accessors + R"(], "bufferViews": [)" + bufferViews + R"(],
-  "buffers": [{"byteLength": )" + std::to_string(b.size()) + R"(, "uri": "data:application/octet-stream;base64,)" +
-               base64(b) + "\"}]}";
+        w.accessor(positions, 4, "VEC3", GltfWriter::kFloat);
+        w.accessor(normals, 4, "VEC3", GltfWriter::kFloat);
+        w.accessor(uv0, 4, "VEC2", GltfWriter::kFloat);
+        w.accessor(uv1, 4, "VEC2", GltfWriter::kFloat);
+        w.accessor(colorsU8, 4, "VEC4", GltfWriter::kUnsignedByte, {.normalized = true});
+        w.accessor(colorsF32, 4, "VEC3", GltfWriter::kFloat);
+        w.accessor(colorsU16, 4, "VEC4", GltfWriter::kUnsignedShort, {.normalized = true});
+        w.accessor(tangents, 4, "VEC4", GltfWriter::kFloat);
+        w.accessor(colorsU8, 4, "VEC4", GltfWriter::kUnsignedByte);
+        w.accessor(indices, 6, "SCALAR", GltfWriter::kUnsignedShort);
+        for (const Json& image : Json::parse(images)) w.image(image.dump());
+        GltfWriter::add(w.meshes, R"({"primitives": )" + primitives + "}");
+        w.materials = Json::parse(materials);
+        w.textures = Json::parse(textures);
+        w.samplers = Json::parse(samplers);
+        w.extensionsUsed = Json::parse(extensionsUsed);
+        w.extensionsRequired = Json::parse(extensionsRequired);
+        w.nodes = Json::parse(nodes);
+        w.sceneNodes = Json::parse(sceneNodes).get<std::vector<int>>();
+        return w.text();
     }
 };
 

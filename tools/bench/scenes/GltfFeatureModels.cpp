@@ -1,7 +1,6 @@
 #include "tools/bench/scenes/GltfFeatureModels.hpp"
 
-#include "graph/io/Base64.hpp"
-#include "tools/bench/report/BenchJson.hpp"
+#include "graph/io/GltfWriter.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -23,7 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 constexpr float kPi = std::numbers::pi_v<float>;
 
-std::string num(float x) { return BenchJson::number(x); }
+std::string num(float x) { return nlohmann::json(x).dump(); }
 std::string vec(std::initializer_list<float> xs) {
     std::string s = "[";
     for (float x : xs) s += (s.size() > 1 ? "," : "") + num(x);
@@ -31,112 +30,39 @@ std::string vec(std::initializer_list<float> xs) {
 }
 std::string vec(const glm::vec3& v) { return vec({v.x, v.y, v.z}); }
 
-constexpr int kFloat = 5126, kUnsignedShort = 5123, kUnsignedByte = 5121;
-constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
-
-// A glTF document being written: the generated parts (buffer views,
-// accessors, images) are added through calls, the hand-written parts
-// (materials, meshes, nodes, ...) as their JSON, so that a model's function
-// reads like the glTF it makes.
-class GltfBuilder {
+// graph/io/GltfWriter with the accessors the models use, typed, and their
+// PNG textures.
+class GltfBuilder : public GltfWriter {
 public:
-    std::vector<std::string> materials, meshes, nodes, skins, animations, samplers, textures, extensionsUsed;
-    std::vector<int> roots;
+    GltfBuilder() { generator = "arcomp feature models"; }
 
-    static int add(std::vector<std::string>& list, std::string json) {
-        list.push_back(std::move(json));
-        return static_cast<int>(list.size()) - 1;
+    int scalars(const std::vector<float>& v, bool bounds) {
+        return accessor(v.data(), v.size(), "SCALAR", kFloat, {.bounds = bounds});
     }
-
-    int floats(const float* data, std::size_t count, const char* type, int components, bool bounds,
-               int target = kArrayBuffer) {
-        std::string json = "{\"bufferView\":" + std::to_string(view(data, count * components * sizeof(float), target)) +
-                           ",\"componentType\":" + std::to_string(kFloat) + ",\"count\":" + std::to_string(count) +
-                           ",\"type\":\"" + type + "\"";
-        // POSITION and animation inputs must state their range (glTF 2.0, 3.6.2.5).
-        if (bounds) {
-            std::vector<float> lo(data, data + components), hi(data, data + components);
-            for (std::size_t i = 0; i < count; ++i)
-                for (int c = 0; c < components; ++c) {
-                    lo[c] = std::min(lo[c], data[i * components + c]);
-                    hi[c] = std::max(hi[c], data[i * components + c]);
-                }
-            auto list = [](const std::vector<float>& xs) {
-                std::string s = "[";
-                for (float x : xs) s += (s.size() > 1 ? "," : "") + num(x);
-                return s + "]";
-            };
-            json += ",\"min\":" + list(lo) + ",\"max\":" + list(hi);
-        }
-        return add(accessors_, json + "}");
+    int vec2s(const std::vector<glm::vec2>& v) {
+        return accessor(glm::value_ptr(v[0]), v.size(), "VEC2", kFloat, {.target = kArrayBuffer});
     }
-    int scalars(const std::vector<float>& v, bool bounds) { return floats(v.data(), v.size(), "SCALAR", 1, bounds, 0); }
-    int vec2s(const std::vector<glm::vec2>& v) { return floats(glm::value_ptr(v[0]), v.size(), "VEC2", 2, false); }
     int vec3s(const std::vector<glm::vec3>& v, bool bounds = false, int target = kArrayBuffer) {
-        return floats(glm::value_ptr(v[0]), v.size(), "VEC3", 3, bounds, target);
+        return accessor(glm::value_ptr(v[0]), v.size(), "VEC3", kFloat, {.bounds = bounds, .target = target});
     }
     int vec4s(const std::vector<glm::vec4>& v, int target = kArrayBuffer) {
-        return floats(glm::value_ptr(v[0]), v.size(), "VEC4", 4, false, target);
+        return accessor(glm::value_ptr(v[0]), v.size(), "VEC4", kFloat, {.target = target});
     }
-    int mat4s(const std::vector<glm::mat4>& m) { return floats(glm::value_ptr(m[0]), m.size(), "MAT4", 16, false, 0); }
+    int mat4s(const std::vector<glm::mat4>& m) { return accessor(glm::value_ptr(m[0]), m.size(), "MAT4", kFloat); }
     int indices(const std::vector<std::uint16_t>& v) {
-        return add(accessors_, "{\"bufferView\":" +
-                                   std::to_string(view(v.data(), v.size() * sizeof(std::uint16_t), kElementArrayBuffer)) +
-                                   ",\"componentType\":" + std::to_string(kUnsignedShort) +
-                                   ",\"count\":" + std::to_string(v.size()) + ",\"type\":\"SCALAR\"}");
+        return accessor(v.data(), v.size(), "SCALAR", kUnsignedShort, {.target = kElementArrayBuffer});
     }
     int joints(const std::vector<glm::u8vec4>& v) {
-        return add(accessors_, "{\"bufferView\":" + std::to_string(view(v.data(), v.size() * 4, kArrayBuffer)) +
-                                   ",\"componentType\":" + std::to_string(kUnsignedByte) +
-                                   ",\"count\":" + std::to_string(v.size()) + ",\"type\":\"VEC4\"}");
+        return accessor(v.data(), v.size(), "VEC4", kUnsignedByte, {.target = kArrayBuffer});
     }
     // A texture of a PNG (from 8-bit BGR or BGRA) with its sampler.
     int texture(const cv::Mat& image, const std::string& sampler) {
         std::vector<std::uint8_t> png;
         if (!cv::imencode(".png", image, png)) throw std::runtime_error("feature model: cannot encode a PNG texture");
-        const int source = add(images_, "{\"uri\":\"data:image/png;base64," + base64(png.data(), png.size()) + "\"}");
+        const int source = pngImage(png);
         const int s = add(samplers, sampler);
         return add(textures, "{\"sampler\":" + std::to_string(s) + ",\"source\":" + std::to_string(source) + "}");
     }
-
-    std::string text() const {
-        auto array = [](const char* key, const std::vector<std::string>& items) {
-            if (items.empty()) return std::string();
-            std::string s = std::string(",\"") + key + "\":[";
-            for (std::size_t i = 0; i < items.size(); ++i) s += (i ? ",\n" : "\n") + items[i];
-            return s + "]";
-        };
-        std::string scene = "[";
-        for (int r : roots) scene += (scene.size() > 1 ? "," : "") + std::to_string(r);
-        std::vector<std::string> used;
-        for (const std::string& e : extensionsUsed) used.push_back("\"" + e + "\"");
-        std::string out = "{\"asset\":{\"version\":\"2.0\",\"generator\":\"arcomp feature models\"}";
-        if (!used.empty()) out += array("extensionsUsed", used);
-        out += ",\"scene\":0,\"scenes\":[{\"nodes\":" + scene + "]}]";
-        out += array("nodes", nodes) + array("meshes", meshes) + array("materials", materials) +
-               array("textures", textures) + array("samplers", samplers) + array("images", images_) +
-               array("skins", skins) + array("animations", animations) + array("accessors", accessors_) +
-               array("bufferViews", views_);
-        out += ",\"buffers\":[{\"byteLength\":" + std::to_string(buffer_.size()) +
-               ",\"uri\":\"data:application/octet-stream;base64," + base64(buffer_.data(), buffer_.size()) + "\"}]}\n";
-        return out;
-    }
-
-private:
-    // Views start 4-byte aligned: a float accessor must (glTF 2.0, 3.6.2.4).
-    int view(const void* data, std::size_t bytes, int target) {
-        buffer_.resize((buffer_.size() + 3) / 4 * 4, 0);
-        const std::size_t offset = buffer_.size();
-        buffer_.resize(offset + bytes);
-        std::memcpy(buffer_.data() + offset, data, bytes);
-        std::string json = "{\"buffer\":0,\"byteOffset\":" + std::to_string(offset) +
-                           ",\"byteLength\":" + std::to_string(bytes);
-        if (target) json += ",\"target\":" + std::to_string(target);
-        return add(views_, json + "}");
-    }
-
-    std::vector<std::string> accessors_, views_, images_;
-    std::vector<std::uint8_t> buffer_;
 };
 
 struct MeshData {
@@ -247,7 +173,7 @@ std::string emissive() {
     GltfBuilder b;
     const int m = GltfBuilder::add(b.materials, R"({"name":"glow","pbrMetallicRoughness":{"baseColorFactor":[0,0,0,1],)"
                                                 R"("metallicFactor":0,"roughnessFactor":1},"emissiveFactor":[1,0.45,0.1]})");
-    b.roots.push_back(meshNode(b, "sphere", mesh(b, primitiveData(b, sphere(0.8f)), m)));
+    b.sceneNodes.push_back(meshNode(b, "sphere", mesh(b, primitiveData(b, sphere(0.8f)), m)));
     return b.text();
 }
 
@@ -261,8 +187,8 @@ std::string emissiveUnlit() {
                                                 R"("emissiveFactor":[1,0.05,0.02],"extensions":{"KHR_materials_unlit":{}}})");
     const int body = GltfBuilder::add(b.materials, R"({"name":"body","pbrMetallicRoughness":{"baseColorFactor":[0.6,0.6,0.65,1],)"
                                                    R"("metallicFactor":0,"roughnessFactor":0.5}})");
-    b.roots.push_back(meshNode(b, "body", mesh(b, primitiveData(b, box({0.9f, 0.5f, 0.3f})), body)));
-    b.roots.push_back(meshNode(b, "lamp", mesh(b, primitiveData(b, box({0.25f, 0.12f, 0.05f})), m), {0.45f, 0.1f, 0.32f}));
+    b.sceneNodes.push_back(meshNode(b, "body", mesh(b, primitiveData(b, box({0.9f, 0.5f, 0.3f})), body)));
+    b.sceneNodes.push_back(meshNode(b, "lamp", mesh(b, primitiveData(b, box({0.25f, 0.12f, 0.05f})), m), {0.45f, 0.1f, 0.32f}));
     return b.text();
 }
 
@@ -297,7 +223,7 @@ std::string normalMap() {
     const int m = GltfBuilder::add(b.materials, R"({"name":"bumps","pbrMetallicRoughness":{"baseColorFactor":[0.8,0.8,0.8,1],)"
                                                 R"("metallicFactor":0,"roughnessFactor":0.45},"normalTexture":{"index":)" +
                                                     std::to_string(t) + "}}");
-    b.roots.push_back(meshNode(b, "plane", mesh(b, primitiveData(b, plane(2.0f)), m)));
+    b.sceneNodes.push_back(meshNode(b, "plane", mesh(b, primitiveData(b, plane(2.0f)), m)));
     return b.text();
 }
 
@@ -318,7 +244,7 @@ std::string alphaMask() {
                                                     std::to_string(t) +
                                                     R"(},"metallicFactor":0,"roughnessFactor":0.7},)"
                                                     R"("alphaMode":"MASK","alphaCutoff":0.5,"doubleSided":true})");
-    b.roots.push_back(meshNode(b, "plane", mesh(b, primitiveData(b, plane(2.0f)), m)));
+    b.sceneNodes.push_back(meshNode(b, "plane", mesh(b, primitiveData(b, plane(2.0f)), m)));
     return b.text();
 }
 
@@ -329,8 +255,8 @@ std::string alphaBlend() {
                                                      R"("metallicFactor":0,"roughnessFactor":0.5}})");
     const int glass = GltfBuilder::add(b.materials, R"({"name":"glass","pbrMetallicRoughness":{"baseColorFactor":[0.1,0.3,0.9,0.5],)"
                                                     R"("metallicFactor":0,"roughnessFactor":0.5},"alphaMode":"BLEND","doubleSided":true})");
-    b.roots.push_back(meshNode(b, "sphere", mesh(b, primitiveData(b, sphere(0.7f)), opaque), {-0.2f, 0.0f, -0.4f}));
-    b.roots.push_back(meshNode(b, "pane", mesh(b, primitiveData(b, plane(1.4f)), glass), {0.45f, -0.1f, 0.4f}));
+    b.sceneNodes.push_back(meshNode(b, "sphere", mesh(b, primitiveData(b, sphere(0.7f)), opaque), {-0.2f, 0.0f, -0.4f}));
+    b.sceneNodes.push_back(meshNode(b, "pane", mesh(b, primitiveData(b, plane(1.4f)), glass), {0.45f, -0.1f, 0.4f}));
     return b.text();
 }
 
@@ -353,7 +279,7 @@ std::string textureTransform() {
         b.materials, R"({"name":"checker","pbrMetallicRoughness":{"baseColorTexture":{"index":)" + std::to_string(t) +
                          R"(,"extensions":{"KHR_texture_transform":{"offset":[0.1,0.2],"rotation":0.3,"scale":[1.5,1.5]}}},)"
                          R"("metallicFactor":0,"roughnessFactor":0.8}})");
-    b.roots.push_back(meshNode(b, "plane", mesh(b, primitiveData(b, plane(2.0f)), m)));
+    b.sceneNodes.push_back(meshNode(b, "plane", mesh(b, primitiveData(b, plane(2.0f)), m)));
     return b.text();
 }
 
@@ -368,7 +294,7 @@ std::string metalRoughSweep() {
             const int m = GltfBuilder::add(b.materials, "{\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.9,0.6,0.3,1],"
                                                         "\"metallicFactor\":" + std::to_string(row) +
                                                             ",\"roughnessFactor\":" + num(roughness) + "}}");
-            b.roots.push_back(meshNode(b, "sphere", mesh(b, data, m),
+            b.sceneNodes.push_back(meshNode(b, "sphere", mesh(b, data, m),
                                        {static_cast<float>(column - 2), row == 0 ? 0.5f : -0.5f, 0.0f}));
         }
     return b.text();
@@ -381,7 +307,7 @@ std::string vertexColors() {
     GltfBuilder b;
     const int m = GltfBuilder::add(b.materials, R"({"name":"white","pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1],)"
                                                 R"("metallicFactor":0,"roughnessFactor":0.6}})");
-    b.roots.push_back(meshNode(b, "sphere", mesh(b, primitiveData(b, s), m)));
+    b.sceneNodes.push_back(meshNode(b, "sphere", mesh(b, primitiveData(b, s), m)));
     return b.text();
 }
 
@@ -392,7 +318,7 @@ std::string animatedNode() {
     const int m = GltfBuilder::add(b.materials, R"({"name":"slab","pbrMetallicRoughness":{"baseColorFactor":[0.2,0.6,0.3,1],)"
                                                 R"("metallicFactor":0,"roughnessFactor":0.5}})");
     const int node = meshNode(b, "slab", mesh(b, primitiveData(b, box({0.6f, 0.3f, 0.15f})), m), {-0.8f, 0.0f, 0.0f});
-    b.roots.push_back(node);
+    b.sceneNodes.push_back(node);
     const int times = b.scalars({0.0f, 1.0f, 2.0f}, true);
     const std::vector<glm::vec3> translations = {{-0.8f, 0.0f, 0.0f}, {0.0f, 0.4f, 0.0f}, {0.8f, 0.0f, 0.0f}};
     const glm::vec3 axis = glm::normalize(glm::vec3(0.3f, 1.0f, 0.2f));
@@ -432,7 +358,7 @@ std::string skinnedBend() {
                                                 R"("metallicFactor":0,"roughnessFactor":0.5},"doubleSided":true})");
     const int meshIndex = mesh(b, primitiveData(b, c), m);
     // Nodes: 0 the skinned mesh, 1 the base joint at y = -1, 2 the bending joint at y = 0.
-    b.roots = {0, 1};
+    b.sceneNodes = {0, 1};
     GltfBuilder::add(b.nodes, "{\"name\":\"tube\",\"mesh\":" + std::to_string(meshIndex) + ",\"skin\":0}");
     GltfBuilder::add(b.nodes, R"({"name":"base","translation":[0,-1,0],"children":[2]})");
     GltfBuilder::add(b.nodes, R"({"name":"bend","translation":[0,1,0]})");
