@@ -1,7 +1,8 @@
 #include "runtime/operator/StationMetrics.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
-#include <cstdio>
 #include <sstream>
 
 namespace arcomp {
@@ -9,29 +10,6 @@ namespace arcomp {
 namespace {
 
 constexpr std::size_t kKeptErrors = 10;
-
-// JSON string literal; control characters escaped so a device path or an
-// OS message can never break the document.
-std::string quoted(std::string_view text) {
-    std::string out = "\"";
-    for (char c : text) {
-        switch (c) {
-        case '"': out += "\\\""; break;
-        case '\\': out += "\\\\"; break;
-        case '\n': out += "\\n"; break;
-        case '\t': out += "\\t"; break;
-        default:
-            if (static_cast<unsigned char>(c) < 0x20) {
-                char escape[8];
-                std::snprintf(escape, sizeof escape, "\\u%04x", c);
-                out += escape;
-            } else {
-                out += c;
-            }
-        }
-    }
-    return out + "\"";
-}
 
 // Prometheus label values escape backslash, quote and newline.
 std::string labelValue(std::string_view text) {
@@ -101,20 +79,20 @@ void StationMetrics::setConfig(std::string file) {
 std::string StationMetrics::statusJson() const {
     std::lock_guard lock(mutex_);
     const double uptime = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
-    std::ostringstream s;
-    s << "{\"config\":" << quoted(config_) << ",\"uptime_s\":" << uptime << ",\"frames\":" << frames_
-      << ",\"fps\":" << framesInLastSecond() << ",\"last_frame_ms\":" << lastFrameMs_ << ",\"cameras\":[";
-    bool first = true;
-    for (const auto& [name, camera] : cameras_) {
-        s << (first ? "" : ",") << "{\"name\":" << quoted(name) << ",\"state\":" << quoted(sourceStatusName(camera.state.status))
-          << ",\"reason\":" << quoted(camera.state.reason) << ",\"drops\":" << camera.drops
-          << ",\"reconnects\":" << camera.reconnects << '}';
-        first = false;
-    }
-    s << "],\"errors\":" << errors_ << ",\"last_errors\":[";
-    for (std::size_t i = 0; i < lastErrors_.size(); ++i) s << (i ? "," : "") << quoted(lastErrors_[i]);
-    s << "]}";
-    return s.str();
+    nlohmann::ordered_json status = {{"config", config_}, {"uptime_s", uptime}, {"frames", frames_},
+                                     {"fps", framesInLastSecond()}, {"last_frame_ms", lastFrameMs_}};
+    nlohmann::ordered_json& cameras = status["cameras"] = nlohmann::ordered_json::array();
+    for (const auto& [name, camera] : cameras_)
+        cameras.push_back({{"name", name},
+                           {"state", sourceStatusName(camera.state.status)},
+                           {"reason", camera.state.reason},
+                           {"drops", camera.drops},
+                           {"reconnects", camera.reconnects}});
+    status["errors"] = errors_;
+    status["last_errors"] = lastErrors_;
+    // A device name or an OS message that is not UTF-8 must not cost the
+    // operator the whole document: such bytes become U+FFFD.
+    return status.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 std::string StationMetrics::prometheusText() const {

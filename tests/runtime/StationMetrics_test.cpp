@@ -47,4 +47,15 @@ TEST(StationMetrics, statusJsonEscapesMessagesAndKeepsTheLastTenErrors) {
     EXPECT_NE(json.find(R"(quote \" backslash \\ newline \n tab \t bell \u0007)"), std::string::npos) << json;
 }
 
+// A camera's name comes from the config, its reason from the OS: bytes that
+// are not UTF-8 become U+FFFD, and the document stays whole.
+TEST(StationMetrics, statusJsonSurvivesBytesThatAreNotUtf8) {
+    StationMetrics metrics;
+    metrics.setCamera("cam\xff", {SourceStatus::Disconnected, "bad \xc3\x28 byte"}, 0);
+    const std::string json = metrics.statusJson();
+    EXPECT_NE(json.find("\"name\":\"cam\xef\xbf\xbd\""), std::string::npos) << json;
+    EXPECT_NE(json.find("bad \xef\xbf\xbd( byte"), std::string::npos) << json;
+    EXPECT_EQ(json.back(), '}');
+}
+
 } // namespace arcomp

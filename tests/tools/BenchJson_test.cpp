@@ -39,11 +39,18 @@ TEST(BenchJson, stringsWithQuotesBackslashesAndControlCharactersParseBackUnchang
     EXPECT_EQ(back["bench"].as<std::string>(), "load");
 }
 
-TEST(BenchJson, quotingEscapesOnlyWhatJsonRequires) {
-    EXPECT_EQ(BenchJson::quoted("plain /path.avi"), "\"plain /path.avi\"");
-    EXPECT_EQ(BenchJson::quoted("a\"b\\c"), "\"a\\\"b\\\\c\"");
-    EXPECT_EQ(BenchJson::quoted("\n\x1f"), "\"\\u000a\\u001f\"");
-    EXPECT_EQ(BenchJson::quoted("\xc3\xa9"), "\"\xc3\xa9\"");  // UTF-8 as it is
+TEST(BenchJson, stringsEscapeOnlyWhatJsonRequires) {
+    BenchJson j;
+    j.field("a", "plain /path.avi").field("b", "a\"b\\c").field("c", "\n\x1f").field("d", "\xc3\xa9");
+    EXPECT_EQ(j.str(), "{\"a\":\"plain /path.avi\",\"b\":\"a\\\"b\\\\c\",\"c\":\"\\n\\u001f\",\"d\":\"\xc3\xa9\"}");
+}
+
+// A path from the command line need not be UTF-8: its bytes become U+FFFD
+// and the bench still prints its line.
+TEST(BenchJson, bytesThatAreNotUtf8DoNotCostTheLine) {
+    BenchJson j;
+    j.field("path", "clip\xff.avi").field("frames", 3);
+    EXPECT_EQ(j.str(), "{\"path\":\"clip\xef\xbf\xbd.avi\",\"frames\":3}");
 }
 
 TEST(BenchJson, numbersReadBackAsTheSameDoubleAndStayReadable) {
@@ -96,7 +103,7 @@ TEST(BenchJson, nestsObjectsAndArraysAsTheBenchesDo) {
     j.beginArray("empty").end();
     const std::string line = j.str();
     EXPECT_EQ(line, "{\"bench\":\"composite\",\"size\":[768,576],\"median_ms\":{\"capture\":0.5,\"total\":12.25},"
-                    "\"ldi\":[{\"ldis\":1,\"build_s\":0.250},{\"ldis\":7,\"build_s\":1.750}],"
+                    "\"ldi\":[{\"ldis\":1,\"build_s\":0.25},{\"ldis\":7,\"build_s\":1.75}],"
                     "\"strips\":[\"a.png\",\"b \\\"c\\\".png\"],\"empty\":[]}");
     const YAML::Node back = YAML::Load(line);
     EXPECT_EQ(back["size"][1].as<int>(), 576);

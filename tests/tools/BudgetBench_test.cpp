@@ -51,7 +51,7 @@ TEST(BudgetBench, tinyFlightWritesJsonWithTheIssuesFieldsAndCsvAndPlots) {
     ASSERT_EQ(json.front(), '{') << json;
     ASSERT_EQ(json.back(), '}') << json;
     EXPECT_NE(json.find("\"bench\":\"budget\""), std::string::npos) << json;
-    EXPECT_NE(json.find("\"target_ms\":5,"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"target_ms\":5.0,"), std::string::npos) << json;
     const std::string unmanaged = object(json, "unmanaged"), managed = object(json, "managed");
     ASSERT_FALSE(unmanaged.empty()) << json;
     ASSERT_FALSE(managed.empty()) << json;

@@ -7,26 +7,7 @@
 
 namespace arcomp {
 
-BenchJson::BenchJson() { open('{'); }
-
-std::string BenchJson::quoted(std::string_view text) {
-    static constexpr char kHex[] = "0123456789abcdef";
-    std::string out = "\"";
-    for (const char c : text) {
-        const auto byte = static_cast<unsigned char>(c);
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += c;
-        } else if (byte < 0x20) {
-            out += "\\u00";
-            out += kHex[byte >> 4];
-            out += kHex[byte & 0xf];
-        } else {
-            out += c;  // UTF-8 passes through as it is
-        }
-    }
-    return out + '"';
-}
+BenchJson::BenchJson() { open_.push_back(&root_); }
 
 namespace {
 
@@ -58,59 +39,75 @@ std::string BenchJson::number(Fixed x) {
     return std::string(digits, last);
 }
 
-BenchJson& BenchJson::raw(std::string_view json) {
-    text_ += json;
+namespace {
+
+// The double a reader gets from number()'s text: for a float, the nearest
+// to its own shortest digits; for a Fixed, the nearest to the rounded value.
+nlohmann::ordered_json asJson(const std::string& text) {
+    if (text == "null") return nullptr;
+    double x = 0.0;
+    std::from_chars(text.data(), text.data() + text.size(), x);
+    return x;
+}
+
+} // namespace
+
+BenchJson& BenchJson::put(std::string_view key, Json value) {
+    if (open_.back()->is_array()) throw std::logic_error("BenchJson: a key outside an object");
+    (*open_.back())[std::string(key)] = std::move(value);
     return *this;
 }
 
-BenchJson& BenchJson::keyed(std::string_view key) {
-    if (open_.empty() || open_.back().bracket != '{') throw std::logic_error("BenchJson: a key outside an object");
-    if (!open_.back().empty) text_ += ',';
-    open_.back().empty = false;
-    return raw(quoted(key)).raw(":");
-}
-
-BenchJson& BenchJson::nextElement() {
-    if (open_.empty() || open_.back().bracket != '[') throw std::logic_error("BenchJson: an element outside an array");
-    if (!open_.back().empty) text_ += ',';
-    open_.back().empty = false;
+BenchJson& BenchJson::push(Json value) {
+    if (!open_.back()->is_array()) throw std::logic_error("BenchJson: an element outside an array");
+    open_.back()->push_back(std::move(value));
     return *this;
 }
 
-BenchJson& BenchJson::open(char bracket) {
-    text_ += bracket;
-    open_.push_back({bracket});
+BenchJson& BenchJson::openIn(Json& container) {
+    open_.push_back(&container);
     return *this;
 }
 
-BenchJson& BenchJson::field(std::string_view key, std::string_view text) { return keyed(key).raw(quoted(text)); }
-BenchJson& BenchJson::field(std::string_view key, bool flag) { return keyed(key).raw(flag ? "true" : "false"); }
-BenchJson& BenchJson::field(std::string_view key, double x) { return keyed(key).raw(number(x)); }
-BenchJson& BenchJson::field(std::string_view key, float x) { return keyed(key).raw(number(x)); }
-BenchJson& BenchJson::field(std::string_view key, Fixed x) { return keyed(key).raw(number(x)); }
-BenchJson& BenchJson::null(std::string_view key) { return keyed(key).raw("null"); }
-BenchJson& BenchJson::beginObject(std::string_view key) { return keyed(key).open('{'); }
-BenchJson& BenchJson::beginArray(std::string_view key) { return keyed(key).open('['); }
+BenchJson& BenchJson::field(std::string_view key, std::string_view text) { return put(key, std::string(text)); }
+BenchJson& BenchJson::field(std::string_view key, bool flag) { return put(key, flag); }
+BenchJson& BenchJson::field(std::string_view key, double x) { return put(key, asJson(number(x))); }
+BenchJson& BenchJson::field(std::string_view key, float x) { return put(key, asJson(number(x))); }
+BenchJson& BenchJson::field(std::string_view key, Fixed x) { return put(key, asJson(number(x))); }
+BenchJson& BenchJson::null(std::string_view key) { return put(key, nullptr); }
+BenchJson& BenchJson::beginObject(std::string_view key) {
+    put(key, Json::object());
+    return openIn((*open_.back())[std::string(key)]);
+}
+BenchJson& BenchJson::beginArray(std::string_view key) {
+    put(key, Json::array());
+    return openIn((*open_.back())[std::string(key)]);
+}
 
-BenchJson& BenchJson::value(std::string_view text) { return nextElement().raw(quoted(text)); }
-BenchJson& BenchJson::value(bool flag) { return nextElement().raw(flag ? "true" : "false"); }
-BenchJson& BenchJson::value(double x) { return nextElement().raw(number(x)); }
-BenchJson& BenchJson::value(float x) { return nextElement().raw(number(x)); }
-BenchJson& BenchJson::value(Fixed x) { return nextElement().raw(number(x)); }
-BenchJson& BenchJson::beginObject() { return nextElement().open('{'); }
-BenchJson& BenchJson::beginArray() { return nextElement().open('['); }
+BenchJson& BenchJson::value(std::string_view text) { return push(std::string(text)); }
+BenchJson& BenchJson::value(bool flag) { return push(flag); }
+BenchJson& BenchJson::value(double x) { return push(asJson(number(x))); }
+BenchJson& BenchJson::value(float x) { return push(asJson(number(x))); }
+BenchJson& BenchJson::value(Fixed x) { return push(asJson(number(x))); }
+BenchJson& BenchJson::beginObject() {
+    push(Json::object());
+    return openIn(open_.back()->back());
+}
+BenchJson& BenchJson::beginArray() {
+    push(Json::array());
+    return openIn(open_.back()->back());
+}
 
 BenchJson& BenchJson::end() {
     // The outer object closes in str(), so that str() can be asked twice.
     if (open_.size() < 2) throw std::logic_error("BenchJson: end() with nothing open");
-    text_ += open_.back().bracket == '{' ? '}' : ']';
     open_.pop_back();
     return *this;
 }
 
 std::string BenchJson::str() const {
     if (open_.size() != 1) throw std::logic_error("BenchJson: str() with an object or array still open");
-    return text_ + '}';
+    return root_.dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
 } // namespace arcomp

@@ -1,12 +1,13 @@
 #pragma once
 // The one JSON object a benchmark prints as its last line, written field by
-// field: strings escaped, numbers that read back as the same value, NaN
-// and infinities as null (an empty run has no median). Nested objects and
+// field through nlohmann-json: strings escaped (bytes that are not UTF-8
+// become U+FFFD), numbers that read back as the same value, NaN and
+// infinities as null (an empty run has no median). Nested objects and
 // arrays open with begin...() and close with end().
 //
 //   BenchJson j;
 //   j.field("bench", "load").field("model", path).field("repeats", 5);
-//   j.field("load_ms", Fixed{medianMs, 3});            // as printf("%.3f")
+//   j.field("load_ms", Fixed{medianMs, 3});            // rounded to 3 decimals
 //   j.beginArray("size").value(768).value(576).end();
 //   j.beginObject("targets").field("fps_60", fps >= 60.0).end();
 //   std::printf("%s\n", j.str().c_str());
@@ -14,7 +15,8 @@
 // Misuse (a key inside an array, end() with nothing open, str() with
 // something still open) throws std::logic_error: a bench bug, not input.
 
-#include <charconv>
+#include <nlohmann/json.hpp>
+
 #include <concepts>
 #include <string>
 #include <string_view>
@@ -22,8 +24,10 @@
 
 namespace arcomp {
 
-// A number written with a fixed count of decimals, where a bench reports a
-// rounded figure on purpose (milliseconds to the microsecond).
+// A number rounded to a count of decimals, where a bench reports a rounded
+// figure on purpose (milliseconds to the microsecond). In JSON it is the
+// double nearest the rounded decimal (2.000 reads 2.0); number() writes
+// the decimals out, for captions and command lines.
 struct Fixed {
     double value;
     int decimals;
@@ -32,6 +36,9 @@ struct Fixed {
 class BenchJson {
 public:
     BenchJson();  // the outer object, open
+    // It points into itself: neither copied nor moved.
+    BenchJson(const BenchJson&) = delete;
+    BenchJson& operator=(const BenchJson&) = delete;
 
     // In an object: "key": value.
     BenchJson& field(std::string_view key, std::string_view text);
@@ -44,7 +51,7 @@ public:
     template <std::integral Int>
         requires(!std::same_as<Int, bool>)
     BenchJson& field(std::string_view key, Int n) {
-        return keyed(key).integer(n);
+        return put(key, n);
     }
     BenchJson& null(std::string_view key);
     BenchJson& beginObject(std::string_view key);
@@ -61,7 +68,7 @@ public:
     template <std::integral Int>
         requires(!std::same_as<Int, bool>)
     BenchJson& value(Int n) {
-        return nextElement().integer(n);
+        return push(n);
     }
     BenchJson& beginObject();
     BenchJson& beginArray();
@@ -71,33 +78,22 @@ public:
     // The whole object on one line; everything opened since must be closed.
     std::string str() const;
 
-    // `text` as a JSON string literal, quotes included.
-    static std::string quoted(std::string_view text);
-    // `x` as JSON: the shortest text that reads back as the same double
-    // (no exponent between 1e-5 and 1e16), null when not finite.
+    // `x` as text: the shortest that reads back as the same double (no
+    // exponent between 1e-5 and 1e16), "null" when not finite. For
+    // captions and command lines; the JSON line formats its own numbers.
     static std::string number(double x);
     static std::string number(float x);
     static std::string number(Fixed x);
 
 private:
-    struct Open {
-        char bracket;  // '{' or '['
-        bool empty = true;
-    };
+    using Json = nlohmann::ordered_json;
 
-    BenchJson& keyed(std::string_view key);  // the separator, the key and its colon
-    BenchJson& nextElement();               // the separator before an array element
-    BenchJson& open(char bracket);
-    BenchJson& raw(std::string_view json);
-    template <std::integral Int>
-    BenchJson& integer(Int n) {
-        char digits[24];
-        const char* last = std::to_chars(digits, digits + sizeof digits, n).ptr;
-        return raw(std::string_view(digits, static_cast<std::size_t>(last - digits)));
-    }
+    BenchJson& put(std::string_view key, Json value);  // into the innermost open object
+    BenchJson& push(Json value);                       // onto the innermost open array
+    BenchJson& openIn(Json& container);                // container: the value just added
 
-    std::string text_;
-    std::vector<Open> open_;
+    Json root_ = Json::object();
+    std::vector<Json*> open_;  // the innermost last; a child is open only while its parent takes nothing else
 };
 
 } // namespace arcomp
