@@ -83,7 +83,8 @@ namespace {
 // Hermite spline between keys k and k+1 with v_k, its out-tangent b_k, the
 // next key's in-tangent a_{k+1} and v_{k+1}; tangents are per second, hence
 // scaled by the key interval td.
-glm::vec4 hermite(const glm::vec4& vk, const glm::vec4& bk, const glm::vec4& ak1, const glm::vec4& vk1, float td, float t) {
+glm::vec4 hermite(const glm::vec4& vk, const glm::vec4& bk, const glm::vec4& ak1, const glm::vec4& vk1, float td,
+                  float t) {
     const float t2 = t * t, t3 = t2 * t;
     return (2.0f * t3 - 3.0f * t2 + 1.0f) * vk + td * (t3 - 2.0f * t2 + t) * bk + (-2.0f * t3 + 3.0f * t2) * vk1 +
            td * (t3 - t2) * ak1;
@@ -94,7 +95,7 @@ glm::vec4 keyValue(const AnimationChannel& c, std::size_t k) {
     return c.interpolation == Interpolation::CubicSpline ? c.values[k * 3 + 1] : c.values[k];
 }
 
-} // namespace
+}  // namespace
 
 glm::vec4 sample(const AnimationChannel& c, float t) {
     const std::size_t keys = c.times.size();
@@ -105,7 +106,8 @@ glm::vec4 sample(const AnimationChannel& c, float t) {
     // glTF 2.0 specification, Appendix C: within the key interval
     // [times[k], times[k+1]) that holds t, STEP keeps key k's value, LINEAR
     // lerps (slerp below for rotations), CUBICSPLINE is hermite() below.
-    const std::size_t k = static_cast<std::size_t>(std::upper_bound(c.times.begin(), c.times.end(), t) - c.times.begin()) - 1;
+    const std::size_t k =
+        static_cast<std::size_t>(std::upper_bound(c.times.begin(), c.times.end(), t) - c.times.begin()) - 1;
     const float td = c.times[k + 1] - c.times[k];
     const float u = (t - c.times[k]) / td;
     switch (c.interpolation) {
@@ -113,7 +115,8 @@ glm::vec4 sample(const AnimationChannel& c, float t) {
     case Interpolation::Linear:
         return rotation ? slerp(c.values[k], c.values[k + 1], u) : glm::mix(c.values[k], c.values[k + 1], u);
     case Interpolation::CubicSpline: {
-        const glm::vec4 v = hermite(c.values[k * 3 + 1], c.values[k * 3 + 2], c.values[(k + 1) * 3], c.values[(k + 1) * 3 + 1], td, u);
+        const glm::vec4 v =
+            hermite(c.values[k * 3 + 1], c.values[k * 3 + 2], c.values[(k + 1) * 3], c.values[(k + 1) * 3 + 1], td, u);
         if (!rotation) return v;
         // Opposite tangents can cancel to nothing; hold the key then.
         const float length = glm::length(v);
@@ -131,4 +134,4 @@ void applySample(Trs& pose, AnimationPath path, const glm::vec4& v) {
     }
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -74,4 +74,4 @@ glm::vec4 slerp(glm::vec4 a, glm::vec4 b, float t);
 // The pose with one channel's sampled value put in.
 void applySample(Trs& pose, AnimationPath path, const glm::vec4& value);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -34,4 +34,4 @@ void AnimationPlayer::apply(Scene& scene, double seconds) {
     for (std::size_t i = 0; i < pose_.size(); ++i) scene.setLocal(animation_.nodes[i].node, pose_[i].matrix());
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -17,8 +17,8 @@
 namespace arcomp {
 
 struct PlaybackOptions {
-    bool loop = true;     // wrap at the clip's end; false holds the last pose
-    double speed = 1.0;   // clip seconds per clock second; must be positive
+    bool loop = true;    // wrap at the clip's end; false holds the last pose
+    double speed = 1.0;  // clip seconds per clock second; must be positive
 };
 
 class AnimationPlayer {
@@ -39,4 +39,4 @@ private:
     std::vector<Trs> pose_;  // scratch, one per animated node
 };
 
-} // namespace arcomp
+}  // namespace arcomp

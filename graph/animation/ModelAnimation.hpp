@@ -25,4 +25,4 @@ struct ModelAnimation {
     std::vector<AnimatedNode> nodes;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -32,4 +32,4 @@ struct Skin {
     std::vector<std::uint32_t> users;            // the nodes whose mesh it would deform
 };
 
-} // namespace arcomp
+}  // namespace arcomp

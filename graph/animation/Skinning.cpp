@@ -46,8 +46,10 @@ void fitPosedBounds(Scene& scene, std::span<const NodeId> meshes, std::span<cons
         std::vector<float> times;
         const float duration = animation.clip.duration();
         const auto steps = static_cast<std::size_t>(std::ceil(duration * samplesPerSecond));
-        for (std::size_t s = 0; s <= steps; ++s) times.push_back(std::min(duration, static_cast<float>(s) / samplesPerSecond));
-        for (const AnimationChannel& c : animation.clip.channels) times.insert(times.end(), c.times.begin(), c.times.end());
+        for (std::size_t s = 0; s <= steps; ++s)
+            times.push_back(std::min(duration, static_cast<float>(s) / samplesPerSecond));
+        for (const AnimationChannel& c : animation.clip.channels)
+            times.insert(times.end(), c.times.begin(), c.times.end());
         std::sort(times.begin(), times.end());
         times.erase(std::unique(times.begin(), times.end()), times.end());
         AnimationPlayer player(animation, {.loop = false});
@@ -61,4 +63,4 @@ void fitPosedBounds(Scene& scene, std::span<const NodeId> meshes, std::span<cons
     scene.update();
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -35,4 +35,4 @@ std::vector<glm::vec3> skinPositions(const Geometry& g, std::span<const glm::mat
 void fitPosedBounds(Scene& scene, std::span<const NodeId> meshes, std::span<const ModelAnimation> animations,
                     float samplesPerSecond = 30.0f);
 
-} // namespace arcomp
+}  // namespace arcomp

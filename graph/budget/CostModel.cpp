@@ -22,10 +22,11 @@ constexpr double kMinGain = 0.25, kMaxGain = 4.0;
 // Frames whose calibrated items cost less than this draw too little to
 // tell anything about the gain (an empty view is all overhead).
 constexpr double kMinItemsMs = 0.05;
-} // namespace
+}  // namespace
 
 CostModel::CostModel(std::size_t levels)
-    : levels_(std::max<std::size_t>(levels, 1)), table_(levels_ * kShadingCount), fit_(1, kDefaultForgetting, kGainVariance, kMaxVariance) {
+    : levels_(std::max<std::size_t>(levels, 1)), table_(levels_ * kShadingCount),
+      fit_(1, kDefaultForgetting, kGainVariance, kMaxVariance) {
     resetFit();
 }
 
@@ -80,10 +81,8 @@ void CostModel::enableRefit(bool on, double forgetting) {
     resetFit();
 }
 
-void CostModel::resetFit() {
-    fit_.reset(std::array{1.0}, std::array{kGainVariance});
-}
+void CostModel::resetFit() { fit_.reset(std::array{1.0}, std::array{kGainVariance}); }
 
 double CostModel::gain() const { return refit_ ? std::clamp(fit_.parameters()[0], kMinGain, kMaxGain) : 1.0; }
 
-} // namespace arcomp
+}  // namespace arcomp

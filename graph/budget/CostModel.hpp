@@ -24,10 +24,10 @@
 // the prediction stops responding to what is drawn). A gain alone is
 // identified by every frame that draws anything.
 
+#include "graph/budget/RecursiveLeastSquares.hpp"
 #include "graph/core/DrawList.hpp"
 #include "graph/core/Scene.hpp"
 #include "graph/core/View.hpp"
-#include "graph/budget/RecursiveLeastSquares.hpp"
 
 #include <vector>
 
@@ -108,4 +108,4 @@ private:
     RecursiveLeastSquares fit_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -12,7 +12,7 @@ constexpr std::size_t kFixedGain = kShadingCount;  // θ's last entry
 // they are: a few frames move them, a frame's noise does not.
 constexpr double kGainVariance = 1.0;
 
-} // namespace
+}  // namespace
 
 CostTableFit::CostTableFit(const CostModel& singleObject)
     : singleObject_(singleObject), fit_(kShadingCount + 1, 1.0, kGainVariance, 1e12), x_(kShadingCount + 1) {
@@ -29,7 +29,8 @@ void CostTableFit::addFrame(std::span<const ChargedItem> items, double itemsMs) 
     }
     // A frame the timer could not measure, or pixels that are not a number,
     // would leave every gain NaN: the frame says nothing, as in observe().
-    if (!std::isfinite(itemsMs) || !std::all_of(x_.begin(), x_.end(), [](double v) { return std::isfinite(v); })) return;
+    if (!std::isfinite(itemsMs) || !std::all_of(x_.begin(), x_.end(), [](double v) { return std::isfinite(v); }))
+        return;
     fit_.add(x_, itemsMs);
 }
 
@@ -40,10 +41,11 @@ CostModel CostTableFit::table() const {
         for (int s = 0; s < kShadingCount; ++s) {
             const auto shading = static_cast<Shading>(s);
             const CostCoefficients& c = singleObject_.at(level, shading);
-            model.set(level, shading, {std::max(0.0, gains()[static_cast<std::size_t>(s)]) * c.msPerPixel, fixed * c.ms});
+            model.set(level, shading,
+                      {std::max(0.0, gains()[static_cast<std::size_t>(s)]) * c.msPerPixel, fixed * c.ms});
         }
     model.resetFit();
     return model;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -64,4 +64,4 @@ private:
     std::vector<double> x_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

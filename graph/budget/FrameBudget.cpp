@@ -144,4 +144,4 @@ void FrameBudget::observe(double measuredMs) {
     model_.observe(lastItemsMs_, measuredMs);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -32,9 +32,9 @@
 // - O(n log n) a frame: one sort; every step is O(1).
 
 #include "graph/budget/CostModel.hpp"
+#include "graph/core/View.hpp"
 #include "graph/lod/GazeAcuity.hpp"
 #include "graph/lod/LodAlternatives.hpp"
-#include "graph/core/View.hpp"
 
 #include <vector>
 
@@ -62,7 +62,7 @@ struct BudgetStats {
     double measuredPredictedMs = 0.0;  // what had been predicted for that frame
     double quality = 1.0;              // screen-area-weighted, 1: all at the finest allowed
     std::size_t stepsDown = 0, stepsUp = 0;
-    std::size_t itemsReduced = 0;      // items below the finest allowed
+    std::size_t itemsReduced = 0;  // items below the finest allowed
 };
 
 class FrameBudget {
@@ -88,9 +88,9 @@ private:
         std::uint32_t item;
         NodeId object;
         float importance;
-        std::uint8_t step, maxStep;   // steps below the finest allowed
+        std::uint8_t step, maxStep;  // steps below the finest allowed
         std::uint8_t topLevel, shadingSpan, topShading;
-        double cost;                  // calibrated ms at `step`
+        double cost;  // calibrated ms at `step`
     };
     std::uint8_t levelAt(const Work& w, int step) const;
     Shading shadingAt(const Work& w, int step) const;
@@ -114,4 +114,4 @@ private:
     double lastPredictedMs_ = 0.0;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

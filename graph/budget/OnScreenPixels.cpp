@@ -64,7 +64,8 @@ float boxRectanglePixels(const Box& box, const glm::mat4& model, const View& vie
         }
     }
     if (low.x > high.x) return 0.0f;
-    const glm::vec2 extent = (glm::clamp(high, -1.0f, 1.0f) - glm::clamp(low, -1.0f, 1.0f)) * 0.5f * glm::vec2(view.viewport);
+    const glm::vec2 extent =
+        (glm::clamp(high, -1.0f, 1.0f) - glm::clamp(low, -1.0f, 1.0f)) * 0.5f * glm::vec2(view.viewport);
     return extent.x * extent.y;
 }
 
@@ -82,8 +83,9 @@ float onScreenPixels(const DrawItem& item, const Scene& scene, const View& view)
     // more than their error. Proxies bring their own matrix, and a skinned
     // mesh's poses may leave its bind-pose box, so both keep the disc.
     const float viewportPixels = static_cast<float>(view.viewport.x) * static_cast<float>(view.viewport.y);
-    if (item.model != nullptr || item.part.skin != kNoSkin || view.projectedArea(bound) <= viewportPixels / 64.0f) return disc;
+    if (item.model != nullptr || item.part.skin != kNoSkin || view.projectedArea(bound) <= viewportPixels / 64.0f)
+        return disc;
     return std::min(disc, boxRectanglePixels(scene.geometry(item.part.geometry).box, scene.world(item.node), view));
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -25,4 +25,4 @@ float boxRectanglePixels(const Box& box, const glm::mat4& model, const View& vie
 
 float onScreenPixels(const DrawItem& item, const Scene& scene, const View& view);
 
-} // namespace arcomp
+}  // namespace arcomp

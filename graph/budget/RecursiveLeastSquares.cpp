@@ -5,9 +5,11 @@
 
 namespace arcomp {
 
-RecursiveLeastSquares::RecursiveLeastSquares(std::size_t size, double forgetting, double initialVariance, double maxTrace)
+RecursiveLeastSquares::RecursiveLeastSquares(std::size_t size, double forgetting, double initialVariance,
+                                             double maxTrace)
     : n_(size), lambda_(forgetting), maxTrace_(maxTrace), theta_(size, 0.0), p_(size * size, 0.0), px_(size, 0.0) {
-    ARCOMP_CHECK(size > 0 && forgetting > 0.0 && forgetting <= 1.0, "a fit needs parameters and a forgetting factor in (0, 1]");
+    ARCOMP_CHECK(size > 0 && forgetting > 0.0 && forgetting <= 1.0,
+                 "a fit needs parameters and a forgetting factor in (0, 1]");
     for (std::size_t i = 0; i < n_; ++i) p_[i * n_ + i] = initialVariance;
 }
 
@@ -50,4 +52,4 @@ double RecursiveLeastSquares::predict(std::span<const double> x) const {
     return y;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

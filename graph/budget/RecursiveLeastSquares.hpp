@@ -44,4 +44,4 @@ private:
     std::size_t samples_ = 0;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -43,7 +43,8 @@ glm::dvec2 CalibratedCamera::project(const glm::dvec3& floorPoint) const {
 }
 
 std::optional<glm::dvec3> CalibratedCamera::floorPointAt(const glm::dvec2& pixel) const {
-    const glm::dvec3 inCamera((pixel.x - intrinsics.cx) / intrinsics.fx, (pixel.y - intrinsics.cy) / intrinsics.fy, 1.0);
+    const glm::dvec3 inCamera((pixel.x - intrinsics.cx) / intrinsics.fx, (pixel.y - intrinsics.cy) / intrinsics.fy,
+                              1.0);
     const glm::dvec3 direction = glm::transpose(rotation) * inCamera;
     const glm::dvec3 origin = position();
     // Only a ray going down from above the floor meets it in front of the lens.
@@ -74,7 +75,8 @@ glm::mat4 projectionFromIntrinsics(const CameraIntrinsics& k, float near, float 
 View CalibratedCamera::view(glm::ivec2 viewport, float near, float far) const {
     const CameraIntrinsics k = intrinsics.scaledTo(viewport);
     // OpenCV's camera looks down +z with y down; GL's looks down -z with y up.
-    const glm::dmat4 flip(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, -1, 0, 0), glm::dvec4(0, 0, -1, 0), glm::dvec4(0, 0, 0, 1));
+    const glm::dmat4 flip(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, -1, 0, 0), glm::dvec4(0, 0, -1, 0),
+                          glm::dvec4(0, 0, 0, 1));
     glm::dmat4 floorToCamera(rotation);
     floorToCamera[3] = glm::dvec4(translation, 1.0);
     View v;
@@ -89,4 +91,4 @@ View CalibratedCamera::view(glm::ivec2 viewport, float near, float far) const {
     return v;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

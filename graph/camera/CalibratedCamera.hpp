@@ -38,9 +38,9 @@ struct CalibratedCamera {
     glm::dmat3 rotation{1.0};
     glm::dvec3 translation{0.0};
 
-    glm::dvec3 position() const;         // the lens centre in the floor frame
-    double heightMetres() const;         // above the floor
-    double tiltDegrees() const;          // of the optical axis below the horizon
+    glm::dvec3 position() const;  // the lens centre in the floor frame
+    double heightMetres() const;  // above the floor
+    double tiltDegrees() const;   // of the optical axis below the horizon
     // Pixel where a floor-frame point appears, without distortion; z <= 0
     // (behind the lens) gives NaN.
     glm::dvec2 project(const glm::dvec3& floorPoint) const;
@@ -60,4 +60,4 @@ struct CalibratedCamera {
 // intrinsics.imageSize, looking down -Z with +Y up in eye space.
 glm::mat4 projectionFromIntrinsics(const CameraIntrinsics& intrinsics, float near, float far);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -27,8 +27,8 @@ class BadInput : public std::runtime_error {
 public:
     // The base is built first, so the parts are read before they move.
     BadInput(std::string source_, std::string where_, std::string reason_)
-        : std::runtime_error(formatted(source_, where_, reason_)), source(std::move(source_)),
-          where(std::move(where_)), reason(std::move(reason_)) {}
+        : std::runtime_error(formatted(source_, where_, reason_)), source(std::move(source_)), where(std::move(where_)),
+          reason(std::move(reason_)) {}
 
     std::string source;  // the file, device or stream; may be empty (a command-line value)
     std::string where;   // a JSON pointer, "line 12", "frame 287 of 795"; empty for the whole source
@@ -48,4 +48,4 @@ private:
     }
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -42,8 +42,7 @@ Box transformed(const Box& b, const glm::mat4& m) {
     if (b.empty()) return b;
     Box out;
     for (int i = 0; i < 8; ++i) {
-        const glm::vec3 corner{(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
-                               (i & 4) ? b.max.z : b.min.z};
+        const glm::vec3 corner{(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z};
         out.expand(glm::vec3(m * glm::vec4(corner, 1.0f)));
     }
     return out;
@@ -68,4 +67,4 @@ Sphere merged(const Sphere& a, const Sphere& b) {
     return {center, radius};
 }
 
-} // namespace arcomp
+}  // namespace arcomp

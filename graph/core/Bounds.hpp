@@ -26,9 +26,20 @@ struct Box {
     bool empty() const { return min.x > max.x; }
     glm::vec3 center() const { return (min + max) * 0.5f; }
     glm::vec3 size() const { return empty() ? glm::vec3(0.0f) : max - min; }
-    float volume() const { const glm::vec3 s = size(); return s.x * s.y * s.z; }
-    void expand(const glm::vec3& p) { min = glm::min(min, p); max = glm::max(max, p); }
-    void expand(const Box& b) { if (!b.empty()) { expand(b.min); expand(b.max); } }
+    float volume() const {
+        const glm::vec3 s = size();
+        return s.x * s.y * s.z;
+    }
+    void expand(const glm::vec3& p) {
+        min = glm::min(min, p);
+        max = glm::max(max, p);
+    }
+    void expand(const Box& b) {
+        if (!b.empty()) {
+            expand(b.min);
+            expand(b.max);
+        }
+    }
 };
 
 Box boxAround(std::span<const glm::vec3> points);
@@ -41,4 +52,4 @@ Box transformed(const Box& b, const glm::mat4& m);
 Sphere merged(const Sphere& a, const Sphere& b);
 bool contains(const Sphere& outer, const Sphere& inner, float slack = 1e-4f);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -17,10 +17,10 @@ namespace arcomp::detail {
     std::abort();
 }
 
-} // namespace arcomp::detail
+}  // namespace arcomp::detail
 
-#define ARCOMP_CHECK(condition, why)                                                        \
-    do {                                                                                    \
-        if (!(condition)) [[unlikely]]                                                      \
-            ::arcomp::detail::checkFailed(__FILE__, __LINE__, #condition, why);             \
+#define ARCOMP_CHECK(condition, why)                                                                                   \
+    do {                                                                                                               \
+        if (!(condition)) [[unlikely]]                                                                                 \
+            ::arcomp::detail::checkFailed(__FILE__, __LINE__, #condition, why);                                        \
     } while (false)

@@ -18,7 +18,8 @@ inline float projectedDiscArea(float radius, float distanceSquared, float pixelS
     if (radius < 0.0f) return 0.0f;
     const float radiusSquared = radius * radius;
     if (distanceSquared <= radiusSquared) return viewportPixels;
-    return std::min(viewportPixels, std::numbers::pi_v<float> * pixelScale * pixelScale * radiusSquared / distanceSquared);
+    return std::min(viewportPixels,
+                    std::numbers::pi_v<float> * pixelScale * pixelScale * radiusSquared / distanceSquared);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -17,11 +17,11 @@
 namespace arcomp {
 
 struct DrawItem {
-    NodeId node;           // world matrix: scene.world(node)
+    NodeId node;  // world matrix: scene.world(node)
     MeshPart part;
-    float viewDistance;    // eye to bounding-sphere centre
-    float screenArea;      // projected pixels of the bounding sphere
-    std::uint8_t level;    // LOD level the part came from, 0 = finest
+    float viewDistance;  // eye to bounding-sphere centre
+    float screenArea;    // projected pixels of the bounding sphere
+    std::uint8_t level;  // LOD level the part came from, 0 = finest
     Shading shading;
     // Opacity during an LOD cross-fade (both levels are listed, weights
     // summing to 1); 1 otherwise.
@@ -65,4 +65,4 @@ struct DrawList {
     }
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -23,4 +23,4 @@ inline double processCpuMs() {
     return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -26,7 +26,7 @@ namespace {
 typedef float Float8 __attribute__((vector_size(32)));
 typedef std::int32_t Lanes8 __attribute__((vector_size(32)));
 
-} // namespace
+}  // namespace
 
 // On x86-64 the loader picks an AVX2 build of this function where the CPU
 // has it (half the instructions per sphere) and the SSE2 one elsewhere.
@@ -34,8 +34,8 @@ typedef std::int32_t Lanes8 __attribute__((vector_size(32)));
 #if defined(__x86_64__) && defined(__GNUC__)  // Clang defines it too
 __attribute__((target_clones("avx2", "default")))
 #endif
-RunContainment Frustum::classifyRun(const float* x, const float* y, const float* z, const float* radius,
-                                    std::uint32_t count) const {
+RunContainment
+Frustum::classifyRun(const float* x, const float* y, const float* z, const float* radius, std::uint32_t count) const {
     ARCOMP_CHECK(count <= kMaxRun, "a run of at most kMaxRun spheres");
     RunContainment result;
     for (std::uint32_t first = 0; first < count; first += 8) {
@@ -81,4 +81,4 @@ RunContainment Frustum::classifyRun(const float* x, const float* y, const float*
     return result;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -47,4 +47,4 @@ struct Frustum {
                                std::uint32_t count) const;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -40,7 +40,7 @@ float cornerAngle(const glm::vec3& from, const glm::vec3& to1, const glm::vec3& 
     return std::acos(std::clamp(glm::dot(a, b) / (la * lb), -1.0f, 1.0f));
 }
 
-} // namespace
+}  // namespace
 
 std::vector<glm::vec4> computeTangents(const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& normals,
                                        const std::vector<glm::vec2>& texcoords,
@@ -144,4 +144,4 @@ Geometry makeBox(const glm::vec3& size) {
     return g;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

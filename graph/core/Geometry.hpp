@@ -38,7 +38,9 @@ struct Geometry {
     bool tangentsGenerated = false;
 
     std::size_t triangleCount() const { return indices.size() / 3; }
-    bool hasSkinInfluences() const { return !positions.empty() && joints.size() == positions.size() && weights.size() == positions.size(); }
+    bool hasSkinInfluences() const {
+        return !positions.empty() && joints.size() == positions.size() && weights.size() == positions.size();
+    }
     // Computes area-weighted vertex normals when none were given and the
     // bounds; call once after filling the arrays.
     void finalize();
@@ -64,4 +66,4 @@ Geometry makeUvSphere(float radius, int slices, int stacks);
 // An axis-aligned box centred on the origin.
 Geometry makeBox(const glm::vec3& size);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -21,4 +21,4 @@ std::string joinText(const Parts&... parts) {
     return out.str();
 }
 
-} // namespace arcomp
+}  // namespace arcomp

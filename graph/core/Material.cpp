@@ -16,4 +16,4 @@ glm::mat3 TextureTransform::matrix() const {
     return t * r * sc;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

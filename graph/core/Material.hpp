@@ -67,7 +67,7 @@ struct Material {
     float occlusionStrength = 1.0f;
     glm::vec3 emissive{0.0f};
     float emissiveStrength = 1.0f;  // KHR_materials_emissive_strength
-    TextureRef emissiveTexture{};     // sRGB
+    TextureRef emissiveTexture{};   // sRGB
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
     bool doubleSided = false;
@@ -91,4 +91,4 @@ struct Image {
     std::vector<std::uint8_t> rgba;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

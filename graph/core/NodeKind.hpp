@@ -12,4 +12,4 @@ inline constexpr NodeId kNoNode = ~NodeId{0};
 
 enum class NodeKind : std::uint8_t { Group, Transform, Mesh, Lod, Grouping, SilhouetteRegion, PointCloud };
 
-} // namespace arcomp
+}  // namespace arcomp

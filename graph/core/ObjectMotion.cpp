@@ -21,7 +21,7 @@ double travelled(const ObjectMotion& m, double t, double& direction) {
     return s;
 }
 
-} // namespace
+}  // namespace
 
 glm::vec3 motionOffset(const ObjectMotion& m, double t) {
     const float speed = glm::length(m.velocity);
@@ -36,4 +36,4 @@ glm::vec3 motionVelocity(const ObjectMotion& m, double t) {
     return m.velocity * static_cast<float>(direction);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -11,10 +11,10 @@
 namespace arcomp {
 
 struct ObjectMotion {
-    NodeId node = kNoNode;      // the object's placing transform
-    glm::mat4 rest{1.0f};       // its local matrix at time 0
-    glm::vec3 velocity{0.0f};   // scene units per second
-    float range = 0.0f;         // 0: moves on for ever
+    NodeId node = kNoNode;     // the object's placing transform
+    glm::mat4 rest{1.0f};      // its local matrix at time 0
+    glm::vec3 velocity{0.0f};  // scene units per second
+    float range = 0.0f;        // 0: moves on for ever
     // When the object belongs to a grouping node: that node and the
     // object's index among its objects, so only its branch is rebuilt.
     NodeId groupingNode = kNoNode;
@@ -24,4 +24,4 @@ struct ObjectMotion {
 glm::vec3 motionOffset(const ObjectMotion& motion, double timeSeconds);
 glm::vec3 motionVelocity(const ObjectMotion& motion, double timeSeconds);
 
-} // namespace arcomp
+}  // namespace arcomp

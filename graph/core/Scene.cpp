@@ -10,7 +10,7 @@ namespace {
 // Kinds the select pass does nothing at but step down: with one child and
 // no bound of their own, they give their slot to the child.
 bool passesThroughKind(NodeKind k) { return k == NodeKind::Transform || k == NodeKind::Group; }
-} // namespace
+}  // namespace
 
 Scene::Scene() { addNode(kNoNode, NodeKind::Group, 0, "root"); }
 
@@ -30,8 +30,10 @@ NodeId Scene::addNode(NodeId parent, NodeKind kind, std::uint32_t payload, std::
     localDirty_.push_back(1);
     name_.push_back(std::move(name));
     if (parent != kNoNode) {
-        if (lastChild_[parent] == kNoNode) firstChild_[parent] = id;
-        else nextSibling_[lastChild_[parent]] = id;
+        if (lastChild_[parent] == kNoNode)
+            firstChild_[parent] = id;
+        else
+            nextSibling_[lastChild_[parent]] = id;
         lastChild_[parent] = id;
     }
     structureDirty_ = true;
@@ -39,9 +41,7 @@ NodeId Scene::addNode(NodeId parent, NodeKind kind, std::uint32_t payload, std::
     return id;
 }
 
-NodeId Scene::addGroup(NodeId parent, std::string name) {
-    return addNode(parent, NodeKind::Group, 0, std::move(name));
-}
+NodeId Scene::addGroup(NodeId parent, std::string name) { return addNode(parent, NodeKind::Group, 0, std::move(name)); }
 
 NodeId Scene::addTransform(NodeId parent, const glm::mat4& local, std::string name) {
     const NodeId id = addNode(parent, NodeKind::Transform, 0, std::move(name));
@@ -50,9 +50,11 @@ NodeId Scene::addTransform(NodeId parent, const glm::mat4& local, std::string na
 }
 
 NodeId Scene::addMesh(NodeId parent, MeshPart part, std::string name) {
-    ARCOMP_CHECK(part.geometry < geometries_.size() && part.material < materials_.size(), "a mesh part's geometry and material are in the scene");
+    ARCOMP_CHECK(part.geometry < geometries_.size() && part.material < materials_.size(),
+                 "a mesh part's geometry and material are in the scene");
     meshParts_.push_back(part);
-    const NodeId id = addNode(parent, NodeKind::Mesh, static_cast<std::uint32_t>(meshParts_.size() - 1), std::move(name));
+    const NodeId id =
+        addNode(parent, NodeKind::Mesh, static_cast<std::uint32_t>(meshParts_.size() - 1), std::move(name));
     localBound_[id] = geometries_[part.geometry].bound;
     return id;
 }
@@ -73,7 +75,8 @@ std::uint32_t Scene::addImage(Image i) {
 }
 
 std::uint32_t Scene::addSkin(NodeId mesh, std::span<const NodeId> joints, std::span<const glm::mat4> inverseBinds) {
-    ARCOMP_CHECK(mesh < kind_.size() && joints.size() == inverseBinds.size(), "a skin's mesh node exists and each joint has an inverse bind matrix");
+    ARCOMP_CHECK(mesh < kind_.size() && joints.size() == inverseBinds.size(),
+                 "a skin's mesh node exists and each joint has an inverse bind matrix");
     for (const NodeId j : joints) ARCOMP_CHECK(j == kNoNode || j < kind_.size(), "a skin's joints are in the scene");
     skinMesh_.push_back(mesh);
     jointNode_.insert(jointNode_.end(), joints.begin(), joints.end());
@@ -101,7 +104,8 @@ void Scene::updateJointMatrices() {
     for (std::size_t s = 0; s < skinMesh_.size(); ++s) {
         const glm::mat4 toMesh = glm::inverse(world_[skinMesh_[s]]);
         for (std::uint32_t j = skinFirst_[s]; j < skinFirst_[s + 1]; ++j)
-            jointMatrix_[j] = jointNode_[j] == kNoNode ? glm::mat4(1.0f) : toMesh * world_[jointNode_[j]] * inverseBind_[j];
+            jointMatrix_[j] =
+                jointNode_[j] == kNoNode ? glm::mat4(1.0f) : toMesh * world_[jointNode_[j]] * inverseBind_[j];
     }
 }
 
@@ -235,4 +239,4 @@ void Scene::update() {
     anyLocalDirty_ = false;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -141,4 +141,4 @@ private:
     void updateJointMatrices();
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -107,7 +107,8 @@ struct SelectPass {
 
     void addMesh(const SiblingLayout::Slot& s, std::uint8_t level, float fade) {
         if (world.holdouts.has(s.node))
-            out.holdouts.push_back({static_cast<std::uint32_t>(out.items.size()), glm::dot(s.bound.center - view.eye, view.forward)});
+            out.holdouts.push_back(
+                {static_cast<std::uint32_t>(out.items.size()), glm::dot(s.bound.center - view.eye, view.forward)});
         // Filled where it lies: a copy built beside it first stalls on
         // forwarding its small stores to the copy's wide loads.
         DrawItem& item = out.items.emplace_back();
@@ -124,7 +125,8 @@ struct SelectPass {
     // Rare next to meshes, and kept out of the walk's code so that its
     // common path stays short.
     [[gnu::noinline]] void addSilhouetteRegion(const SiblingLayout::Slot& s, std::uint8_t level, float fade) {
-        ARCOMP_CHECK(s.payload < world.silhouettes.nodes.size(), "a silhouette node has its entry in world.silhouettes");
+        ARCOMP_CHECK(s.payload < world.silhouettes.nodes.size(),
+                     "a silhouette node has its entry in world.silhouettes");
         const SilhouetteNode& silhouette = world.silhouettes.nodes[s.payload];
         const glm::vec3 localEye = glm::vec3(glm::inverse(scene.world(s.node)) * glm::vec4(view.eye, 1.0f));
         const SilhouetteRange r = silhouette.rangeFor(localEye);
@@ -162,7 +164,8 @@ struct SelectPass {
     // subtree, so its own LOD node picks its level.
     [[gnu::noinline]] void visitGrouping(std::uint32_t slot, bool inside, std::uint8_t level, float fade) {
         const NodeId node = layout.slots[slot].node;
-        ARCOMP_CHECK(layout.slots[slot].payload < world.grouping.nodes.size(), "a grouping node has its entry in world.grouping");
+        ARCOMP_CHECK(layout.slots[slot].payload < world.grouping.nodes.size(),
+                     "a grouping node has its entry in world.grouping");
         GroupingNode& g = world.grouping.nodes[layout.slots[slot].payload];
         const GroupingTree& tree = g.tree;
         if (tree.objectCount() != g.objects.size()) return;  // not built: draws nothing rather than guess
@@ -217,9 +220,11 @@ struct SelectPass {
             valid = g.objectSlot[i] < layout.size() && layout.slots[g.objectSlot[i]].node == g.objects[i];
         if (valid) return;
         g.objectSlot.clear();
-        for (std::uint32_t child = layout.slots[slot].firstChild; child < layout.childEnd(slot); ++child) g.objectSlot.push_back(child);
+        for (std::uint32_t child = layout.slots[slot].firstChild; child < layout.childEnd(slot); ++child)
+            g.objectSlot.push_back(child);
         for (std::size_t i = 0; i < g.objects.size(); ++i)
-            ARCOMP_CHECK(i < g.objectSlot.size() && layout.slots[g.objectSlot[i]].node == g.objects[i], "a grouping node's children do not change after buildGrouping");
+            ARCOMP_CHECK(i < g.objectSlot.size() && layout.slots[g.objectSlot[i]].node == g.objects[i],
+                         "a grouping node's children do not change after buildGrouping");
     }
 
     // Visits the LOD node's child number `level`, or its last child when it
@@ -241,7 +246,7 @@ struct SelectPass {
     }
 };
 
-} // namespace
+}  // namespace
 
 void select(World& world, const View& view, const SelectSettings& settings, DrawList& out) {
     const Scene& scene = world.scene;
@@ -261,4 +266,4 @@ void select(World& world, const View& view, const SelectSettings& settings, Draw
     pass.visit(0, false, 0, 1.0f);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -37,4 +37,4 @@ struct SelectSettings {
 // world; reads the rest.
 void select(World& world, const View& view, const SelectSettings& settings, DrawList& out);
 
-} // namespace arcomp
+}  // namespace arcomp

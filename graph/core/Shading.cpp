@@ -16,4 +16,4 @@ std::optional<Shading> parseShading(std::string_view text) {
     return std::nullopt;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -14,4 +14,4 @@ inline constexpr int kShadingCount = 4;
 std::string_view toString(Shading s);
 std::optional<Shading> parseShading(std::string_view text);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -60,4 +60,4 @@ struct SiblingLayout {
 
 static_assert(sizeof(SiblingLayout::Slot) == 32, "two slots to a cache line");
 
-} // namespace arcomp
+}  // namespace arcomp

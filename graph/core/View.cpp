@@ -8,9 +8,7 @@
 
 namespace arcomp {
 
-float View::pixelScale() const {
-    return static_cast<float>(viewport.y) * 0.5f / std::tan(fovyRadians * 0.5f);
-}
+float View::pixelScale() const { return static_cast<float>(viewport.y) * 0.5f / std::tan(fovyRadians * 0.5f); }
 
 float View::projectedArea(const Sphere& s) const {
     if (s.empty()) return 0.0f;
@@ -46,4 +44,4 @@ View View::framing(const Sphere& s, float fovyDegrees, glm::ivec2 viewport) {
                   std::max(distance - radius * 1.5f, distance * 0.01f), distance + radius * 1.5f);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

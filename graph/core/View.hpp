@@ -34,4 +34,4 @@ struct View {
     static View framing(const Sphere& s, float fovyDegrees, glm::ivec2 viewport);
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -39,4 +39,4 @@ bool movesOverTime(const World& world, NodeId n) {
     return false;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

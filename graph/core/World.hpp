@@ -41,12 +41,12 @@ struct ObjectAnimation {
 
 struct World {
     Scene scene;
-    LodTable lods;                       // NodeKind::Lod
-    GroupingNodes grouping;              // NodeKind::Grouping
-    SilhouetteNodes silhouettes;         // NodeKind::SilhouetteRegion
-    PointCloudNodes pointClouds;         // NodeKind::PointCloud
-    HoldoutMeshes holdouts;              // per mesh node that cuts people out of the video
-    std::vector<ObjectMotion> motions;   // the config's movers
+    LodTable lods;                            // NodeKind::Lod
+    GroupingNodes grouping;                   // NodeKind::Grouping
+    SilhouetteNodes silhouettes;              // NodeKind::SilhouetteRegion
+    PointCloudNodes pointClouds;              // NodeKind::PointCloud
+    HoldoutMeshes holdouts;                   // per mesh node that cuts people out of the video
+    std::vector<ObjectMotion> motions;        // the config's movers
     std::vector<ObjectAnimation> animations;  // the config's animated models
 };
 
@@ -60,4 +60,4 @@ void animateObjects(World& world, double timeSeconds);
 // its shape on screen changes from frame to frame.
 bool movesOverTime(const World& world, NodeId n);
 
-} // namespace arcomp
+}  // namespace arcomp

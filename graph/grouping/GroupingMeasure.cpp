@@ -26,7 +26,7 @@ float shapeDissimilarity(float v1, float v2, float v12) {
     return std::max(0.0f, (v12 - (v1 + v2)) / v12);
 }
 
-} // namespace
+}  // namespace
 
 // Kato, Kanoh, Nishihara, eqs. (3)-(5), (9)-(11):
 // Ω = αp·L2/Leye + αs·Ms/Leye + αc·Mc/Leye + αf·|v1 - v2|/Leye, with
@@ -42,9 +42,7 @@ float omega0(const GroupingItem& a, const GroupingItem& b, const GroupingParams&
 }
 
 // Kato, Kanoh, Nishihara, eq. (11): Ω = Ω0·L0/Leye.
-float omegaAt(float omega0, float leye, const GroupingParams& p) {
-    return omega0 * p.l0 / std::max(leye, 1e-6f);
-}
+float omegaAt(float omega0, float leye, const GroupingParams& p) { return omega0 * p.l0 / std::max(leye, 1e-6f); }
 
 GroupingItem mergedItem(const GroupingItem& a, const GroupingItem& b) {
     GroupingItem g;
@@ -59,4 +57,4 @@ GroupingItem mergedItem(const GroupingItem& a, const GroupingItem& b) {
     return g;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -18,11 +18,11 @@
 namespace arcomp {
 
 struct GroupingParams {
-    float l0 = 5000.0f;       // reference eye distance, scene units
-    float alphaP = 0.1f;      // proximity
-    float alphaS = 2000.0f;   // shape similarity
-    float alphaC = 2000.0f;   // colour similarity
-    float alphaF = 0.1f;      // common motion
+    float l0 = 5000.0f;      // reference eye distance, scene units
+    float alphaP = 0.1f;     // proximity
+    float alphaS = 2000.0f;  // shape similarity
+    float alphaC = 2000.0f;  // colour similarity
+    float alphaF = 0.1f;     // common motion
     // The build raises Ωt from start to max in steps (the paper: 0.001..0.1).
     float omegaStart = 0.001f;
     float omegaMax = 0.1f;
@@ -57,4 +57,4 @@ float omegaAt(float omega0, float leye, const GroupingParams& p);
 // averaged by volume.
 GroupingItem mergedItem(const GroupingItem& a, const GroupingItem& b);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -22,13 +22,14 @@ Geometry makeUnitQuad() {
 float surfaceArea(const Geometry& g) {
     float area = 0.0f;
     for (std::size_t i = 0; i + 2 < g.indices.size(); i += 3) {
-        const glm::vec3 a = g.positions[g.indices[i]], b = g.positions[g.indices[i + 1]], c = g.positions[g.indices[i + 2]];
+        const glm::vec3 a = g.positions[g.indices[i]], b = g.positions[g.indices[i + 1]],
+                        c = g.positions[g.indices[i + 2]];
         area += 0.5f * glm::length(glm::cross(b - a, c - a));
     }
     return area;
 }
 
-} // namespace
+}  // namespace
 
 NodeId addGroupingNode(Scene& scene, NodeId parent, GroupingNodes& table, std::string name) {
     GroupingNode n;
@@ -40,7 +41,8 @@ NodeId addGroupingNode(Scene& scene, NodeId parent, GroupingNodes& table, std::s
     n.boxPart = {scene.addGeometry(makeBox(glm::vec3(1.0f))), scene.addMaterial(std::move(white))};
     n.quadGeometry = scene.addGeometry(makeUnitQuad());
     table.nodes.push_back(std::move(n));
-    return scene.addNode(parent, NodeKind::Grouping, static_cast<std::uint32_t>(table.nodes.size() - 1), std::move(name));
+    return scene.addNode(parent, NodeKind::Grouping, static_cast<std::uint32_t>(table.nodes.size() - 1),
+                         std::move(name));
 }
 
 GroupingItem groupingItemOf(const Scene& scene, NodeId subtree) {
@@ -122,4 +124,4 @@ glm::mat4 billboardModel(const Sphere& bound, const glm::vec3& eye) {
     return {glm::vec4(f[0] * d, 0.0f), glm::vec4(f[1] * d, 0.0f), glm::vec4(f[2], 0.0f), glm::vec4(bound.center, 1.0f)};
 }
 
-} // namespace arcomp
+}  // namespace arcomp

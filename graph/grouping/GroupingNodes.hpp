@@ -19,8 +19,8 @@
 // baked at load time (runtime/render/ImpostorBaker.hpp); a group with no baked
 // image falls back to the box.
 
-#include "graph/grouping/GroupingTree.hpp"
 #include "graph/core/Scene.hpp"
+#include "graph/grouping/GroupingTree.hpp"
 
 #include <span>
 #include <string>
@@ -37,8 +37,8 @@ struct GroupingNode {
     GroupingProxy proxy = GroupingProxy::Box;
     float proxyAlpha = 0.7f;
     float impostorPixelsPerUnit = 0.5f;  // for bakers: image pixels per scene unit
-    MeshPart boxPart{};        // a unit box with a white blended material; tinted per group
-    std::uint32_t quadGeometry = 0;  // a unit quad in XY facing +Z, for impostors
+    MeshPart boxPart{};                  // a unit box with a white blended material; tinted per group
+    std::uint32_t quadGeometry = 0;      // a unit quad in XY facing +Z, for impostors
     // Per tree node: the baked impostor's material, or kNoImpostor, and the
     // sphere it was baked around. A group that moved or was remade since
     // (its slot reused) no longer matches that sphere and shows its box.
@@ -93,4 +93,4 @@ glm::mat4 billboardModel(const Sphere& bound, const glm::vec3& eye);
 // world up as it can be; bakers render with the same frame.
 glm::mat3 billboardFrame(const glm::vec3& towardsEye);
 
-} // namespace arcomp
+}  // namespace arcomp

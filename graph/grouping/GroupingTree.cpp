@@ -15,7 +15,7 @@ constexpr std::uint64_t kUnbounded = ~std::uint64_t{0};
 // Reaches are bounds derived on real numbers; Ω0 is computed in float.
 constexpr float kSlack = 1.01f;
 
-} // namespace
+}  // namespace
 
 std::uint32_t GroupingTree::addNode(const GroupingItem& item) {
     std::uint32_t n;
@@ -236,7 +236,8 @@ void GroupingTree::build(std::span<const GroupingItem> objects, const GroupingPa
         std::nth_element(reaches.begin(), reaches.begin() + std::ptrdiff_t(reaches.size() / 2), reaches.end());
         cellSize_ = reaches[reaches.size() / 2];
     }
-    for (int level = 0; level < kLevels; ++level) levelCell_[static_cast<std::size_t>(level)] = double(cellSize_) * std::ldexp(1.0, level);
+    for (int level = 0; level < kLevels; ++level)
+        levelCell_[static_cast<std::size_t>(level)] = double(cellSize_) * std::ldexp(1.0, level);
     for (std::uint32_t n = 0; n < objects.size(); ++n) makeRoot(n);
     for (std::uint32_t n = 0; n < objects.size(); ++n) offerPairs(n, true);
     agglomerate(nullptr);
@@ -263,7 +264,8 @@ std::vector<std::uint32_t> GroupingTree::objectsUnder(std::uint32_t n) const {
     while (!stack.empty()) {
         const std::uint32_t m = stack.back();
         stack.pop_back();
-        if (isLeaf(m)) out.push_back(m);
+        if (isLeaf(m))
+            out.push_back(m);
         else {
             stack.push_back(hot_[m].left);
             stack.push_back(hot_[m].right);
@@ -345,8 +347,10 @@ GroupingRebuildStats GroupingTree::rebuildMoved() {
     // Refit each moved object's chain of groups, leaf to top, until a group
     // no longer changes.
     for (std::uint32_t o : movedObjects_) {
-        if (parent_[o] == kNoGroupingNode) tops.push_back(o);
-        else refitUp(parent_[o], tops, stats);
+        if (parent_[o] == kNoGroupingNode)
+            tops.push_back(o);
+        else
+            refitUp(parent_[o], tops, stats);
     }
     // Walk each chain again and cut the groups that broke; a cut refits the
     // chain above it, so that chain is walked next.
@@ -384,4 +388,4 @@ GroupingRebuildStats GroupingTree::rebuildMoved() {
     return stats;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -32,9 +32,9 @@ namespace arcomp {
 inline constexpr std::uint32_t kNoGroupingNode = ~std::uint32_t{0};
 
 struct GroupingRebuildStats {
-    std::size_t refitted = 0;    // groups whose box and Ω0 were recomputed
-    std::size_t dissolved = 0;   // groups cut: their pair no longer passed the last Ωt
-    std::size_t merged = 0;      // groups made anew
+    std::size_t refitted = 0;   // groups whose box and Ω0 were recomputed
+    std::size_t dissolved = 0;  // groups cut: their pair no longer passed the last Ωt
+    std::size_t merged = 0;     // groups made anew
 };
 
 class GroupingTree {
@@ -118,7 +118,7 @@ private:
     std::vector<std::uint32_t> parent_;
     std::vector<std::uint8_t> alive_;
     std::vector<std::uint32_t> roots_;
-    std::vector<std::uint32_t> rootSlot_;  // position in roots_, or kNoGroupingNode
+    std::vector<std::uint32_t> rootSlot_;   // position in roots_, or kNoGroupingNode
     std::vector<std::uint64_t> cell_;       // grid cell of a root
     std::vector<glm::vec2> reach_;          // of a root, as reach() gave when it was placed
     std::vector<std::uint32_t> unbounded_;  // roots with no finite reach: paired with everything
@@ -140,4 +140,4 @@ private:
     std::vector<std::uint8_t> moved_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

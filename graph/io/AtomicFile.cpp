@@ -39,7 +39,7 @@ bool writeAll(int fd, std::span<const std::byte> bytes) {
     return true;
 }
 
-} // namespace
+}  // namespace
 
 void writeFileAtomically(const std::filesystem::path& file, std::span<const std::byte> bytes) {
     const std::filesystem::path temp = temporaryBeside(file);
@@ -74,4 +74,4 @@ void writeFileAtomically(const std::filesystem::path& file, std::span<const std:
     }
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -19,4 +19,4 @@ namespace arcomp {
 
 void writeFileAtomically(const std::filesystem::path& file, std::span<const std::byte> bytes);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -29,4 +29,4 @@ inline std::string base64(const std::uint8_t* data, std::size_t size) {
 
 inline std::string base64(const std::vector<std::uint8_t>& bytes) { return base64(bytes.data(), bytes.size()); }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -31,8 +31,9 @@ void BinaryReader::needItems(std::uint64_t count, std::size_t itemSize, const ch
 
 void BinaryReader::magic(std::span<const char> expected, const char* what, const std::string& wrongMagic) {
     need(expected.size(), what);
-    const bool same = std::equal(expected.begin(), expected.end(), bytes_.begin() + static_cast<std::ptrdiff_t>(position_),
-                                 [](char e, std::byte b) { return static_cast<std::byte>(e) == b; });
+    const bool same =
+        std::equal(expected.begin(), expected.end(), bytes_.begin() + static_cast<std::ptrdiff_t>(position_),
+                   [](char e, std::byte b) { return static_cast<std::byte>(e) == b; });
     if (!same) fail(wrongMagic);
     position_ += expected.size();
 }
@@ -92,4 +93,4 @@ std::vector<glm::vec4> BinaryReader::vec4s(std::uint64_t count, const char* what
     return out;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -73,4 +73,4 @@ private:
     std::size_t position_ = 0;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -54,4 +54,4 @@ void BinaryWriter::vec4s(std::span<const glm::vec4> values) {
     }
 }
 
-} // namespace arcomp
+}  // namespace arcomp

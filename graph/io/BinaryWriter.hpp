@@ -47,4 +47,4 @@ private:
     std::vector<std::byte> bytes_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

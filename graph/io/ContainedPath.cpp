@@ -37,4 +37,4 @@ std::optional<fs::path> containedPath(const fs::path& folder, const std::string&
     return target;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

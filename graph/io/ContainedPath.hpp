@@ -15,4 +15,4 @@ namespace arcomp {
 std::optional<std::filesystem::path> containedPath(const std::filesystem::path& folder, const std::string& uri,
                                                    std::string& reason);
 
-} // namespace arcomp
+}  // namespace arcomp

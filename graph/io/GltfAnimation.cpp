@@ -81,11 +81,12 @@ private:
         SamplerKeys keys;
         const auto interpolation = parseInterpolation(src.interpolation);
         if (!interpolation)
-            fail(where + "/interpolation", "unknown interpolation '" + src.interpolation + "'; expected LINEAR, STEP or CUBICSPLINE");
+            fail(where + "/interpolation",
+                 "unknown interpolation '" + src.interpolation + "'; expected LINEAR, STEP or CUBICSPLINE");
         keys.interpolation = *interpolation;
         if (src.input < 0) fail(where + "/input", "has no accessor");
         keys.times = reader_.readFloats(static_cast<std::size_t>(src.input), where + "/input", TINYGLTF_TYPE_SCALAR,
-                                 {TINYGLTF_COMPONENT_TYPE_FLOAT});
+                                        {TINYGLTF_COMPONENT_TYPE_FLOAT});
         if (placeholder(src.input)) return keys;  // all zeros: the channels using it are skipped
         for (std::size_t k = 0; k < keys.times.size(); ++k) {
             if (keys.times[k] < 0.0f)
@@ -95,14 +96,15 @@ private:
             // would make the interval (and CUBICSPLINE's division by it) void.
             if (k > 0 && keys.times[k] <= keys.times[k - 1])
                 fail(where + "/input", "key times must increase: key " + std::to_string(k) + " (" +
-                                           std::to_string(keys.times[k]) + " s) is not after key " + std::to_string(k - 1) +
-                                           " (" + std::to_string(keys.times[k - 1]) + " s), accessor " +
-                                           std::to_string(src.input));
+                                           std::to_string(keys.times[k]) + " s) is not after key " +
+                                           std::to_string(k - 1) + " (" + std::to_string(keys.times[k - 1]) +
+                                           " s), accessor " + std::to_string(src.input));
         }
         return keys;
     }
 
-    std::vector<glm::vec4> samplerValues(std::size_t a, std::size_t s, AnimationPath path, const SamplerKeys& keys) const {
+    std::vector<glm::vec4> samplerValues(std::size_t a, std::size_t s, AnimationPath path,
+                                         const SamplerKeys& keys) const {
         const tinygltf::AnimationSampler& src = model_.animations[a].samplers[s];
         const std::string where = at("animations", a) + "/samplers/" + std::to_string(s) + "/output";
         if (src.output < 0) fail(where, "has no accessor");
@@ -128,16 +130,19 @@ private:
         const std::size_t count = raw.size() / static_cast<std::size_t>(width);
         if (count != expected)
             fail(where, "has " + std::to_string(count) + " elements; expected " + std::to_string(expected) + " (" +
-                            std::to_string(keys.times.size()) + " key times" + (cubic ? " × 3 for CUBICSPLINE" : "") + ")");
+                            std::to_string(keys.times.size()) + " key times" + (cubic ? " × 3 for CUBICSPLINE" : "") +
+                            ")");
         std::vector<glm::vec4> values(count, glm::vec4(0.0f));
         for (std::size_t e = 0; e < count; ++e)
-            for (int c = 0; c < width; ++c) values[e][c] = raw[e * static_cast<std::size_t>(width) + static_cast<std::size_t>(c)];
+            for (int c = 0; c < width; ++c)
+                values[e][c] = raw[e * static_cast<std::size_t>(width) + static_cast<std::size_t>(c)];
         if (rotation && !placeholder(src.output))
             for (std::size_t e = 0; e < count; ++e) {
                 if (cubic && e % 3 != 1) continue;  // tangents are not unit quaternions
                 const float length = glm::length(values[e]);
                 // Slerp assumes unit keys; rounding in the file is forgiven, a zero is not.
-                if (!(length > 1e-6f)) fail(where, "key " + std::to_string(cubic ? e / 3 : e) + " is not a rotation (zero quaternion)");
+                if (!(length > 1e-6f))
+                    fail(where, "key " + std::to_string(cubic ? e / 3 : e) + " is not a rotation (zero quaternion)");
                 values[e] /= length;
             }
         return values;
@@ -158,33 +163,38 @@ private:
                 fail(channel + "/sampler", "sampler " + std::to_string(ch.sampler) + " does not exist (" +
                                                std::to_string(src.samplers.size()) + " samplers)");
             if (ch.target_path == "weights") {
-                out_.warnings.push_back(channel + ": animation '" + clip.name +
-                                        "' drives morph target weights, which arcomp does not support; channel skipped");
+                out_.warnings.push_back(
+                    channel + ": animation '" + clip.name +
+                    "' drives morph target weights, which arcomp does not support; channel skipped");
                 continue;
             }
             const auto path = parsePath(ch.target_path);
             if (!path)
-                fail(channel + "/target/path", "unknown path '" + ch.target_path + "'; expected translation, rotation, scale or weights");
+                fail(channel + "/target/path",
+                     "unknown path '" + ch.target_path + "'; expected translation, rotation, scale or weights");
             if (ch.target_node < 0 || static_cast<std::size_t>(ch.target_node) >= model_.nodes.size())
                 fail(channel + "/target/node", "node " + std::to_string(ch.target_node) + " does not exist (" +
                                                    std::to_string(model_.nodes.size()) + " nodes)");
             const auto node = static_cast<std::size_t>(ch.target_node);
             if (!model_.nodes[node].matrix.empty())
-                fail(channel + "/target/node", "node " + std::to_string(node) +
-                                                   " gives a matrix; an animated node must give translation, rotation and scale");
+                fail(channel + "/target/node",
+                     "node " + std::to_string(node) +
+                         " gives a matrix; an animated node must give translation, rotation and scale");
             if (!driven.insert({ch.target_node, *path}).second)
-                fail(channel, "a second channel for the " + std::string(pathName(*path)) + " of node " + std::to_string(node));
+                fail(channel,
+                     "a second channel for the " + std::string(pathName(*path)) + " of node " + std::to_string(node));
             const auto sampler = static_cast<std::size_t>(ch.sampler);
             std::vector<glm::vec4> values = samplerValues(a, sampler, *path, keys[sampler]);
             const tinygltf::AnimationSampler& used = src.samplers[sampler];
             if (placeholder(used.input) || placeholder(used.output)) {
-                out_.warnings.push_back(channel + ": animation '" + clip.name + "' uses sampler " + std::to_string(sampler) +
+                out_.warnings.push_back(channel + ": animation '" + clip.name + "' uses sampler " +
+                                        std::to_string(sampler) +
                                         ", whose accessors hold no data (no buffer view); channel skipped");
                 continue;
             }
             if (parsedOf_[node] < 0) {
-                out_.warnings.push_back(channel + ": animation '" + clip.name + "' targets node " + std::to_string(node) +
-                                        ", which is not in the drawn scene; channel skipped");
+                out_.warnings.push_back(channel + ": animation '" + clip.name + "' targets node " +
+                                        std::to_string(node) + ", which is not in the drawn scene; channel skipped");
                 continue;
             }
             clip.channels.push_back({.target = static_cast<std::uint32_t>(parsedOf_[node]),
@@ -204,7 +214,8 @@ private:
         if (src.joints.empty()) fail(where + "/joints", "a skin needs at least one joint");
         auto placed = [&](int node, const std::string& pointer) {
             if (node < 0 || static_cast<std::size_t>(node) >= model_.nodes.size())
-                fail(pointer, "node " + std::to_string(node) + " does not exist (" + std::to_string(model_.nodes.size()) + " nodes)");
+                fail(pointer, "node " + std::to_string(node) + " does not exist (" +
+                                  std::to_string(model_.nodes.size()) + " nodes)");
             const int parsed = parsedOf_[static_cast<std::size_t>(node)];
             return parsed < 0 ? kNoJoint : static_cast<std::uint32_t>(parsed);
         };
@@ -215,11 +226,13 @@ private:
         if (src.inverseBindMatrices >= 0) {
             const std::string pointer = where + "/inverseBindMatrices";
             const std::vector<float> m = reader_.readFloats(static_cast<std::size_t>(src.inverseBindMatrices), pointer,
-                                                     TINYGLTF_TYPE_MAT4, {TINYGLTF_COMPONENT_TYPE_FLOAT});
+                                                            TINYGLTF_TYPE_MAT4, {TINYGLTF_COMPONENT_TYPE_FLOAT});
             if (m.size() / 16 < out.joints.size())
-                fail(pointer, "has " + std::to_string(m.size() / 16) + " matrices for " + std::to_string(out.joints.size()) + " joints");
+                fail(pointer, "has " + std::to_string(m.size() / 16) + " matrices for " +
+                                  std::to_string(out.joints.size()) + " joints");
             for (std::size_t j = 0; j < out.joints.size(); ++j)
-                for (int e = 0; e < 16; ++e) out.inverseBindMatrices[j][e / 4][e % 4] = m[j * 16 + static_cast<std::size_t>(e)];
+                for (int e = 0; e < 16; ++e)
+                    out.inverseBindMatrices[j][e / 4][e % 4] = m[j * 16 + static_cast<std::size_t>(e)];
         }
         return out;
     }
@@ -230,7 +243,7 @@ private:
     ParsedModel& out_;
 };
 
-} // namespace
+}  // namespace
 
 std::optional<Trs> authoredTrs(const tinygltf::Node& node) {
     if (!node.matrix.empty()) return std::nullopt;
@@ -255,4 +268,4 @@ void readGltfAnimation(const tinygltf::Model& model, const gltf::GltfReader& rea
     animations.animations();
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -16,7 +16,7 @@
 namespace tinygltf {
 class Model;
 class Node;
-}
+}  // namespace tinygltf
 
 namespace arcomp::gltf {
 class GltfReader;
@@ -34,4 +34,4 @@ std::optional<Trs> authoredTrs(const tinygltf::Node& node);
 void readGltfAnimation(const tinygltf::Model& model, const gltf::GltfReader& reader, const std::vector<int>& parsedOf,
                        ParsedModel& out);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -33,9 +33,10 @@ Sampler toSampler(const tinygltf::Sampler& src, std::size_t index, const GltfRea
             default: break;
             }
         }
-        reader.fail(where + "/" + field, "is " + std::to_string(gl) + ", expected " +
-                                             (minification ? "9728, 9729 or 9984 to 9987 (NEAREST, LINEAR or a mipmap filter)"
-                                                           : "9728 (NEAREST) or 9729 (LINEAR)"));
+        reader.fail(where + "/" + field,
+                    "is " + std::to_string(gl) + ", expected " +
+                        (minification ? "9728, 9729 or 9984 to 9987 (NEAREST, LINEAR or a mipmap filter)"
+                                      : "9728 (NEAREST) or 9729 (LINEAR)"));
     };
     const auto wrap = [&](int gl, const char* field) {
         switch (gl) {
@@ -44,8 +45,9 @@ Sampler toSampler(const tinygltf::Sampler& src, std::size_t index, const GltfRea
         case kGlClampToEdge: return TextureWrap::ClampToEdge;
         case kGlMirroredRepeat: return TextureWrap::MirroredRepeat;
         default:
-            reader.fail(where + "/" + field, "is " + std::to_string(gl) +
-                                                 ", expected 10497 (REPEAT), 33071 (CLAMP_TO_EDGE) or 33648 (MIRRORED_REPEAT)");
+            reader.fail(where + "/" + field,
+                        "is " + std::to_string(gl) +
+                            ", expected 10497 (REPEAT), 33071 (CLAMP_TO_EDGE) or 33648 (MIRRORED_REPEAT)");
         }
     };
     filter(src.magFilter, "magFilter", false, out.magFilter);
@@ -95,7 +97,8 @@ struct TextureTables {
 
 TextureTables textureTables(const tinygltf::Model& model, const std::vector<Image>& images, const GltfReader& reader) {
     TextureTables tables{model, images, {}};
-    for (std::size_t i = 0; i < model.samplers.size(); ++i) tables.samplers.push_back(toSampler(model.samplers[i], i, reader));
+    for (std::size_t i = 0; i < model.samplers.size(); ++i)
+        tables.samplers.push_back(toSampler(model.samplers[i], i, reader));
     for (std::size_t i = 0; i < model.textures.size(); ++i) {
         const tinygltf::Texture& t = model.textures[i];
         if (t.source < -1 || t.source >= static_cast<int>(images.size()))
@@ -112,14 +115,16 @@ TextureTables textureTables(const tinygltf::Model& model, const std::vector<Imag
 // occlusion ones). `where` points at the textureInfo. An image that did not
 // decode leaves the slot empty; its warning was given when it failed.
 template <class Info>
-TextureRef readTexture(const Info& info, const std::string& where, const TextureTables& tables, const GltfReader& reader) {
+TextureRef readTexture(const Info& info, const std::string& where, const TextureTables& tables,
+                       const GltfReader& reader) {
     TextureRef ref;
     if (info.index == -1) return ref;  // tinygltf's "no such textureInfo"
     if (info.index < 0 || static_cast<std::size_t>(info.index) >= tables.model.textures.size())
         reader.fail(where + "/index", "texture " + std::to_string(info.index) + " does not exist (" +
                                           std::to_string(tables.model.textures.size()) + " textures)");
     if (info.texCoord < 0)
-        reader.fail(where + "/texCoord", "is " + std::to_string(info.texCoord) + ", expected 0 or more (the n of TEXCOORD_n)");
+        reader.fail(where + "/texCoord",
+                    "is " + std::to_string(info.texCoord) + ", expected 0 or more (the n of TEXCOORD_n)");
     ref.texCoord = info.texCoord;
     if (const auto e = info.extensions.find("KHR_texture_transform"); e != info.extensions.end())
         ref.transform = readTransform(e->second, where + "/extensions/KHR_texture_transform", ref.texCoord, reader);
@@ -137,12 +142,13 @@ Material readMaterial(const tinygltf::Material& src, std::size_t index, const Te
     m.name = src.name;
     const auto& pbr = src.pbrMetallicRoughness;
     if (pbr.baseColorFactor.size() == 4)
-        m.baseColor = glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2],
-                                pbr.baseColorFactor[3]);
+        m.baseColor =
+            glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2], pbr.baseColorFactor[3]);
     m.metallic = static_cast<float>(pbr.metallicFactor);
     m.roughness = static_cast<float>(pbr.roughnessFactor);
     m.baseColorTexture = readTexture(pbr.baseColorTexture, where + "/" + kSlotPointers[0], tables, reader);
-    m.metallicRoughnessTexture = readTexture(pbr.metallicRoughnessTexture, where + "/" + kSlotPointers[1], tables, reader);
+    m.metallicRoughnessTexture =
+        readTexture(pbr.metallicRoughnessTexture, where + "/" + kSlotPointers[1], tables, reader);
     m.normalTexture = readTexture(src.normalTexture, where + "/" + kSlotPointers[2], tables, reader);
     m.normalScale = static_cast<float>(src.normalTexture.scale);
     m.occlusionTexture = readTexture(src.occlusionTexture, where + "/" + kSlotPointers[3], tables, reader);
@@ -158,8 +164,9 @@ Material readMaterial(const tinygltf::Material& src, std::size_t index, const Te
             if (m.emissiveStrength < 0.0f) reader.fail(at + "/emissiveStrength", "is negative, expected 0 or more");
         }
     }
-    m.alphaMode = src.alphaMode == "BLEND" ? AlphaMode::Blend : src.alphaMode == "MASK" ? AlphaMode::Mask
-                                                                                        : AlphaMode::Opaque;
+    m.alphaMode = src.alphaMode == "BLEND"  ? AlphaMode::Blend
+                  : src.alphaMode == "MASK" ? AlphaMode::Mask
+                                            : AlphaMode::Opaque;
     m.alphaCutoff = static_cast<float>(src.alphaCutoff);
     m.doubleSided = src.doubleSided;
     m.unlit = src.extensions.count("KHR_materials_unlit") > 0;
@@ -170,18 +177,18 @@ Material readMaterial(const tinygltf::Material& src, std::size_t index, const Te
     for (std::size_t k = 0; k < slots.size(); ++k) {
         if (slots[k]->texCoord <= 1) continue;
         if (slots[k]->present())
-            warnings.push_back(where + "/" + kSlotPointers[k] + ": reads TEXCOORD_" + std::to_string(slots[k]->texCoord) +
-                               ", arcomp reads TEXCOORD_0 and TEXCOORD_1 only; " + materialLabel(index, m.name) +
-                               " drawn without its " + kSlotNames[k] + " texture");
+            warnings.push_back(where + "/" + kSlotPointers[k] + ": reads TEXCOORD_" +
+                               std::to_string(slots[k]->texCoord) + ", arcomp reads TEXCOORD_0 and TEXCOORD_1 only; " +
+                               materialLabel(index, m.name) + " drawn without its " + kSlotNames[k] + " texture");
         *slots[k] = TextureRef{};
     }
     return m;
 }
 
-} // namespace
+}  // namespace
 
-std::vector<Material> readMaterials(const tinygltf::Model& model, const std::vector<Image>& images, const GltfReader& reader,
-                                    std::vector<std::string>& warnings) {
+std::vector<Material> readMaterials(const tinygltf::Model& model, const std::vector<Image>& images,
+                                    const GltfReader& reader, std::vector<std::string>& warnings) {
     const TextureTables textures = textureTables(model, images, reader);
     std::vector<Material> out;
     for (std::size_t i = 0; i < model.materials.size(); ++i)
@@ -189,4 +196,4 @@ std::vector<Material> readMaterials(const tinygltf::Model& model, const std::vec
     return out;
 }
 
-} // namespace arcomp::gltf
+}  // namespace arcomp::gltf

@@ -33,7 +33,7 @@ inline std::string materialLabel(std::size_t index, const std::string& name) {
 // The model's materials in its order. Every texture and sampler is checked,
 // used or not, as meshes are; a texture mapped by a TEXCOORD_n above 1 is
 // dropped with a warning. Throws ModelError naming a JSON pointer.
-std::vector<Material> readMaterials(const tinygltf::Model& model, const std::vector<Image>& images, const GltfReader& reader,
-                                    std::vector<std::string>& warnings);
+std::vector<Material> readMaterials(const tinygltf::Model& model, const std::vector<Image>& images,
+                                    const GltfReader& reader, std::vector<std::string>& warnings);
 
-} // namespace arcomp::gltf
+}  // namespace arcomp::gltf

@@ -32,8 +32,6 @@ namespace {
 const std::set<std::string> kSupportedRequired{"KHR_materials_unlit", "KHR_mesh_quantization", "KHR_texture_transform",
                                                "KHR_materials_emissive_strength"};
 
-
-
 struct FileAccess {
     fs::path folder;
     std::string refusal;  // first refusal, reported instead of tinygltf's "file not found"
@@ -113,7 +111,6 @@ bool lenientImage(tinygltf::Image* image, const int index, std::string* err, std
     return drawnWithout("does not decode: " + localErr);
 }
 
-
 // What a skinned node's primitives must agree with its skin on: every joint
 // that carries weight is one of the skin's (glTF 2.0, 3.7.3.3), or the file
 // is refused. What arcomp cannot skin is drawn in its bind pose, and said:
@@ -146,9 +143,9 @@ void checkSkinnedMeshes(const tinygltf::Model& model, const std::vector<int>& pa
                 for (int k = 0; k < 4; ++k)
                     if (g.weights[v][k] > 0.0f && g.joints[v][k] >= skin.joints.size())
                         reader.fail(source + "/attributes/JOINTS_0",
-                                    "vertex " + std::to_string(v) + " uses joint " + std::to_string(g.joints[v][k]) + ", but " +
-                                        skinLabel + " of " + ptr("nodes", n) + " has " + std::to_string(skin.joints.size()) +
-                                        " joints");
+                                    "vertex " + std::to_string(v) + " uses joint " + std::to_string(g.joints[v][k]) +
+                                        ", but " + skinLabel + " of " + ptr("nodes", n) + " has " +
+                                        std::to_string(skin.joints.size()) + " joints");
         }
     }
 }
@@ -163,7 +160,8 @@ glm::mat4 nodeMatrix(const tinygltf::Node& node, std::size_t index, const GltfRe
         if (node.matrix.size() != 16) reader.fail(where + "/matrix", "must have 16 numbers");
         finite(node.matrix, "matrix");
         glm::mat4 m;
-        for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = static_cast<float>(node.matrix[static_cast<std::size_t>(i)]);
+        for (int i = 0; i < 16; ++i)
+            glm::value_ptr(m)[i] = static_cast<float>(node.matrix[static_cast<std::size_t>(i)]);
         return m;
     }
     glm::mat4 m(1.0f);
@@ -198,8 +196,10 @@ std::vector<std::uint32_t> triangulate(int mode, std::vector<std::uint32_t> idx)
     for (std::size_t i = 2; i < idx.size(); ++i) {
         if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
             // Every other triangle of a strip is flipped to keep the winding.
-            if (i % 2 == 0) out.insert(out.end(), {idx[i - 2], idx[i - 1], idx[i]});
-            else out.insert(out.end(), {idx[i - 1], idx[i - 2], idx[i]});
+            if (i % 2 == 0)
+                out.insert(out.end(), {idx[i - 2], idx[i - 1], idx[i]});
+            else
+                out.insert(out.end(), {idx[i - 1], idx[i - 2], idx[i]});
         } else {
             out.insert(out.end(), {idx[0], idx[i - 1], idx[i]});
         }
@@ -219,7 +219,8 @@ Image toRgba8(const tinygltf::Image& src) {
     for (std::size_t p = 0; p < pixels; ++p) {
         auto channel = [&](int c) -> std::uint8_t {
             // The most significant byte of little-endian 16-bit samples.
-            const std::size_t at = (p * static_cast<std::size_t>(src.component) + static_cast<std::size_t>(c)) * bytesPerChannel;
+            const std::size_t at =
+                (p * static_cast<std::size_t>(src.component) + static_cast<std::size_t>(c)) * bytesPerChannel;
             return src.image[at + bytesPerChannel - 1];
         };
         const std::uint8_t r = channel(0);
@@ -234,9 +235,7 @@ Image toRgba8(const tinygltf::Image& src) {
     return out;
 }
 
-
-
-} // namespace
+}  // namespace
 
 ParsedModel parseGltf(const fs::path& file) {
     const std::string name = file.string();
@@ -252,7 +251,8 @@ ParsedModel parseGltf(const fs::path& file) {
     const bool binary = probe.gcount() == 4 && std::equal(magic, magic + 4, "glTF");
     bool ok = false;
     try {
-        ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, name) : loader.LoadASCIIFromFile(&model, &err, &warn, name);
+        ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, name)
+                    : loader.LoadASCIIFromFile(&model, &err, &warn, name);
     } catch (const std::exception& e) {
         // tinygltf checks some inputs with vector::at: a GLB buffer with
         // byteLength 0 (the schema's minimum is 1) next to a BIN chunk threw
@@ -320,7 +320,8 @@ ParsedModel parseGltf(const fs::path& file) {
             reader.fail("/scene", "scene " + std::to_string(sceneIndex) + " does not exist");
         const auto& nodes = model.scenes[static_cast<std::size_t>(sceneIndex)].nodes;
         for (std::size_t k = 0; k < nodes.size(); ++k) {
-            const std::string where = ptr("scenes", static_cast<std::size_t>(sceneIndex)) + "/nodes/" + std::to_string(k);
+            const std::string where =
+                ptr("scenes", static_cast<std::size_t>(sceneIndex)) + "/nodes/" + std::to_string(k);
             if (nodes[k] < 0 || static_cast<std::size_t>(nodes[k]) >= nodeCount)
                 reader.fail(where, "node " + std::to_string(nodes[k]) + " does not exist");
             if (parentOf[static_cast<std::size_t>(nodes[k])] >= 0)
@@ -349,7 +350,8 @@ ParsedModel parseGltf(const fs::path& file) {
                                    ", which the primitive lacks; drawn without that texture");
         }
         if (dropped == 0) return material;
-        const auto [at, added] = withoutSlots.try_emplace({material, dropped}, static_cast<std::uint32_t>(out.materials.size()));
+        const auto [at, added] =
+            withoutSlots.try_emplace({material, dropped}, static_cast<std::uint32_t>(out.materials.size()));
         if (added) {
             Material copy = m;
             const auto copySlots = copy.textures();
@@ -379,22 +381,26 @@ ParsedModel parseGltf(const fs::path& file) {
                                        ": ignored; arcomp skins with the first four influences (JOINTS_0, WEIGHTS_0)");
         if (joints == prim.attributes.end() && weights == prim.attributes.end()) return;
         if (joints == prim.attributes.end() || weights == prim.attributes.end())
-            reader.fail(where + "/attributes", std::string("has ") + (joints == prim.attributes.end() ? "WEIGHTS_0" : "JOINTS_0") +
-                                                   " without " + (joints == prim.attributes.end() ? "JOINTS_0" : "WEIGHTS_0"));
+            reader.fail(where + "/attributes",
+                        std::string("has ") + (joints == prim.attributes.end() ? "WEIGHTS_0" : "JOINTS_0") +
+                            " without " + (joints == prim.attributes.end() ? "JOINTS_0" : "WEIGHTS_0"));
         const std::string jointsUse = where + "/attributes/JOINTS_0", weightsUse = where + "/attributes/WEIGHTS_0";
-        const auto jointsIndex = static_cast<std::size_t>(joints->second), weightsIndex = static_cast<std::size_t>(weights->second);
+        const auto jointsIndex = static_cast<std::size_t>(joints->second),
+                   weightsIndex = static_cast<std::size_t>(weights->second);
         for (const auto& [index, use] : {std::pair{jointsIndex, jointsUse}, std::pair{weightsIndex, weightsUse}})
             if (reader.count(index, use) != vertexCount)
                 reader.fail(use, "has " + std::to_string(reader.count(index, use)) + " elements, POSITION has " +
                                      std::to_string(vertexCount));
         if (reader.describe(jointsIndex, jointsUse).normalized)
-            reader.fail(ptr("accessors", jointsIndex, "normalized"), "is true; joint indices are not normalized (used by " + jointsUse + ")");
+            reader.fail(ptr("accessors", jointsIndex, "normalized"),
+                        "is true; joint indices are not normalized (used by " + jointsUse + ")");
         const tinygltf::Accessor& w = reader.describe(weightsIndex, weightsUse);
         if (w.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !w.normalized)
             reader.fail(ptr("accessors", weightsIndex, "normalized"),
                         "is false; unsigned byte or short weights must be normalized (used by " + weightsUse + ")");
-        const auto j = reader.readFloats(jointsIndex, jointsUse, TINYGLTF_TYPE_VEC4,
-                                         {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
+        const auto j =
+            reader.readFloats(jointsIndex, jointsUse, TINYGLTF_TYPE_VEC4,
+                              {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
         const auto v = reader.readFloats(weightsIndex, weightsUse, TINYGLTF_TYPE_VEC4,
                                          {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
                                           TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
@@ -420,14 +426,16 @@ ParsedModel parseGltf(const fs::path& file) {
         }
         if (weightless > 0) {
             out.warnings.push_back(weightsUse + ": " + std::to_string(weightless) + " vertices (the first vertex " +
-                                   std::to_string(firstWeightless) + ") have no weight on any joint; the primitive is not skinned");
+                                   std::to_string(firstWeightless) +
+                                   ") have no weight on any joint; the primitive is not skinned");
             g.joints.clear();
             g.weights.clear();
             return;
         }
         if (farOff > 0)
-            out.warnings.push_back(weightsUse + ": the weights of " + std::to_string(farOff) + " vertices (the first vertex " +
-                                   std::to_string(firstFarOff) + ") do not sum to 1; rescaled so they do");
+            out.warnings.push_back(weightsUse + ": the weights of " + std::to_string(farOff) +
+                                   " vertices (the first vertex " + std::to_string(firstFarOff) +
+                                   ") do not sum to 1; rescaled so they do");
     };
 
     // Each (mesh, primitive) becomes one geometry, shared by every node that
@@ -439,7 +447,8 @@ ParsedModel parseGltf(const fs::path& file) {
         const tinygltf::Mesh& mesh = model.meshes[static_cast<std::size_t>(meshIndex)];
         for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
             const tinygltf::Primitive& prim = mesh.primitives[p];
-            const std::string where = ptr("meshes", static_cast<std::size_t>(meshIndex)) + "/primitives/" + std::to_string(p);
+            const std::string where =
+                ptr("meshes", static_cast<std::size_t>(meshIndex)) + "/primitives/" + std::to_string(p);
             std::uint32_t material = defaultMaterial;
             if (prim.material >= 0) {
                 if (static_cast<std::size_t>(prim.material) >= model.materials.size())
@@ -447,7 +456,8 @@ ParsedModel parseGltf(const fs::path& file) {
                 material = static_cast<std::uint32_t>(prim.material);
             }
             const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
-            if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+            if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+                mode != TINYGLTF_MODE_TRIANGLE_FAN) {
                 out.warnings.push_back(where + "/mode: mode " + std::to_string(mode) + " is not triangles; skipped");
                 continue;
             }
@@ -456,7 +466,9 @@ ParsedModel parseGltf(const fs::path& file) {
                 out.warnings.push_back(where + "/attributes: no POSITION; skipped");
                 continue;
             }
-            const auto attributePointer = [&](const std::string& attribute) { return where + "/attributes/" + attribute; };
+            const auto attributePointer = [&](const std::string& attribute) {
+                return where + "/attributes/" + attribute;
+            };
             using CT = std::vector<int>;
             const CT floatOrQuantized{TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE,
                                       TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT,
@@ -510,23 +522,24 @@ ParsedModel parseGltf(const fs::path& file) {
                 // unsigned bytes or shorts.
                 const tinygltf::Accessor& a = reader.describe(index, use);
                 if (a.type != TINYGLTF_TYPE_VEC3 && a.type != TINYGLTF_TYPE_VEC4)
-                    reader.fail(ptr("accessors", index, "type"),
-                                std::string("is ") + typeName(a.type) + ", expected VEC3 or VEC4 (used by " + use + ")");
+                    reader.fail(ptr("accessors", index, "type"), std::string("is ") + typeName(a.type) +
+                                                                     ", expected VEC3 or VEC4 (used by " + use + ")");
                 if (a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !a.normalized &&
                     (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
                      a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT))
                     reader.fail(ptr("accessors", index, "normalized"),
                                 "is false; unsigned byte or short colours must be normalized (used by " + use + ")");
-                const auto v = reader.readFloats(index, use, a.type,
-                                                 CT{TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                                                    TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
+                const auto v =
+                    reader.readFloats(index, use, a.type,
+                                      CT{TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                         TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
                 const std::size_t n = a.type == TINYGLTF_TYPE_VEC4 ? 4 : 3;
                 g.colors.resize(vertexCount);
                 // Float colours outside [0, 1] break the spec, not the drawing:
                 // clamped, as a normalized integer would have been.
                 for (std::size_t i = 0; i < vertexCount; ++i)
-                    g.colors[i] = glm::clamp(glm::vec4(v[i * n], v[i * n + 1], v[i * n + 2], n == 4 ? v[i * n + 3] : 1.0f),
-                                             0.0f, 1.0f);
+                    g.colors[i] = glm::clamp(
+                        glm::vec4(v[i * n], v[i * n + 1], v[i * n + 2], n == 4 ? v[i * n + 3] : 1.0f), 0.0f, 1.0f);
             }
             if (auto t = prim.attributes.find("TANGENT"); t != prim.attributes.end()) {
                 const auto index = static_cast<std::size_t>(t->second);
@@ -546,7 +559,8 @@ ParsedModel parseGltf(const fs::path& file) {
                     for (std::size_t i = 0; i < vertexCount; ++i) {
                         const glm::vec3 xyz(v[i * 4], v[i * 4 + 1], v[i * 4 + 2]);
                         const float len = glm::length(xyz);
-                        g.tangents[i] = glm::vec4(len > 0.0f ? xyz / len : glm::vec3(1, 0, 0), v[i * 4 + 3] < 0.0f ? -1.0f : 1.0f);
+                        g.tangents[i] =
+                            glm::vec4(len > 0.0f ? xyz / len : glm::vec3(1, 0, 0), v[i * 4 + 3] < 0.0f ? -1.0f : 1.0f);
                     }
                 }
             }
@@ -561,9 +575,10 @@ ParsedModel parseGltf(const fs::path& file) {
             g.indices = triangulate(mode, std::move(indices));
             g.finalize();
             material = drawableMaterial(material, g, where);
-            if (const TextureRef& normalMap = out.materials[material].normalTexture; normalMap.present() && g.tangents.empty()) {
-                g.tangents = computeTangents(g.positions, g.normals, normalMap.texCoord == 1 ? g.texcoords1 : g.texcoords,
-                                             g.indices);
+            if (const TextureRef& normalMap = out.materials[material].normalTexture;
+                normalMap.present() && g.tangents.empty()) {
+                g.tangents = computeTangents(g.positions, g.normals,
+                                             normalMap.texCoord == 1 ? g.texcoords1 : g.texcoords, g.indices);
                 g.tangentsGenerated = true;
             }
             const auto id = static_cast<std::uint32_t>(out.geometries.size());
@@ -579,7 +594,7 @@ ParsedModel parseGltf(const fs::path& file) {
 
     // Parents before children, as ParsedModel promises.
     std::vector<int> parsedOf(nodeCount, -1);  // glTF node -> its index in out.nodes
-    std::vector<std::pair<int, int>> stack;  // glTF node, parsed parent
+    std::vector<std::pair<int, int>> stack;    // glTF node, parsed parent
     for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({*it, -1});
     while (!stack.empty()) {
         const auto [index, parent] = stack.back();
@@ -606,4 +621,4 @@ ParsedModel parseGltf(const fs::path& file) {
     return out;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

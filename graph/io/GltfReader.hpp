@@ -83,11 +83,10 @@ public:
         const std::string where = ptr("accessors", index);
         if (a.type != wantType)
             fail(where + "/type", std::string("is ") + typeName(a.type) + ", expected " + typeName(wantType) +
-                                       " (used by " + usePointer + ")");
-        if (std::find(allowedComponents.begin(), allowedComponents.end(), a.componentType) ==
-            allowedComponents.end())
-            fail(where + "/componentType", "component type " + std::to_string(a.componentType) +
-                                               " is not allowed for " + usePointer);
+                                      " (used by " + usePointer + ")");
+        if (std::find(allowedComponents.begin(), allowedComponents.end(), a.componentType) == allowedComponents.end())
+            fail(where + "/componentType",
+                 "component type " + std::to_string(a.componentType) + " is not allowed for " + usePointer);
         const int n = componentCount(a.type);
         std::vector<float> out(a.count * static_cast<std::size_t>(n), 0.0f);
         if (a.bufferView >= 0) {
@@ -99,8 +98,7 @@ public:
         }
         if (a.sparse.isSparse) applySparse(a, index, out, n);
         for (std::size_t i = 0; i < out.size(); ++i)
-            if (!std::isfinite(out[i]))
-                fail(where, "element " + std::to_string(i / n) + " is not a finite number");
+            if (!std::isfinite(out[i])) fail(where, "element " + std::to_string(i / n) + " is not a finite number");
         return out;
     }
 
@@ -112,8 +110,8 @@ public:
         if (a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
             a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
             a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
-            fail(where + "/componentType", "indices must be unsigned byte, short or int, not " +
-                                               std::to_string(a.componentType));
+            fail(where + "/componentType",
+                 "indices must be unsigned byte, short or int, not " + std::to_string(a.componentType));
         if (a.sparse.isSparse) fail(where + "/sparse", "sparse index accessors are not supported");
         if (a.bufferView < 0) fail(where, "index accessor has no buffer view");
         const auto [data, stride] = elements(a, index);
@@ -156,10 +154,9 @@ private:
         if (a.count == 0) fail(ptr("accessors", index, "count"), "count is 0; an accessor holds at least 1 element");
         const std::size_t mostZeroFilled = kMaxZeroFilledComponents / componentCount(a.type);
         if (a.bufferView < 0 && a.count > mostZeroFilled)
-            fail(ptr("accessors", index, "count"), "count " + std::to_string(a.count) +
-                                                       " is larger than supported without a buffer view (at most " +
-                                                       std::to_string(mostZeroFilled) + " " + typeName(a.type) +
-                                                       " elements)");
+            fail(ptr("accessors", index, "count"),
+                 "count " + std::to_string(a.count) + " is larger than supported without a buffer view (at most " +
+                     std::to_string(mostZeroFilled) + " " + typeName(a.type) + " elements)");
         return a;
     }
 
@@ -208,14 +205,26 @@ private:
     static std::uint32_t readUnsigned(const unsigned char* p, int componentType) {
         switch (componentType) {
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return *p;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { std::uint16_t v; std::memcpy(&v, p, 2); return v; }
-        default: { std::uint32_t v; std::memcpy(&v, p, 4); return v; }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+            std::uint16_t v;
+            std::memcpy(&v, p, 2);
+            return v;
+        }
+        default: {
+            std::uint32_t v;
+            std::memcpy(&v, p, 4);
+            return v;
+        }
         }
     }
 
     static float convert(const unsigned char* p, const tinygltf::Accessor& a) {
         switch (a.componentType) {
-        case TINYGLTF_COMPONENT_TYPE_FLOAT: { float v; std::memcpy(&v, p, 4); return v; }
+        case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+            float v;
+            std::memcpy(&v, p, 4);
+            return v;
+        }
         case TINYGLTF_COMPONENT_TYPE_BYTE: {
             const auto v = static_cast<std::int8_t>(*p);
             return a.normalized ? std::max(static_cast<float>(v) / 127.0f, -1.0f) : static_cast<float>(v);
@@ -228,9 +237,9 @@ private:
         default: {
             const std::uint32_t v = readUnsigned(p, a.componentType);
             if (!a.normalized) return static_cast<float>(v);
-            const float max = a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ? 255.0f
+            const float max = a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 255.0f
                               : a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 65535.0f
-                                                                                           : 4294967295.0f;
+                                                                                          : 4294967295.0f;
             return static_cast<float>(v) / max;
         }
         }
@@ -251,18 +260,18 @@ private:
             const auto [bytes, length] = view(viewIndex, p + "/bufferView", stride);
             if (byteOffset < 0 || static_cast<std::size_t>(byteOffset) > length ||
                 count * elementSize > length - static_cast<std::size_t>(byteOffset))
-                fail(p, std::to_string(count) + " sparse elements do not fit in buffer view " +
-                            std::to_string(viewIndex));
+                fail(p,
+                     std::to_string(count) + " sparse elements do not fit in buffer view " + std::to_string(viewIndex));
             return bytes + byteOffset;
         };
-        const unsigned char* indices =
-            region(a.sparse.indices.bufferView, a.sparse.indices.byteOffset, static_cast<std::size_t>(componentSize(indexType)),
-                   where + "/indices");
+        const unsigned char* indices = region(a.sparse.indices.bufferView, a.sparse.indices.byteOffset,
+                                              static_cast<std::size_t>(componentSize(indexType)), where + "/indices");
         const std::size_t valueSize = static_cast<std::size_t>(n * componentSize(a.componentType));
-        const unsigned char* values = region(a.sparse.values.bufferView, a.sparse.values.byteOffset, valueSize,
-                                             where + "/values");
+        const unsigned char* values =
+            region(a.sparse.values.bufferView, a.sparse.values.byteOffset, valueSize, where + "/values");
         for (std::size_t s = 0; s < count; ++s) {
-            const std::uint32_t target = readUnsigned(indices + s * static_cast<std::size_t>(componentSize(indexType)), indexType);
+            const std::uint32_t target =
+                readUnsigned(indices + s * static_cast<std::size_t>(componentSize(indexType)), indexType);
             if (target >= a.count)
                 fail(where + "/indices", "index " + std::to_string(target) + " is out of range for " +
                                              std::to_string(a.count) + " elements");
@@ -276,4 +285,4 @@ private:
     const tinygltf::Model& model_;
 };
 
-} // namespace arcomp::gltf
+}  // namespace arcomp::gltf

@@ -32,7 +32,7 @@ std::size_t bytesOf(int componentType) {
     throw std::invalid_argument("glTF writer: no component type " + std::to_string(componentType));
 }
 
-} // namespace
+}  // namespace
 
 int GltfWriter::add(Json& list, std::string_view json) {
     list.push_back(Json::parse(json));
@@ -103,4 +103,4 @@ std::string GltfWriter::text() const {
     return doc.dump(1) + "\n";
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -38,8 +38,8 @@ public:
     using Json = nlohmann::ordered_json;
 
     // glTF 2.0, 3.6.2.2 (component types) and 5.11 (buffer view targets).
-    static constexpr int kByte = 5120, kUnsignedByte = 5121, kShort = 5122, kUnsignedShort = 5123,
-                         kUnsignedInt = 5125, kFloat = 5126;
+    static constexpr int kByte = 5120, kUnsignedByte = 5121, kShort = 5122, kUnsignedShort = 5123, kUnsignedInt = 5125,
+                         kFloat = 5126;
     static constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
 
     // The hand-written parts, each a JSON array; add() appends one element.
@@ -70,4 +70,4 @@ private:
     std::vector<std::uint8_t> buffer_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

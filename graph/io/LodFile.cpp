@@ -23,7 +23,7 @@ bool perVertex(const auto& attribute, const Geometry& g) {
     return !attribute.empty() && attribute.size() == g.positions.size();
 }
 
-} // namespace
+}  // namespace
 
 void writeLodFile(const std::filesystem::path& file, const std::vector<LodLevel>& levels) {
     BinaryWriter out;
@@ -118,13 +118,16 @@ bool madeFrom(const std::vector<LodLevel>& levels, const Geometry& mesh, std::sp
            full.texcoords1 == mesh.texcoords1 && full.tangents == mesh.tangents;
 }
 
-} // namespace
+}  // namespace
 
 LoadedOrSimplified loadOrSimplifyLevels(const std::filesystem::path& baked, const Geometry& mesh,
                                         std::span<const float> ratios) {
-    if (ratios.empty() || ratios[0] != 1.0f) return {simplifyLevels(mesh, ratios), false, "no ratio 1 first: not cached"};
-    if (!mesh.colors.empty()) return {simplifyLevels(mesh, ratios), false, "vertex colours, which .lod does not hold: not cached"};
-    if (!mesh.joints.empty()) return {simplifyLevels(mesh, ratios), false, "skin joints and weights, which .lod does not hold: not cached"};
+    if (ratios.empty() || ratios[0] != 1.0f)
+        return {simplifyLevels(mesh, ratios), false, "no ratio 1 first: not cached"};
+    if (!mesh.colors.empty())
+        return {simplifyLevels(mesh, ratios), false, "vertex colours, which .lod does not hold: not cached"};
+    if (!mesh.joints.empty())
+        return {simplifyLevels(mesh, ratios), false, "skin joints and weights, which .lod does not hold: not cached"};
     std::string note;
     std::error_code ec;
     if (std::filesystem::exists(baked, ec)) {
@@ -147,4 +150,4 @@ LoadedOrSimplified loadOrSimplifyLevels(const std::filesystem::path& baked, cons
     return {std::move(levels), false, std::move(note)};
 }
 
-} // namespace arcomp
+}  // namespace arcomp

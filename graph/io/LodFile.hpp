@@ -19,8 +19,8 @@
 // The reader checks every count against the bytes left before it allocates,
 // and every value it reads; errors name the file and the byte or level.
 
-#include "graph/lod/LodLevels.hpp"
 #include "graph/io/ModelError.hpp"
+#include "graph/lod/LodLevels.hpp"
 
 #include <filesystem>
 #include <vector>
@@ -49,4 +49,4 @@ struct LoadedOrSimplified {
 LoadedOrSimplified loadOrSimplifyLevels(const std::filesystem::path& baked, const Geometry& mesh,
                                         std::span<const float> ratios);
 
-} // namespace arcomp
+}  // namespace arcomp

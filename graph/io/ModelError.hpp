@@ -17,4 +17,4 @@ public:
     std::string file;  // the same as source: the name model code has always used
 };
 
-} // namespace arcomp
+}  // namespace arcomp

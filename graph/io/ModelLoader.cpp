@@ -58,7 +58,8 @@ NodeId append(ParsedModel& model, Scene& scene, NodeId parent, const std::string
         const ModelNode& n = model.nodes[i];
         const NodeId p = n.parent < 0 ? root : ids[static_cast<std::size_t>(n.parent)];
         ids[i] = scene.addTransform(p, n.local, n.name);
-        const bool skinnable = n.skin >= 0 && model.skins[static_cast<std::size_t>(n.skin)].joints.size() <= kMaxJointsPerDraw;
+        const bool skinnable =
+            n.skin >= 0 && model.skins[static_cast<std::size_t>(n.skin)].joints.size() <= kMaxJointsPerDraw;
         const auto sceneSkin = static_cast<std::uint32_t>(scene.skinCount() + skinnedNodes.size());
         bool skinned = false;
         for (const MeshPart& part : n.parts) {
@@ -67,8 +68,10 @@ NodeId append(ParsedModel& model, Scene& scene, NodeId parent, const std::string
                 placed.skin = sceneSkin;
                 skinned = true;
             }
-            if (placeMesh) placeMesh(ids[i], placed);
-            else scene.addMesh(ids[i], placed);
+            if (placeMesh)
+                placeMesh(ids[i], placed);
+            else
+                scene.addMesh(ids[i], placed);
         }
         if (skinned) skinnedNodes.push_back(i);
     }
@@ -94,7 +97,7 @@ NodeId append(ParsedModel& model, Scene& scene, NodeId parent, const std::string
     return root;
 }
 
-} // namespace
+}  // namespace
 
 ParsedModel parseModel(const fs::path& file) {
     std::error_code ec;
@@ -107,7 +110,8 @@ ParsedModel parseModel(const fs::path& file) {
     throw ModelError(file.string(), "", "unknown model format '" + ext + "'; expected .gltf, .glb or .obj");
 }
 
-LoadedModel placeModel(ParsedModel model, Scene& scene, NodeId parent, const std::string& name, const MeshPlacer& placeMesh) {
+LoadedModel placeModel(ParsedModel model, Scene& scene, NodeId parent, const std::string& name,
+                       const MeshPlacer& placeMesh) {
     LoadedModel out;
     out.root = append(model, scene, parent, name, placeMesh, out);
     out.warnings = std::move(model.warnings);
@@ -118,4 +122,4 @@ LoadedModel loadModel(const fs::path& file, Scene& scene, NodeId parent, const M
     return placeModel(parseModel(file), scene, parent, file.stem().string(), placeMesh);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

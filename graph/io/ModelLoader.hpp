@@ -18,8 +18,8 @@
 
 #include "graph/animation/ModelAnimation.hpp"
 #include "graph/animation/Skin.hpp"
-#include "graph/io/ModelError.hpp"
 #include "graph/core/Scene.hpp"
+#include "graph/io/ModelError.hpp"
 
 #include <filesystem>
 #include <functional>
@@ -55,7 +55,7 @@ struct ModelNode {
     // animation channel replaces one of them. None for a node that gives a
     // matrix, which is why such a node may not be animated.
     std::optional<Trs> trs = Trs{};
-    int skin = -1;  // index into the model's skins
+    int skin = -1;                // index into the model's skins
     std::vector<MeshPart> parts;  // indices into the model's geometries and materials
     std::string name;
 };
@@ -79,4 +79,4 @@ LoadedModel placeModel(ParsedModel model, Scene& scene, NodeId parent, const std
 ParsedModel parseGltf(const std::filesystem::path& file);
 ParsedModel parseObj(const std::filesystem::path& file);
 
-} // namespace arcomp
+}  // namespace arcomp

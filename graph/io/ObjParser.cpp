@@ -7,10 +7,10 @@
 
 #include <tiny_obj_loader.h>
 
-#include <fstream>
-#include <sstream>
 #include <cmath>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <unordered_map>
 
 namespace arcomp {
@@ -42,16 +42,18 @@ std::string materialLibraries(const std::string& obj, const fs::path& folder, st
             std::string reason;
             const auto path = containedPath(folder, name, reason);
             std::error_code ec;
-            if (!path) warnings.push_back("line " + std::to_string(number) + ": " + reason + "; materials ignored");
+            if (!path)
+                warnings.push_back("line " + std::to_string(number) + ": " + reason + "; materials ignored");
             else if (!fs::is_regular_file(*path, ec))
                 warnings.push_back("line " + std::to_string(number) + ": material library '" + name + "' not found");
-            else joined += readAll(*path) + "\n";
+            else
+                joined += readAll(*path) + "\n";
         }
     }
     return joined;
 }
 
-} // namespace
+}  // namespace
 
 ParsedModel parseObj(const fs::path& file) {
     const std::string name = file.string();
@@ -126,10 +128,12 @@ ParsedModel parseObj(const fs::path& file) {
                 auto [it, inserted] = b.vertexOf.try_emplace(key, static_cast<std::uint32_t>(b.g.positions.size()));
                 if (inserted) {
                     const auto v = static_cast<std::size_t>(idx.vertex_index);
-                    b.g.positions.emplace_back(attrib.vertices[3 * v], attrib.vertices[3 * v + 1], attrib.vertices[3 * v + 2]);
+                    b.g.positions.emplace_back(attrib.vertices[3 * v], attrib.vertices[3 * v + 1],
+                                               attrib.vertices[3 * v + 2]);
                     if (idx.normal_index >= 0) {
                         const auto nn = static_cast<std::size_t>(idx.normal_index);
-                        b.g.normals.emplace_back(attrib.normals[3 * nn], attrib.normals[3 * nn + 1], attrib.normals[3 * nn + 2]);
+                        b.g.normals.emplace_back(attrib.normals[3 * nn], attrib.normals[3 * nn + 1],
+                                                 attrib.normals[3 * nn + 2]);
                     } else {
                         b.anyMissingNormal = true;
                     }
@@ -162,4 +166,4 @@ ParsedModel parseObj(const fs::path& file) {
     return out;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -29,7 +29,7 @@ SilhouetteRange readSilhouetteRange(BinaryReader& r, std::uint32_t indexCount) {
     return {first, count};
 }
 
-} // namespace
+}  // namespace
 
 std::vector<std::byte> encodeSilhouetteMesh(const SilhouetteMesh& mesh) {
     BinaryWriter w;
@@ -70,8 +70,8 @@ SilhouetteMesh decodeSilhouetteMesh(std::span<const std::byte> bytes, const std:
     for (std::uint32_t i = 0; i < indexCount; ++i) {
         const std::uint32_t index = r.u32("index");
         if (index >= vertexCount)
-            r.failAt(r.position() - 4, "index " + std::to_string(index) + " out of range (" +
-                                           std::to_string(vertexCount) + " vertices)");
+            r.failAt(r.position() - 4,
+                     "index " + std::to_string(index) + " out of range (" + std::to_string(vertexCount) + " vertices)");
         m.indices.push_back(index);
     }
     for (std::uint32_t k = 0; k < regionCount; ++k) {
@@ -112,7 +112,7 @@ bool sameRegions(const std::vector<ViewRegion>& a, const std::vector<ViewRegion>
     return true;
 }
 
-} // namespace
+}  // namespace
 
 LoadedOrBaked loadOrBakeSilhouetteMesh(const std::filesystem::path& baked, std::span<const glm::vec3> positions,
                                        std::span<const std::uint32_t> indices, const std::vector<ViewRegion>& regions) {
@@ -123,7 +123,8 @@ LoadedOrBaked loadOrBakeSilhouetteMesh(const std::filesystem::path& baked, std::
             SilhouetteMesh m = readSilhouetteFile(baked);
             const FlatWeld w = weldPositions(positions, indices);
             const auto full = m.indicesOf(m.full);
-            if (m.positions == w.positions && std::equal(full.begin(), full.end(), w.indices.begin(), w.indices.end()) &&
+            if (m.positions == w.positions &&
+                std::equal(full.begin(), full.end(), w.indices.begin(), w.indices.end()) &&
                 sameRegions(m.regions, regions)) {
                 return {std::move(m), true, baked.string() + ": loaded"};
             }
@@ -143,4 +144,4 @@ LoadedOrBaked loadOrBakeSilhouetteMesh(const std::filesystem::path& baked, std::
     return {std::move(m), false, std::move(note)};
 }
 
-} // namespace arcomp
+}  // namespace arcomp

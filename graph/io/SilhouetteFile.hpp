@@ -48,4 +48,4 @@ struct LoadedOrBaked {
 LoadedOrBaked loadOrBakeSilhouetteMesh(const std::filesystem::path& baked, std::span<const glm::vec3> positions,
                                        std::span<const std::uint32_t> indices, const std::vector<ViewRegion>& regions);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -33,7 +33,7 @@ BinaryWriter voxelFileBytes(const VoxelGrid& grid) {
     return out;
 }
 
-} // namespace
+}  // namespace
 
 std::vector<std::uint8_t> encodeVoxels(const VoxelGrid& grid) {
     const BinaryWriter out = voxelFileBytes(grid);
@@ -61,8 +61,7 @@ VoxelGrid decodeVoxels(std::span<const std::uint8_t> bytes, const std::string& n
         r.failAt(16, "origin is not finite");
     if (!std::isfinite(grid.voxelSize) || !(grid.voxelSize > 0.0f)) r.failAt(28, "voxel size must be finite and > 0");
     const glm::vec3 far = grid.origin + grid.voxelSize * static_cast<float>(resolution);
-    if (!std::isfinite(far.x) || !std::isfinite(far.y) || !std::isfinite(far.z))
-        r.failAt(28, "grid extent overflows");
+    if (!std::isfinite(far.x) || !std::isfinite(far.y) || !std::isfinite(far.z)) r.failAt(28, "grid extent overflows");
     const std::uint64_t count = r.u64("the header");
     // The records must fill the rest of the file exactly, checked before
     // anything is reserved for `count` of them.
@@ -105,4 +104,4 @@ VoxelGrid readVoxelFile(const std::filesystem::path& file) {
     return decodeVoxels(bytes, file.string());
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -42,4 +42,4 @@ VoxelGrid decodeVoxels(std::span<const std::uint8_t> bytes, const std::string& n
 void writeVoxelFile(const std::filesystem::path& file, const VoxelGrid& grid);
 VoxelGrid readVoxelFile(const std::filesystem::path& file);
 
-} // namespace arcomp
+}  // namespace arcomp

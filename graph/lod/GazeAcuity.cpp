@@ -64,4 +64,4 @@ float angularSpeed(const TrackedPoint& previous, const glm::mat4& objectWorldNow
     return angleDegrees(previous.world - previous.eye, pointNow - eyeNow) / dtSeconds;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

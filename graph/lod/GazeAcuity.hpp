@@ -56,9 +56,9 @@ glm::vec3 representativePoint(const glm::vec3& eye, const glm::vec3& center, flo
 // point in the object's own frame, so carrying it through this frame's world
 // matrix follows the object's motion and rotation.
 struct TrackedPoint {
-    glm::vec3 local{0.0f};      // in the object's frame
-    glm::vec3 world{0.0f};      // where it was when chosen
-    glm::vec3 eye{0.0f};        // the eye it was seen from
+    glm::vec3 local{0.0f};  // in the object's frame
+    glm::vec3 world{0.0f};  // where it was when chosen
+    glm::vec3 eye{0.0f};    // the eye it was seen from
     bool valid = false;
 };
 
@@ -72,4 +72,4 @@ TrackedPoint trackPoint(const glm::vec3& eye, const glm::mat4& objectWorld, cons
 float angularSpeed(const TrackedPoint& previous, const glm::mat4& objectWorldNow, const glm::vec3& eyeNow,
                    float dtSeconds);
 
-} // namespace arcomp
+}  // namespace arcomp

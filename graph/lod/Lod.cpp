@@ -75,4 +75,4 @@ float LodTable::acuity(std::uint32_t i, const glm::mat4& world, const glm::vec3&
     return gazeAcuity(theta, speed, g.acuity);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -67,9 +67,9 @@ struct LodNode : LodRule {
 
 // What a policy reads about a node this frame.
 struct LodInputs {
-    float distance = 0.0f;      // eye to bound centre
-    float pixels = 0.0f;        // projected diameter of the bound
-    float acuity = 1.0f;        // k1·k2
+    float distance = 0.0f;  // eye to bound centre
+    float pixels = 0.0f;    // projected diameter of the bound
+    float acuity = 1.0f;    // k1·k2
 };
 
 // The value a node's policy compares against its thresholds.
@@ -176,4 +176,4 @@ private:
     std::vector<GazeShape> gaze_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

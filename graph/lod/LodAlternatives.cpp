@@ -36,4 +36,4 @@ NodeId LodAlternatives::levelNode(NodeId mesh, std::uint8_t level) const {
     return levels_[groupStart_[g] + std::min<std::uint32_t>(level, count - 1)];
 }
 
-} // namespace arcomp
+}  // namespace arcomp

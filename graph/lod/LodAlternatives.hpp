@@ -33,9 +33,9 @@ public:
 
 private:
     static constexpr std::uint32_t kNone = ~std::uint32_t{0};
-    std::vector<std::uint32_t> group_;      // per node: index into groupStart_, or kNone
-    std::vector<std::uint32_t> groupStart_; // offsets into levels_, one past the end last
-    std::vector<NodeId> levels_;            // every group's level meshes, finest first
+    std::vector<std::uint32_t> group_;       // per node: index into groupStart_, or kNone
+    std::vector<std::uint32_t> groupStart_;  // offsets into levels_, one past the end last
+    std::vector<NodeId> levels_;             // every group's level meshes, finest first
 };
 
-} // namespace arcomp
+}  // namespace arcomp

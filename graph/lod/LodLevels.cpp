@@ -37,7 +37,7 @@ Geometry compacted(const Geometry& g, const std::vector<std::uint32_t>& indices)
     return out;
 }
 
-} // namespace
+}  // namespace
 
 std::vector<LodLevel> simplifyLevels(const Geometry& g, std::span<const float> ratios) {
     const std::size_t triangles = g.triangleCount();
@@ -55,7 +55,8 @@ std::vector<LodLevel> simplifyLevels(const Geometry& g, std::span<const float> r
             levels.push_back({g, ratio, 0.0f});
             continue;
         }
-        const std::size_t targetTriangles = std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(triangles * ratio)));
+        const std::size_t targetTriangles =
+            std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(triangles * ratio)));
         std::vector<std::uint32_t> out(g.indices.size());
         float relativeError = 0.0f;
         // Target error 1 (the whole extent): the triangle count decides.
@@ -93,4 +94,4 @@ NodeId addLodLevels(Scene& scene, LodTable& lods, NodeId parent, MeshPart part, 
     return lod;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

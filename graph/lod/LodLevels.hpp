@@ -12,8 +12,8 @@
 // the original vertices with its own normal and UV, so attributes stay
 // those of the surface they came from.
 
-#include "graph/lod/Lod.hpp"
 #include "graph/core/Scene.hpp"
+#include "graph/lod/Lod.hpp"
 
 #include <span>
 #include <vector>
@@ -22,8 +22,8 @@ namespace arcomp {
 
 struct LodLevel {
     Geometry geometry;
-    float ratio = 1.0f;   // requested fraction of the original triangles
-    float error = 0.0f;   // geometric deviation, in the model's units
+    float ratio = 1.0f;  // requested fraction of the original triangles
+    float error = 0.0f;  // geometric deviation, in the model's units
 };
 
 // One level per ratio, each simplified from `g` itself. Ratios must lie in
@@ -42,4 +42,4 @@ NodeId addGeneratedLod(Scene& scene, LodTable& lods, NodeId parent, MeshPart par
 NodeId addLodLevels(Scene& scene, LodTable& lods, NodeId parent, MeshPart part, std::vector<LodLevel> levels,
                     const LodNode& settings);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -15,7 +15,8 @@ LdiPlacement placeInLdi(const LdiCamera& camera, const glm::vec3& p) {
     const float x = std::clamp(std::floor(screen.x), 0.0f, static_cast<float>(camera.width - 1));
     const float y = std::clamp(std::floor(screen.y), 0.0f, static_cast<float>(camera.height - 1));
     const float lp = glm::length(screen - glm::vec2(x + 0.5f, y + 0.5f));
-    const auto pixel = static_cast<std::uint32_t>(y) * static_cast<std::uint32_t>(camera.width) + static_cast<std::uint32_t>(x);
+    const auto pixel =
+        static_cast<std::uint32_t>(y) * static_cast<std::uint32_t>(camera.width) + static_cast<std::uint32_t>(x);
     return {pixel, rayDistanceLx(q.z, lp, camera.focal), true};
 }
 
@@ -43,7 +44,8 @@ LdiSet buildLdis(PointCloud cloud, std::vector<LdiCamera> cameras) {
     for (std::size_t c = 0; c < cameras.size(); ++c) {
         Ldi& ldi = set.ldis[c];
         ldi.camera = cameras[c];
-        const std::size_t pixels = static_cast<std::size_t>(ldi.camera.width) * static_cast<std::size_t>(ldi.camera.height);
+        const std::size_t pixels =
+            static_cast<std::size_t>(ldi.camera.width) * static_cast<std::size_t>(ldi.camera.height);
         // Counting sort by pixel, then each pixel's short run by depth.
         ldi.pixelStart.assign(pixels + 1, 0);
         for (std::size_t i = 0; i < n; ++i)
@@ -74,4 +76,4 @@ LdiSet buildLdis(PointCloud cloud, std::vector<LdiCamera> cameras) {
     return set;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

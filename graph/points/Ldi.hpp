@@ -60,4 +60,4 @@ LdiPlacement placeInLdi(const LdiCamera& camera, const glm::vec3& p);
 // index) and sorts each pixel's points by depth.
 LdiSet buildLdis(PointCloud cloud, std::vector<LdiCamera> cameras);
 
-} // namespace arcomp
+}  // namespace arcomp

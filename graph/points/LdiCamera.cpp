@@ -20,7 +20,8 @@ LdiCamera LdiCamera::lookAt(const glm::vec3& eye, const glm::vec3& target, const
     c.eye = eye;
     const glm::vec3 forward = glm::normalize(target - eye);
     glm::vec3 side = glm::cross(forward, up);
-    if (glm::length(side) < 1e-6f) side = glm::cross(forward, std::abs(forward.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0));
+    if (glm::length(side) < 1e-6f)
+        side = glm::cross(forward, std::abs(forward.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0));
     const glm::vec3 right = glm::normalize(side);
     const glm::vec3 down = glm::cross(forward, right);
     c.rotation = glm::transpose(glm::mat3(right, down, forward));
@@ -52,11 +53,13 @@ std::vector<LdiCamera> ldiCamerasAround(const Sphere& bound, int count, float pi
     const float fovy = 40.0f;
     const float halfFov = glm::radians(fovy) * 0.5f;
     const float distance = radius / std::sin(halfFov) * 1.05f;
-    const int pixels = std::clamp(static_cast<int>(std::ceil(2.0f * distance * std::tan(halfFov) / pixelSize)), 8, 4096);
+    const int pixels =
+        std::clamp(static_cast<int>(std::ceil(2.0f * distance * std::tan(halfFov) / pixelSize)), 8, 4096);
     std::vector<LdiCamera> cameras;
     for (const glm::vec3& d : directions)
-        cameras.push_back(LdiCamera::lookAt(bound.center + d * distance, bound.center, {0, 1, 0}, fovy, pixels, pixels));
+        cameras.push_back(
+            LdiCamera::lookAt(bound.center + d * distance, bound.center, {0, 1, 0}, fovy, pixels, pixels));
     return cameras;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -38,4 +38,4 @@ struct LdiCamera {
 // around the model as in the paper; other counts spread over a sphere.
 std::vector<LdiCamera> ldiCamerasAround(const Sphere& bound, int count, float pixelSize);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -18,9 +18,9 @@ namespace arcomp {
 
 namespace {
 
-constexpr float kMinRadius = 0.71f;      // reaches the nearest pixel centre from anywhere
-constexpr float kFootprint = 0.71f;      // half a face's diagonal, in point sizes: closes the gaps of a square grid
-constexpr float kRimFalloff = 0.6f;      // weight 1 at the centre, 0.4 at the rim
+constexpr float kMinRadius = 0.71f;  // reaches the nearest pixel centre from anywhere
+constexpr float kFootprint = 0.71f;  // half a face's diagonal, in point sizes: closes the gaps of a square grid
+constexpr float kRimFalloff = 0.6f;  // weight 1 at the centre, 0.4 at the rim
 
 // Without SSE4.1 (the x86-64 baseline) std::floor is a library call; these
 // run once per splatted point.
@@ -47,7 +47,8 @@ Int4 toBytes(Float4 v) {
 // Bytes 0..255 of R, G, B and A as one RGBA8 pixel in memory order (lanes
 // of four pixels at once, or one); stored through memcpy, not byte by byte,
 // which stalled on reading back what had just been written.
-template <class T> T packRgba8(T r, T g, T b, T a) {
+template <class T>
+T packRgba8(T r, T g, T b, T a) {
     static_assert(std::endian::native == std::endian::little, "RGBA8 packing assumes a little-endian machine");
     return r | g << 8 | b << 16 | a << 24;
 }
@@ -61,7 +62,8 @@ template <class T> T packRgba8(T r, T g, T b, T a) {
 class SpinBarrier {
 public:
     explicit SpinBarrier(int count) : count_(count) {}
-    template <class Completion> void arriveAndWait(Completion&& completion) {
+    template <class Completion>
+    void arriveAndWait(Completion&& completion) {
         const unsigned phase = phase_.load(std::memory_order_acquire);
         if (arrived_.fetch_add(1, std::memory_order_acq_rel) + 1 == count_) {
             completion();
@@ -71,7 +73,9 @@ public:
         }
         while (phase_.load(std::memory_order_acquire) == phase) std::this_thread::yield();
     }
-    void arriveAndWait() { arriveAndWait([] {}); }
+    void arriveAndWait() {
+        arriveAndWait([] {});
+    }
 
 private:
     const int count_;
@@ -79,7 +83,7 @@ private:
     std::atomic<unsigned> phase_{0};
 };
 
-} // namespace
+}  // namespace
 
 std::size_t PointImage::coveredPixels() const {
     std::size_t n = 0;
@@ -92,7 +96,8 @@ LdiRenderer::LdiRenderer(const LdiSet& set, int threads)
     const PointCloud& cloud = set_.cloud;
     const auto add = [&](Items& items, std::uint32_t id, std::size_t ldi) {
         const glm::vec4& c = cloud.colors[id];
-        const glm::u8vec4 rgb8(glm::round(glm::clamp(glm::vec3(c), 0.0f, 1.0f) * 255.0f), static_cast<std::uint8_t>(ldi));
+        const glm::u8vec4 rgb8(glm::round(glm::clamp(glm::vec3(c), 0.0f, 1.0f) * 255.0f),
+                               static_cast<std::uint8_t>(ldi));
         items.positions.push_back(cloud.positions[id]);
         items.colors.push_back(rgb8);
         items.alphas.push_back(c.a);
@@ -173,9 +178,10 @@ void LdiRenderer::clearRowsOutsideReach(const Band& band) {
     for (const auto& [a, b] : {std::pair{band.y0, band.reach0}, std::pair{band.reach1, band.y1}}) {
         const std::size_t p0 = static_cast<std::size_t>(a) * w, p1 = static_cast<std::size_t>(b) * w;
         if (p0 >= p1) continue;
-        std::fill(image_.rgba.begin() + static_cast<std::ptrdiff_t>(p0 * 4), image_.rgba.begin() + static_cast<std::ptrdiff_t>(p1 * 4), 0);
-        std::fill(image_.depth.begin() + static_cast<std::ptrdiff_t>(p0), image_.depth.begin() + static_cast<std::ptrdiff_t>(p1),
-                  std::numeric_limits<float>::infinity());
+        std::fill(image_.rgba.begin() + static_cast<std::ptrdiff_t>(p0 * 4),
+                  image_.rgba.begin() + static_cast<std::ptrdiff_t>(p1 * 4), 0);
+        std::fill(image_.depth.begin() + static_cast<std::ptrdiff_t>(p0),
+                  image_.depth.begin() + static_cast<std::ptrdiff_t>(p1), std::numeric_limits<float>::infinity());
     }
 }
 
@@ -204,7 +210,8 @@ inline bool LdiRenderer::reach(std::uint32_t id, int rowLo, int rowHi, PixelBox&
 // centres lie in the disc (dy: the row centre's offset from the point).
 // Solving the disc for each row's ends leaves no per-pixel test, whose
 // branch mispredicted about as often as it was taken.
-template <class Span> void LdiRenderer::rowSpans(std::uint32_t id, int rowLo, int rowHi, Span&& span) const {
+template <class Span>
+void LdiRenderer::rowSpans(std::uint32_t id, int rowLo, int rowHi, Span&& span) const {
     PixelBox box;
     if (!reach(id, rowLo, rowHi, box)) return;
     const int w = image_.width;
@@ -223,7 +230,8 @@ template <class Span> void LdiRenderer::rowSpans(std::uint32_t id, int rowLo, in
 
 // Calls emit(pixel, weight) for each pixel of the point's footprint within
 // rows [rowLo, rowHi).
-template <class Emit> void LdiRenderer::footprint(std::uint32_t id, int rowLo, int rowHi, Emit&& emit) const {
+template <class Emit>
+void LdiRenderer::footprint(std::uint32_t id, int rowLo, int rowHi, Emit&& emit) const {
     const float sx = projected_[id].screen.x, invR2 = kRimFalloff / (projected_[id].radius * projected_[id].radius);
     const auto w = static_cast<std::uint32_t>(image_.width);
     rowSpans(id, rowLo, rowHi, [&](int y, int xa, int xb, float dy) {
@@ -299,8 +307,10 @@ void LdiRenderer::compositeInOrder(Band& band, const std::vector<std::uint32_t>&
     for (int y = rowLo; y < rowHi; ++y)
         for (int x = 0; x < w; x += 4) {
             const std::size_t at = static_cast<std::size_t>(y) * stride + static_cast<std::size_t>(x);
-            const std::size_t pixel = static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x);
-            const Int4 rgba = packRgba8(toBytes(load(r + at)), toBytes(load(g + at)), toBytes(load(b + at)), toBytes(load(a + at)));
+            const std::size_t pixel =
+                static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x);
+            const Int4 rgba =
+                packRgba8(toBytes(load(r + at)), toBytes(load(g + at)), toBytes(load(b + at)), toBytes(load(a + at)));
             const std::size_t lanes = static_cast<std::size_t>(std::min(4, w - x));
             std::memcpy(&image_.rgba[pixel * 4], &rgba, lanes * 4);
             std::memcpy(&image_.depth[pixel], depth + at, lanes * sizeof(float));
@@ -340,8 +350,9 @@ void LdiRenderer::fillBuffers(Band& band) {
         for (std::uint32_t id : order_[l]) {
             const glm::u8vec4 c = items_->colors[id];
             const float a = items_->alphas[id], z = projected_[id].depth;
-            footprint(id, band.reach0, band.reach1,
-                      [&](std::uint32_t pixel, float weight) { entries[cursor[pixel]++] = Entry{z, a * weight, c}; });
+            footprint(id, band.reach0, band.reach1, [&](std::uint32_t pixel, float weight) {
+                entries[cursor[pixel]++] = Entry{z, a * weight, c};
+            });
         }
     for (std::size_t p = p1 - p0; p > 0; --p) band.start[p] = band.start[p - 1];
     band.start[0] = 0;
@@ -480,4 +491,4 @@ const PointImage& LdiRenderer::renderDepthSorted(const View& view) {
     return image_;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -40,9 +40,9 @@
 // positions and colours once, when constructed (the point size is read
 // every frame).
 
+#include "graph/core/View.hpp"
 #include "graph/points/Ldi.hpp"
 #include "graph/points/WorkerPool.hpp"
-#include "graph/core/View.hpp"
 
 #include <glm/gtc/type_precision.hpp>
 
@@ -82,9 +82,9 @@ private:
     // What the merge needs of one splat, packed so that it reads the
     // projection buffers front to back without touching the points.
     struct Entry {
-        float depth;          // view-axis depth of the point
-        float alpha;          // the point's alpha times the footprint weight
-        glm::u8vec4 colorLdi; // straight RGB8, and the LDI it came from in .w
+        float depth;           // view-axis depth of the point
+        float alpha;           // the point's alpha times the footprint weight
+        glm::u8vec4 colorLdi;  // straight RGB8, and the LDI it came from in .w
     };
     struct Accumulator {
         Float4 color{0.0f, 0.0f, 0.0f, 0.0f};  // premultiplied RGB, alpha in [3]
@@ -103,13 +103,13 @@ private:
     // One thread's rows and its share of the projection buffers.
     struct Band {
         int y0 = 0, y1 = 0;
-        int reach0 = 0, reach1 = 0;  // rows of the band any splat reaches (projection: of its points)
+        int reach0 = 0, reach1 = 0;        // rows of the band any splat reaches (projection: of its points)
         std::vector<std::uint32_t> start;  // per pixel of the band, + 1: offsets into entries
         std::vector<Entry> entries;
         // Single-stream path: premultiplied R, G, B, A and depth, one plane
         // each, rows kPlanePad wider than the image (see compositeInOrder).
         std::vector<float> planes;
-        std::vector<float> rowWeight;           // projection's histogram, per image row
+        std::vector<float> rowWeight;  // projection's histogram, per image row
         std::size_t splats = 0;
     };
     enum class Streams { Single, Merged };
@@ -121,8 +121,10 @@ private:
         int x0, x1, y0, y1;  // inclusive
     };
     bool reach(std::uint32_t id, int rowLo, int rowHi, PixelBox& box) const;
-    template <class Span> void rowSpans(std::uint32_t id, int rowLo, int rowHi, Span&& span) const;
-    template <class Emit> void footprint(std::uint32_t id, int rowLo, int rowHi, Emit&& emit) const;
+    template <class Span>
+    void rowSpans(std::uint32_t id, int rowLo, int rowHi, Span&& span) const;
+    template <class Emit>
+    void footprint(std::uint32_t id, int rowLo, int rowHi, Emit&& emit) const;
     void compositeInOrder(Band& band, const std::vector<std::uint32_t>& ids);
     void fillBuffers(Band& band);
     void mergeBuffers(Band& band);
@@ -163,4 +165,4 @@ private:
     double orderMs_ = 0.0;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -30,7 +30,7 @@ void axisRuns(float epipole, int size, bool towards, AxisRun runs[2]) {
 
 bool emptyRun(const AxisRun& r) { return (r.last - r.first) * r.step < 0; }
 
-} // namespace
+}  // namespace
 
 Epipole epipoleOf(const LdiCamera& camera, const glm::vec3& eye) {
     const glm::vec3 c = camera.toCamera(eye);
@@ -62,7 +62,8 @@ namespace {
 // a row's points fill a known stretch of the output (pixelStart gives their
 // count), so each piece can find its rows alone: those starting within its
 // equal share of the positions.
-template <class Put> void walkBackToFront(const Ldi& ldi, const glm::vec3& eye, std::size_t part, std::size_t parts, Put&& put) {
+template <class Put>
+void walkBackToFront(const Ldi& ldi, const glm::vec3& eye, std::size_t part, std::size_t parts, Put&& put) {
     const LdiCamera& cam = ldi.camera;
     const Epipole e = epipoleOf(cam, eye);
     AxisRun columns[2], rows[2];
@@ -85,7 +86,8 @@ template <class Put> void walkBackToFront(const Ldi& ldi, const glm::vec3& eye, 
             for (int y = rs.first;; y += rs.step) {
                 if (position >= to) return;
                 const std::uint32_t rowBase = static_cast<std::uint32_t>(y) * static_cast<std::uint32_t>(cam.width);
-                const std::size_t count = ldi.pixelStart[rowBase + highColumn + 1] - ldi.pixelStart[rowBase + lowColumn];
+                const std::size_t count =
+                    ldi.pixelStart[rowBase + highColumn + 1] - ldi.pixelStart[rowBase + lowColumn];
                 if (position >= from && count > 0) {
                     std::size_t next = position;
                     const float ly = (static_cast<float>(y) + 0.5f - principal.y) / cam.focal;
@@ -103,8 +105,10 @@ template <class Put> void walkBackToFront(const Ldi& ldi, const glm::vec3& eye, 
                                 std::upper_bound(ldi.rayDepth.begin() + begin, ldi.rayDepth.begin() + end, nearest) -
                                 ldi.rayDepth.begin());
                             while (lo < split && hi > split) {
-                                if (nearest - ldi.rayDepth[lo] >= ldi.rayDepth[hi - 1] - nearest) put(next++, lo++);
-                                else put(next++, --hi);
+                                if (nearest - ldi.rayDepth[lo] >= ldi.rayDepth[hi - 1] - nearest)
+                                    put(next++, lo++);
+                                else
+                                    put(next++, --hi);
                             }
                             while (lo < split) put(next++, lo++);
                             while (hi > split) put(next++, --hi);
@@ -119,7 +123,7 @@ template <class Put> void walkBackToFront(const Ldi& ldi, const glm::vec3& eye, 
     }
 }
 
-} // namespace
+}  // namespace
 
 void appendBackToFront(const Ldi& ldi, const glm::vec3& eye, std::vector<std::uint32_t>& out) {
     const std::size_t at = out.size();
@@ -129,8 +133,9 @@ void appendBackToFront(const Ldi& ldi, const glm::vec3& eye, std::vector<std::ui
 
 void writeSlotsBackToFront(const Ldi& ldi, const glm::vec3& eye, std::uint32_t base, std::span<std::uint32_t> slots,
                            std::size_t part, std::size_t parts) {
-    ARCOMP_CHECK(slots.size() == ldi.points.size() && part < parts, "one slot per point, a piece of the walk that exists");
+    ARCOMP_CHECK(slots.size() == ldi.points.size() && part < parts,
+                 "one slot per point, a piece of the walk that exists");
     walkBackToFront(ldi, eye, part, parts, [&](std::size_t i, std::uint32_t k) { slots[i] = base + k; });
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -48,4 +48,4 @@ void appendBackToFront(const Ldi& ldi, const glm::vec3& eye, std::vector<std::ui
 void writeSlotsBackToFront(const Ldi& ldi, const glm::vec3& eye, std::uint32_t base, std::span<std::uint32_t> slots,
                            std::size_t part = 0, std::size_t parts = 1);
 
-} // namespace arcomp
+}  // namespace arcomp

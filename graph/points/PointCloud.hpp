@@ -33,4 +33,4 @@ inline PointCloud pointCloudFromVoxels(const VoxelGrid& grid) {
     return cloud;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -20,4 +20,4 @@ const LdiSet& PointCloudNodes::at(const Scene& scene, NodeId node) const {
     return *sets_[scene.payload(node)];
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -11,8 +11,8 @@
 // a layer. Keep the table alive as long as the scene: nodes refer to it by
 // index, and LdiSets never move once added (they are held by pointer).
 
-#include "graph/points/Ldi.hpp"
 #include "graph/core/Scene.hpp"
+#include "graph/points/Ldi.hpp"
 
 #include <memory>
 #include <string>
@@ -32,4 +32,4 @@ private:
     std::vector<std::unique_ptr<LdiSet>> sets_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

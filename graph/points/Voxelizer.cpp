@@ -24,7 +24,7 @@ struct Hit {
     glm::vec4 color;
 };
 
-} // namespace
+}  // namespace
 
 bool triangleOverlapsBox(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& center,
                          const glm::vec3& halfSize) {
@@ -103,7 +103,8 @@ VoxelGrid voxelize(std::span<const VoxelSource> sources, int resolution, const V
                 for (std::uint32_t y = c0.y; y <= c1.y; ++y)
                     for (std::uint32_t x = c0.x; x <= c1.x; ++x) {
                         const glm::vec3 center = grid.origin + (glm::vec3(x, y, z) + 0.5f) * grid.voxelSize;
-                        if (triangleOverlapsBox(a, b, c, center, half)) hits.push_back({x + std::uint64_t{n} * (y + std::uint64_t{n} * z), color});
+                        if (triangleOverlapsBox(a, b, c, center, half))
+                            hits.push_back({x + std::uint64_t{n} * (y + std::uint64_t{n} * z), color});
                     }
         }
     }
@@ -122,4 +123,4 @@ VoxelGrid voxelize(std::span<const VoxelSource> sources, int resolution, const V
     return grid;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -49,4 +49,4 @@ VoxelGrid voxelize(std::span<const VoxelSource> sources, int resolution, const V
 bool triangleOverlapsBox(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& center,
                          const glm::vec3& halfSize);
 
-} // namespace arcomp
+}  // namespace arcomp

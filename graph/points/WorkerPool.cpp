@@ -50,4 +50,4 @@ void WorkerPool::loop(std::size_t worker) {
     }
 }
 
-} // namespace arcomp
+}  // namespace arcomp

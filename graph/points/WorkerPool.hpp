@@ -30,7 +30,8 @@ public:
     // `job(worker)` on every worker at once, worker 0 on this thread. The
     // job is called through a pointer, not copied into a std::function, so
     // a frame allocates nothing.
-    template <class Job> void run(Job& job) {
+    template <class Job>
+    void run(Job& job) {
         runErased(&job, [](void* j, std::size_t worker) { (*static_cast<Job*>(j))(worker); });
     }
 
@@ -49,4 +50,4 @@ private:
     bool stop_ = false;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

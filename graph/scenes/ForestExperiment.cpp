@@ -31,4 +31,4 @@ std::size_t drawnTriangles(const Scene& scene, const DrawList& list) {
     return n;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -33,4 +33,4 @@ private:
 
 std::size_t drawnTriangles(const Scene& scene, const DrawList& list);
 
-} // namespace arcomp
+}  // namespace arcomp

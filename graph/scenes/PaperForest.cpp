@@ -12,7 +12,7 @@ namespace {
 constexpr float kCrownRadius = 100.0f;
 constexpr float kCrownHeight = 200.0f;  // of its centre
 constexpr float kTrunkRadius = 15.0f;
-constexpr float kTrunkTop = 110.0f;     // inside the crown
+constexpr float kTrunkTop = 110.0f;  // inside the crown
 constexpr int kColumns = 8;
 constexpr int kRows = 4;
 
@@ -38,7 +38,7 @@ Geometry makePrism(int sides, float radius, float top, bool cap) {
 
 const std::array<std::pair<int, int>, 5> kRedTrees{{{1, 0}, {6, 1}, {3, 2}, {0, 3}, {5, 3}}};  // column, row
 
-} // namespace
+}  // namespace
 
 // Full: a 7 × 8 UV sphere (98 triangles). Simplified: a bipyramid over a
 // triangle (6 triangles).
@@ -78,7 +78,8 @@ PaperForest addPaperForestTo(Scene& scene, NodeId groupingNode, LodTable& lods, 
     Material bark{.name = "bark", .baseColor = {0.35f, 0.22f, 0.1f, 1.0f}};
     Material leaves{.name = "leaves", .baseColor = {0.12f, 0.45f, 0.12f, 1.0f}};
     Material red{.name = "red leaves", .baseColor = {0.75f, 0.1f, 0.08f, 1.0f}};
-    const std::uint32_t barkId = scene.addMaterial(bark), greenId = scene.addMaterial(leaves), redId = scene.addMaterial(red);
+    const std::uint32_t barkId = scene.addMaterial(bark), greenId = scene.addMaterial(leaves),
+                        redId = scene.addMaterial(red);
     // The crown's box sets the spacing, so that neighbours' boxes tile and
     // the shape term Ms of two neighbours is 0.
     const glm::vec3 cell = crown.box.size();
@@ -112,4 +113,4 @@ View paperForestView(glm::ivec2 viewport) {
                         20000.0f);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -13,9 +13,9 @@
 //
 // Mixed: 5 of the trees have red crowns; Green: all crowns green.
 
+#include "graph/core/View.hpp"
 #include "graph/grouping/GroupingNodes.hpp"
 #include "graph/lod/Lod.hpp"
-#include "graph/core/View.hpp"
 
 namespace arcomp {
 
@@ -23,8 +23,8 @@ enum class ForestColouring : std::uint8_t { Mixed, Green };
 
 struct PaperForest {
     NodeId grouping = kNoNode;
-    std::vector<NodeId> trees;   // the grouping node's children, object i = trees[i]
-    std::vector<bool> red;       // per tree
+    std::vector<NodeId> trees;  // the grouping node's children, object i = trees[i]
+    std::vector<bool> red;      // per tree
 };
 
 inline constexpr std::size_t kForestTrees = 32;
@@ -44,4 +44,4 @@ PaperForest addPaperForestTo(Scene& scene, NodeId groupingNode, LodTable& lods, 
 // height, about L0 away.
 View paperForestView(glm::ivec2 viewport);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -29,4 +29,4 @@ struct ProceduralTree {
 
 ProceduralTree growTree(std::uint32_t seed = 2009);
 
-} // namespace arcomp
+}  // namespace arcomp

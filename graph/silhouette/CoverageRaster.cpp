@@ -25,7 +25,7 @@ bool ownsSamplesOnEdge(Fixed a, Fixed b) {
     return nx > 0 || (nx == 0 && ny > 0);
 }
 
-} // namespace
+}  // namespace
 
 std::size_t CoverageMask::covered() const {
     return static_cast<std::size_t>(std::count(pixels.begin(), pixels.end(), std::uint8_t{1}));
@@ -38,15 +38,24 @@ std::size_t rasterizeCoverage(std::span<const glm::vec3> positions, std::span<co
     std::vector<char> usable(positions.size(), 1);
     for (std::size_t v = 0; v < positions.size(); ++v) {
         const glm::vec4 c = viewProjection * glm::vec4(positions[v], 1.0f);
-        if (!(c.w > 1e-12f)) { usable[v] = 0; continue; }
+        if (!(c.w > 1e-12f)) {
+            usable[v] = 0;
+            continue;
+        }
         const double px = (double(c.x) / c.w * 0.5 + 0.5) * mask.width;
         const double py = (0.5 - double(c.y) / c.w * 0.5) * mask.height;
-        if (!(std::abs(px) < kMaxPixels && std::abs(py) < kMaxPixels)) { usable[v] = 0; continue; }
+        if (!(std::abs(px) < kMaxPixels && std::abs(py) < kMaxPixels)) {
+            usable[v] = 0;
+            continue;
+        }
         screen[v] = {std::llround(px * kSub), std::llround(py * kSub)};
     }
     for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
         const std::uint32_t i0 = indices[t], i1 = indices[t + 1], i2 = indices[t + 2];
-        if (!usable[i0] || !usable[i1] || !usable[i2]) { ++skipped; continue; }
+        if (!usable[i0] || !usable[i1] || !usable[i2]) {
+            ++skipped;
+            continue;
+        }
         Fixed p[3] = {screen[i0], screen[i1], screen[i2]};
         const std::int64_t area = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[1].y - p[0].y) * (p[2].x - p[0].x);
         if (area == 0) continue;
@@ -74,7 +83,9 @@ std::size_t rasterizeCoverage(std::span<const glm::vec3> positions, std::span<co
             std::uint8_t* row = &mask.pixels[static_cast<std::size_t>(y) * mask.width];
             for (int x = x0; x <= x1; ++x) {
                 if ((w0 + bias[0]) >= 0 && (w1 + bias[1]) >= 0 && (w2 + bias[2]) >= 0) row[x] = 1;
-                w0 += dx[0]; w1 += dx[1]; w2 += dx[2];
+                w0 += dx[0];
+                w1 += dx[1];
+                w2 += dx[2];
             }
             for (int e = 0; e < 3; ++e) rowStart[e] += dy[e];
         }
@@ -107,4 +118,4 @@ MaskDifference compareMasks(const CoverageMask& reference, const CoverageMask& o
     return d;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -44,4 +44,4 @@ struct MaskDifference {
 
 MaskDifference compareMasks(const CoverageMask& reference, const CoverageMask& other);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -19,7 +19,7 @@ int sideOf(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm
     return 0;
 }
 
-} // namespace
+}  // namespace
 
 bool frontFacingFrom(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& eye) {
     return sideOf(a, b, c, eye) > 0;
@@ -52,4 +52,4 @@ std::vector<Facing> classifyTriangles(std::span<const glm::vec3> positions, std:
     return out;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

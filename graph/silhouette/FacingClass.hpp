@@ -32,4 +32,4 @@ Facing classifyTriangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3&
 std::vector<Facing> classifyTriangles(std::span<const glm::vec3> positions, std::span<const std::uint32_t> indices,
                                       std::span<const glm::vec3> regionVertices);
 
-} // namespace arcomp
+}  // namespace arcomp

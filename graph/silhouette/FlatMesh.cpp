@@ -33,4 +33,4 @@ std::vector<std::uint32_t> simplifyToTriangles(std::span<const glm::vec3> positi
     return out;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

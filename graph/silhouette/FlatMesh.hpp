@@ -25,4 +25,4 @@ FlatMesh flattenModel(const ParsedModel& model);
 std::vector<std::uint32_t> simplifyToTriangles(std::span<const glm::vec3> positions,
                                                std::span<const std::uint32_t> indices, std::size_t triangles);
 
-} // namespace arcomp
+}  // namespace arcomp

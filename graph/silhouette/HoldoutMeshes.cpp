@@ -51,4 +51,4 @@ std::size_t HoldoutMeshes::triangles() const {
     return n;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -14,8 +14,8 @@
 // the holdout of a coarser level is that level's silhouette.
 
 #include "graph/core/DrawList.hpp"
-#include "graph/silhouette/SilhouetteNodes.hpp"
 #include "graph/core/View.hpp"
+#include "graph/silhouette/SilhouetteNodes.hpp"
 
 #include <optional>
 #include <vector>
@@ -49,4 +49,4 @@ private:
     std::vector<SilhouetteNode> entries_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

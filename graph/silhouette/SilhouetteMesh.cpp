@@ -5,8 +5,8 @@
 #include <exception>
 #include <map>
 #include <mutex>
-#include <thread>
 #include <stdexcept>
+#include <thread>
 #include <tuple>
 
 namespace arcomp {
@@ -92,7 +92,8 @@ SilhouetteMesh bakeSilhouetteMesh(std::span<const glm::vec3> positions, std::spa
             if (progress) progress(done, results.size());
         }
     };
-    const std::size_t workers = std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), results.size());
+    const std::size_t workers =
+        std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), results.size());
     std::vector<std::thread> threads;
     for (std::size_t w = 1; w < workers; ++w) threads.emplace_back(work);
     work();
@@ -100,7 +101,8 @@ SilhouetteMesh bakeSilhouetteMesh(std::span<const glm::vec3> positions, std::spa
     if (failure) std::rethrow_exception(failure);
 
     for (const RegionReduction& r : results) {
-        m.ranges.push_back({static_cast<std::uint32_t>(m.indices.size()), static_cast<std::uint32_t>(r.indices.size())});
+        m.ranges.push_back(
+            {static_cast<std::uint32_t>(m.indices.size()), static_cast<std::uint32_t>(r.indices.size())});
         m.indices.insert(m.indices.end(), r.indices.begin(), r.indices.end());
         if (report)
             report->push_back({r.front, r.back, r.silhouette, r.backKept, r.frontAfter, r.frontLocked, r.rejectedTries,
@@ -109,4 +111,4 @@ SilhouetteMesh bakeSilhouetteMesh(std::span<const glm::vec3> positions, std::spa
     return m;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

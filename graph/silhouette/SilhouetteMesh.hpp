@@ -41,7 +41,9 @@ struct SilhouetteMesh {
     // The first region holding `eye` (regions may touch), or -1.
     int regionAt(const glm::vec3& eye) const;
     SilhouetteRange rangeFor(const glm::vec3& eye) const;
-    std::span<const std::uint32_t> indicesOf(SilhouetteRange r) const { return std::span(indices).subspan(r.firstIndex, r.indexCount); }
+    std::span<const std::uint32_t> indicesOf(SilhouetteRange r) const {
+        return std::span(indices).subspan(r.firstIndex, r.indexCount);
+    }
     // Positions and every index list as one Geometry, for the scene.
     Geometry geometry() const;
 };
@@ -60,7 +62,8 @@ using BakeProgress = std::function<void(std::size_t regionsDone, std::size_t reg
 // surface, not on split vertices), then reduces the mesh for every region,
 // regions in parallel. `progress` is called under a lock, from any thread.
 SilhouetteMesh bakeSilhouetteMesh(std::span<const glm::vec3> positions, std::span<const std::uint32_t> indices,
-                                  std::vector<ViewRegion> regions, std::vector<SilhouetteRegionReport>* report = nullptr,
+                                  std::vector<ViewRegion> regions,
+                                  std::vector<SilhouetteRegionReport>* report = nullptr,
                                   const BakeProgress& progress = {});
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -20,4 +20,4 @@ NodeId addSilhouetteNode(Scene& scene, NodeId parent, SilhouetteNodes& table, co
     return node;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

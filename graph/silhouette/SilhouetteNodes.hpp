@@ -31,4 +31,4 @@ struct SilhouetteNodes {
 NodeId addSilhouetteNode(Scene& scene, NodeId parent, SilhouetteNodes& table, const SilhouetteMesh& mesh,
                          std::uint32_t material, std::string name = {});
 
-} // namespace arcomp
+}  // namespace arcomp

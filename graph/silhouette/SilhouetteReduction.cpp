@@ -68,8 +68,10 @@ bool lineMayMeetHole(const Sphere& eye, const Sphere& tri, const Sphere& hole) {
         double lo = lo0, hi = hi0;
         for (int i = 0; i < 60; ++i) {
             const double m1 = lo + (hi - lo) / 3.0, m2 = hi - (hi - lo) / 3.0;
-            if (excess(m1) < excess(m2)) hi = m2;
-            else lo = m1;
+            if (excess(m1) < excess(m2))
+                hi = m2;
+            else
+                lo = m1;
         }
         if (excess(0.5 * (lo + hi)) <= 1e-9 * reach || excess(lo0) <= 0.0 || excess(hi0) <= 0.0) return true;
     }
@@ -82,7 +84,7 @@ Sphere triangleSphere(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c
     return {centre, r * 1.0001f + 1e-7f};
 }
 
-} // namespace
+}  // namespace
 
 std::vector<std::pair<std::uint32_t, std::uint32_t>> borderChain(std::span<const std::uint32_t> indices) {
     std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
@@ -134,14 +136,23 @@ RegionReduction reduceForRegion(std::span<const glm::vec3> positions, std::span<
     for (std::uint32_t t = 0; t < facing.size(); ++t) {
         const std::uint32_t* tri = &indices[3 * t];
         switch (facing[t]) {
-        case Facing::Front: ++r.front; frontTris.push_back(t); break;
-        case Facing::Silhouette: ++r.silhouette; kept.insert(kept.end(), tri, tri + 3); break;
+        case Facing::Front:
+            ++r.front;
+            frontTris.push_back(t);
+            break;
+        case Facing::Silhouette:
+            ++r.silhouette;
+            kept.insert(kept.end(), tri, tri + 3);
+            break;
         case Facing::Back: {
             ++r.back;
             const Sphere s = triangleSphere(positions[tri[0]], positions[tri[1]], positions[tri[2]]);
             const bool seen = std::any_of(holes.spheres.begin(), holes.spheres.end(),
                                           [&](const Sphere& h) { return lineMayMeetHole(eyeSphere, s, h); });
-            if (seen) { ++r.backKept; kept.insert(kept.end(), tri, tri + 3); }
+            if (seen) {
+                ++r.backKept;
+                kept.insert(kept.end(), tri, tri + 3);
+            }
             break;
         }
         }
@@ -156,11 +167,14 @@ RegionReduction reduceForRegion(std::span<const glm::vec3> positions, std::span<
         input.clear();
         for (std::size_t i = 0; i < frontTris.size(); ++i)
             if (!locked[i]) input.insert(input.end(), &indices[3 * frontTris[i]], &indices[3 * frontTris[i] + 3]);
-        if (attempt >= settings.maxTries || input.empty()) { output = input; break; }
+        if (attempt >= settings.maxTries || input.empty()) {
+            output = input;
+            break;
+        }
         output.resize(input.size());
-        const std::size_t n = meshopt_simplify(output.data(), input.data(), input.size(), &positions[0].x,
-                                               positions.size(), sizeof(glm::vec3), 0, settings.targetError,
-                                               meshopt_SimplifyLockBorder, nullptr);
+        const std::size_t n =
+            meshopt_simplify(output.data(), input.data(), input.size(), &positions[0].x, positions.size(),
+                             sizeof(glm::vec3), 0, settings.targetError, meshopt_SimplifyLockBorder, nullptr);
         output.resize(n);
 
         std::vector<char> marked(positions.size(), 0);
@@ -203,4 +217,4 @@ RegionReduction reduceForRegion(std::span<const glm::vec3> positions, std::span<
     return r;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -9,9 +9,9 @@
 //
 // What is guaranteed, and checked on every result (not assumed from the
 // simplifier): for every eye e in the region, outside the mesh's solid and
-// with the whole mesh in front of e (a pinhole camera at e), the set of image points covered by the reduced mesh equals the set
-// covered by the full mesh, except possibly on the projected curves of FM's
-// border (which lie on SM or on the outline). Why:
+// with the whole mesh in front of e (a pinhole camera at e), the set of image points covered by the reduced mesh equals
+// the set covered by the full mesh, except possibly on the projected curves of FM's border (which lie on SM or on the
+// outline). Why:
 // - Every simplified FM triangle is strictly front-facing from every region
 //   vertex, hence (the region being convex) from every e in it; and the
 //   simplified FM has the same oriented border chain as FM. A 2-chain whose
@@ -51,9 +51,9 @@ MeshHoles findHoles(std::span<const glm::vec3> positions, std::span<const std::u
 struct RegionReduction {
     std::vector<std::uint32_t> indices;
     std::size_t front = 0, back = 0, silhouette = 0;
-    std::size_t backKept = 0;          // BM triangles kept because of holes
-    std::size_t frontAfter = 0;        // FM triangles after simplification
-    std::size_t frontLocked = 0;       // FM triangles locked after a rejected try
+    std::size_t backKept = 0;     // BM triangles kept because of holes
+    std::size_t frontAfter = 0;   // FM triangles after simplification
+    std::size_t frontLocked = 0;  // FM triangles locked after a rejected try
     int rejectedTries = 0;
     std::size_t trianglesBefore() const { return front + back + silhouette; }
     std::size_t trianglesAfter() const { return indices.size() / 3; }
@@ -76,4 +76,4 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> borderChain(std::span<const
 bool allFrontFacing(std::span<const glm::vec3> positions, std::span<const std::uint32_t> indices,
                     std::span<const glm::vec3> eyes);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -11,8 +11,8 @@ ViewRegion ViewRegion::fromBox(const Box& box) {
         throw std::invalid_argument("view region box must have min < max on every axis");
     ViewRegion r;
     for (int i = 0; i < 8; ++i)
-        r.vertices_.push_back({(i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
-                               (i & 4) ? box.max.z : box.min.z});
+        r.vertices_.push_back(
+            {(i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y, (i & 4) ? box.max.z : box.min.z});
     for (int axis = 0; axis < 3; ++axis) {
         glm::vec3 n(0.0f);
         n[axis] = 1.0f;
@@ -56,7 +56,10 @@ ViewRegion ViewRegion::fromVertices(std::span<const glm::vec3> points) {
                     below |= d < -tol;
                 }
                 if (above && below) continue;
-                if (above) { normal = -normal; offset = -offset; }
+                if (above) {
+                    normal = -normal;
+                    offset = -offset;
+                }
                 if (!above && !below) continue;  // all coplanar: no volume, caught below
                 bool known = false;
                 for (const glm::dvec4& q : planes)
@@ -93,4 +96,4 @@ std::vector<ViewRegion> regionsAround(const Sphere& bound, int count) {
     return out;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

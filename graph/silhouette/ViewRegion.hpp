@@ -51,4 +51,4 @@ private:
 // silhouette benchmark's default set.
 std::vector<ViewRegion> regionsAround(const Sphere& bound, int count);
 
-} // namespace arcomp
+}  // namespace arcomp

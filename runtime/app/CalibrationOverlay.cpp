@@ -25,13 +25,15 @@ constexpr double kNearMetres = 0.1;
 constexpr int kShift = 4;
 
 cv::Point fixedPoint(const glm::dvec2& pixel) {
-    return {static_cast<int>(std::lround(pixel.x * (1 << kShift))), static_cast<int>(std::lround(pixel.y * (1 << kShift)))};
+    return {static_cast<int>(std::lround(pixel.x * (1 << kShift))),
+            static_cast<int>(std::lround(pixel.y * (1 << kShift)))};
 }
 
 // The stretch of floor segment a-b in front of the lens, projected. A
 // straight floor line is a straight line in the undistorted picture, so its
 // clipped ends are all it takes.
-void floorLine(cv::Mat& image, const CalibratedCamera& camera, const glm::dvec3& a, const glm::dvec3& b, const cv::Scalar& colour) {
+void floorLine(cv::Mat& image, const CalibratedCamera& camera, const glm::dvec3& a, const glm::dvec3& b,
+               const cv::Scalar& colour) {
     const double za = camera.depthOf(a), zb = camera.depthOf(b);
     if (za < kNearMetres && zb < kNearMetres) return;
     glm::dvec3 from = a, to = b;
@@ -61,11 +63,11 @@ glm::dvec3 gridCentre(const CalibratedCamera& camera) {
 
 bool sameCamera(const CalibratedCamera& a, const CalibratedCamera& b) {
     const CameraIntrinsics &i = a.intrinsics, &j = b.intrinsics;
-    return i.imageSize == j.imageSize && i.fx == j.fx && i.fy == j.fy && i.cx == j.cx && i.cy == j.cy && a.rotation == b.rotation &&
-           a.translation == b.translation;
+    return i.imageSize == j.imageSize && i.fx == j.fx && i.fy == j.fy && i.cx == j.cx && i.cy == j.cy &&
+           a.rotation == b.rotation && a.translation == b.translation;
 }
 
-} // namespace
+}  // namespace
 
 void drawFloorGrid(cv::Mat& image, const CalibratedCamera& camera) {
     CV_Assert(image.type() == CV_8UC4);
@@ -75,8 +77,10 @@ void drawFloorGrid(cv::Mat& image, const CalibratedCamera& camera) {
     for (int pass = 0; pass < 2; ++pass) {
         for (double i = -h; i <= h; i += 1.0) {
             const double x = c.x + i, z = c.z + i;
-            if ((x == 0.0) == (pass == 1)) floorLine(image, camera, {x, 0.0, c.z - h}, {x, 0.0, c.z + h}, pass ? kZAxis : kGrid);
-            if ((z == 0.0) == (pass == 1)) floorLine(image, camera, {c.x - h, 0.0, z}, {c.x + h, 0.0, z}, pass ? kXAxis : kGrid);
+            if ((x == 0.0) == (pass == 1))
+                floorLine(image, camera, {x, 0.0, c.z - h}, {x, 0.0, c.z + h}, pass ? kZAxis : kGrid);
+            if ((z == 0.0) == (pass == 1))
+                floorLine(image, camera, {c.x - h, 0.0, z}, {c.x + h, 0.0, z}, pass ? kXAxis : kGrid);
         }
     }
 }
@@ -122,4 +126,4 @@ void CalibrationOverlay::draw(const CalibratedCamera& camera, glm::ivec2 size, s
     }
 }
 
-} // namespace arcomp
+}  // namespace arcomp

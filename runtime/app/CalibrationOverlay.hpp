@@ -50,4 +50,4 @@ void drawFloorGrid(cv::Mat& image, const CalibratedCamera& camera);
 // "(plane)" when it is the person plane's.
 std::string standingLabel(const StandingPerson& person);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -21,4 +21,4 @@ bool keepFreedMemoryResident() {
 #endif
 }
 
-} // namespace arcomp
+}  // namespace arcomp

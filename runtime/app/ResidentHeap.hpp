@@ -32,4 +32,4 @@ inline constexpr std::size_t kTrimThreshold = std::size_t{256} << 20;
 // False where the C library refused a setting (or is not glibc).
 bool keepFreedMemoryResident();
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -15,7 +15,7 @@ static_assert(std::atomic<bool>::is_always_lock_free);
 extern "C" void onStopSignal(int) { stopFlag.store(true); }
 extern "C" void onReloadSignal(int) { reloadFlag.store(true); }
 
-} // namespace
+}  // namespace
 
 void installShutdownSignals() {
     struct sigaction stop {};
@@ -35,4 +35,4 @@ bool takeReloadRequest() { return reloadFlag.exchange(false); }
 void requestStop() { stopFlag.store(true); }
 void requestReload() { reloadFlag.store(true); }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -20,4 +20,4 @@ bool takeReloadRequest();
 void requestStop();
 void requestReload();
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -1,8 +1,8 @@
 #include "runtime/app/StationRunner.hpp"
 #include "graph/core/JoinText.hpp"
 
-#include "runtime/config/ConfigError.hpp"
 #include "runtime/app/ShutdownSignals.hpp"
+#include "runtime/config/ConfigError.hpp"
 
 #include <spdlog/spdlog.h>
 
@@ -12,7 +12,9 @@ namespace arcomp {
 
 namespace {
 
-double nowSeconds() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+double nowSeconds() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
 
 bool sameVideo(const StationConfig& a, const StationConfig& b) {
     const auto& x = a.compositing.video;
@@ -29,7 +31,7 @@ std::filesystem::path numberedVideo(const std::filesystem::path& file, std::uint
     return out;
 }
 
-} // namespace
+}  // namespace
 
 StationRunner::StationRunner(StationConfig cfg, ConfigOverride override, InputOpener openInput)
     : cfg_(std::move(cfg)), override_(std::move(override)), openInput_(std::move(openInput)) {
@@ -48,7 +50,8 @@ void StationRunner::startStatusServer() {
     if (!cfg_.operation.statusEnabled) return;
     try {
         server_ = std::make_unique<StatusServer>(metrics_, cfg_.operation.status);
-        spdlog::info(joinText("status: http://", cfg_.operation.status.bind, ":", server_->port(), "/status and /metrics"));
+        spdlog::info(
+            joinText("status: http://", cfg_.operation.status.bind, ":", server_->port(), "/status and /metrics"));
     } catch (const std::exception& e) {
         spdlog::error(joinText(e.what(), "; running without a status endpoint"));
         metrics_.recordError(e.what());
@@ -84,7 +87,7 @@ void StationRunner::reportOutputFailure() {
     // The first failure, then one line per 100, so a full disk does not also fill the log.
     if (outputFailures_ == 1 || outputFailures_ % 100 == 0)
         spdlog::error(joinText(station_->lastOutputError(), " (output failures so far: ", outputFailures_,
-                              "; the station goes on compositing)"));
+                               "; the station goes on compositing)"));
 }
 
 void StationRunner::reload() {
@@ -115,7 +118,8 @@ void StationRunner::reload() {
     } catch (const std::exception& e) {
         spdlog::error(joinText("reload failed: ", e.what()));
         metrics_.recordError(std::string("reload failed: ") + e.what());
-        if (cfg_.compositing.video && cfg_.compositing.video->kind == SourceKind::File && !cfg_.compositing.video->loop) {
+        if (cfg_.compositing.video && cfg_.compositing.video->kind == SourceKind::File &&
+            !cfg_.compositing.video->loop) {
             // A replay cannot go back to where it was without repeating frames.
             ended_ = true;
             return;
@@ -127,13 +131,15 @@ void StationRunner::reload() {
         try {
             restart(previous, openInput_(previous));
         } catch (const std::exception& again) {
-            spdlog::error(joinText("the previous config cannot start either (", again.what(), "); showing the test pattern"));
+            spdlog::error(
+                joinText("the previous config cannot start either (", again.what(), "); showing the test pattern"));
             previous.compositing.video = SourceSpec{};
             restart(previous, openInput_(previous));
         }
         return;
     }
-    spdlog::info(joinText("reloaded ", cfg_.file.string(), " (", cfg_.objects.size(), " objects, input ", keepInput ? "kept" : "reopened", ")"));
+    spdlog::info(joinText("reloaded ", cfg_.file.string(), " (", cfg_.objects.size(), " objects, input ",
+                          keepInput ? "kept" : "reopened", ")"));
 }
 
 void StationRunner::restart(StationConfig cfg, StationInput input) {
@@ -153,4 +159,4 @@ void StationRunner::finish() {
     if (station_) station_->finish();
 }
 
-} // namespace arcomp
+}  // namespace arcomp

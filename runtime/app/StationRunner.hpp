@@ -21,9 +21,9 @@
 // (no first frame), a live station goes back to its previous config (on
 // the test pattern if its camera is gone too); a replay ends.
 
-#include "runtime/station/Station.hpp"
 #include "runtime/operator/StationMetrics.hpp"
 #include "runtime/operator/StatusServer.hpp"
+#include "runtime/station/Station.hpp"
 
 #include <chrono>
 #include <functional>
@@ -75,9 +75,9 @@ private:
     std::uint64_t frames_ = 0;
     std::uint64_t reloads_ = 0;
     const std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();  // live movers' clock
-    bool ended_ = false;           // a replay whose reload could not start
+    bool ended_ = false;  // a replay whose reload could not start
     std::uint64_t outputFailures_ = 0;
     double lastStepStart_ = -1.0;  // seconds, steady clock; frame time is start to start
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -28,9 +28,10 @@ std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0
     return line;
 }
 
-} // namespace
+}  // namespace
 
-void StatsOverlay::add(const FrameStats& stats, const DrawList& drawn, const CameraLine& camera, double frameMs, double targetMs) {
+void StatsOverlay::add(const FrameStats& stats, const DrawList& drawn, const CameraLine& camera, double frameMs,
+                       double targetMs) {
     frameMs_.push_back(frameMs);
     while (frameMs_.size() > kHistory) frameMs_.pop_front();
     draw(stats, drawn, camera, targetMs);
@@ -55,15 +56,18 @@ void StatsOverlay::draw(const FrameStats& stats, const DrawList& drawn, const Ca
 
     int row = 5;
     text(image_, format("frame %.1f ms, target %.1f ms", frameMs_.back(), targetMs), row++);
-    text(image_, format("capture %.1f  matte %.1f  track %.1f", stats.captureMs, stats.matteMs, stats.trackMs) + " (" +
-                     std::to_string(stats.people) + " people)",
+    text(image_,
+         format("capture %.1f  matte %.1f  track %.1f", stats.captureMs, stats.matteMs, stats.trackMs) + " (" +
+             std::to_string(stats.people) + " people)",
          row++);
-    text(image_, format("render %.1f", stats.renderMs) +
-                     format("  holdout %.1f  comp. %.1f", stats.holdoutMs, stats.compositeMs),
+    text(image_,
+         format("render %.1f", stats.renderMs) +
+             format("  holdout %.1f  comp. %.1f", stats.holdoutMs, stats.compositeMs),
          row++);
     if (stats.budget)
-        text(image_, format("budget: predicted %.1f ms, measured %.1f ms, quality %.2f", stats.budget->measuredPredictedMs,
-                            stats.budget->measuredMs, stats.budget->quality),
+        text(image_,
+             format("budget: predicted %.1f ms, measured %.1f ms, quality %.2f", stats.budget->measuredPredictedMs,
+                    stats.budget->measuredMs, stats.budget->quality),
              row++);
     else
         text(image_, "budget: off", row++);
@@ -76,17 +80,20 @@ void StatsOverlay::draw(const FrameStats& stats, const DrawList& drawn, const Ca
         ++perShading[static_cast<int>(item.shading)];
         proxies += item.model != nullptr;  // grouping proxies are drawn with their own matrix
     }
-    text(image_, "levels 0/1/2/3+: " + std::to_string(perLevel[0]) + "/" + std::to_string(perLevel[1]) + "/" +
-                     std::to_string(perLevel[2]) + "/" + std::to_string(perLevel[3]) + "   proxies: " + std::to_string(proxies),
+    text(image_,
+         "levels 0/1/2/3+: " + std::to_string(perLevel[0]) + "/" + std::to_string(perLevel[1]) + "/" +
+             std::to_string(perLevel[2]) + "/" + std::to_string(perLevel[3]) + "   proxies: " + std::to_string(proxies),
          row++);
-    text(image_, "unlit/flat/gouraud/phong: " + std::to_string(perShading[0]) + "/" + std::to_string(perShading[1]) + "/" +
-                     std::to_string(perShading[2]) + "/" + std::to_string(perShading[3]),
+    text(image_,
+         "unlit/flat/gouraud/phong: " + std::to_string(perShading[0]) + "/" + std::to_string(perShading[1]) + "/" +
+             std::to_string(perShading[2]) + "/" + std::to_string(perShading[3]),
          row++);
     const bool streaming = camera.state.status == SourceStatus::Streaming;
-    text(image_, std::filesystem::path(camera.name).filename().string() + ": " + std::string(sourceStatusName(camera.state.status)) + ", " +
-                     std::to_string(camera.drops) + " dropped",
+    text(image_,
+         std::filesystem::path(camera.name).filename().string() + ": " +
+             std::string(sourceStatusName(camera.state.status)) + ", " + std::to_string(camera.drops) + " dropped",
          row++, streaming ? kText : kOver);
     if (!streaming && !camera.state.reason.empty()) text(image_, camera.state.reason.substr(0, 60), row++, kOver);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -44,4 +44,4 @@ private:
     cv::Mat image_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

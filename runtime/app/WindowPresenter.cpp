@@ -28,7 +28,7 @@ void main() { fragColor = texture(uImage, vUv); }
 #endif
 )";
 
-} // namespace
+}  // namespace
 
 WindowPresenter::OverlayProgram::OverlayProgram()
     : program(kOverlayShader), image(program.requiredLocation("uImage")), rect(program.requiredLocation("uRect")) {}
@@ -58,14 +58,17 @@ void WindowPresenter::OverlayTexture::upload(const cv::Mat& rgba) {
 // with the frame, where linear filtering keeps its thin lines whole.
 WindowPresenter::WindowPresenter() : vao_(GlVertexArray::generate()), overlay_(GL_NEAREST), frameOverlay_(GL_LINEAR) {}
 
-void WindowPresenter::drawOverlay(const OverlayTexture& overlay, glm::vec2 origin, glm::vec2 size, glm::ivec2 windowSize) {
+void WindowPresenter::drawOverlay(const OverlayTexture& overlay, glm::vec2 origin, glm::vec2 size,
+                                  glm::ivec2 windowSize) {
     glBindTexture(GL_TEXTURE_2D, overlay.texture.get());
-    const glm::vec2 ndcOrigin = 2.0f * origin / glm::vec2(windowSize) - 1.0f, ndcSize = 2.0f * size / glm::vec2(windowSize);
+    const glm::vec2 ndcOrigin = 2.0f * origin / glm::vec2(windowSize) - 1.0f,
+                    ndcSize = 2.0f * size / glm::vec2(windowSize);
     glUniform4f(program_.rect, ndcOrigin.x, ndcOrigin.y, ndcSize.x, ndcSize.y);
     glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
 }
 
-void WindowPresenter::present(const RenderTarget& frame, glm::ivec2 windowSize, const cv::Mat* overlay, const cv::Mat* frameOverlay) {
+void WindowPresenter::present(const RenderTarget& frame, glm::ivec2 windowSize, const cv::Mat* overlay,
+                              const cv::Mat* frameOverlay) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, windowSize.x, windowSize.y);
     glDisable(GL_SCISSOR_TEST);
@@ -76,11 +79,13 @@ void WindowPresenter::present(const RenderTarget& frame, glm::ivec2 windowSize, 
     const glm::ivec2 size = frame.size();
     const float scale = std::min(static_cast<float>(windowSize.x) / static_cast<float>(size.x),
                                  static_cast<float>(windowSize.y) / static_cast<float>(size.y));
-    const glm::ivec2 shown(static_cast<int>(static_cast<float>(size.x) * scale), static_cast<int>(static_cast<float>(size.y) * scale));
+    const glm::ivec2 shown(static_cast<int>(static_cast<float>(size.x) * scale),
+                           static_cast<int>(static_cast<float>(size.y) * scale));
     const glm::ivec2 origin = (windowSize - shown) / 2;
     glBindFramebuffer(GL_READ_FRAMEBUFFER, frame.framebuffer());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    glBlitFramebuffer(0, 0, size.x, size.y, origin.x, origin.y, origin.x + shown.x, origin.y + shown.y, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    glBlitFramebuffer(0, 0, size.x, size.y, origin.x, origin.y, origin.x + shown.x, origin.y + shown.y,
+                      GL_COLOR_BUFFER_BIT, GL_LINEAR);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
     const bool withPanel = overlay && !overlay->empty(), withFrameOverlay = frameOverlay && !frameOverlay->empty();
@@ -109,4 +114,4 @@ void WindowPresenter::present(const RenderTarget& frame, glm::ivec2 windowSize, 
 
 Image WindowPresenter::screenshot(glm::ivec2 windowSize) const { return readFramebuffer(0, windowSize); }
 
-} // namespace arcomp
+}  // namespace arcomp

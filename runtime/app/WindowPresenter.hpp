@@ -29,7 +29,8 @@ public:
     // `overlay`: premultiplied RGBA rows top to bottom, drawn at the top left
     // at its own pixel size; `frameOverlay`: the same at the frame's size,
     // drawn over the frame where it is shown (under `overlay`). Null for none.
-    void present(const RenderTarget& frame, glm::ivec2 windowSize, const cv::Mat* overlay, const cv::Mat* frameOverlay = nullptr);
+    void present(const RenderTarget& frame, glm::ivec2 windowSize, const cv::Mat* overlay,
+                 const cv::Mat* frameOverlay = nullptr);
     // The default framebuffer as presented last, rows top to bottom.
     Image screenshot(glm::ivec2 windowSize) const;
 
@@ -55,4 +56,4 @@ private:
     OverlayTexture overlay_, frameOverlay_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

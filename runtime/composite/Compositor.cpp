@@ -64,7 +64,7 @@ glm::vec3 windowDepthPlane(const glm::mat4& projection, const glm::vec3& inverse
     const float c = inverseDepth.z + a * -0.5f + b * (static_cast<float>(height) - 0.5f);
     return {half * a, -half * b, 0.5f - 0.5f * projection[2][2] + half * c};
 }
-} // namespace
+}  // namespace
 
 Compositor::PersonProgram::PersonProgram()
     : program(kPersonShader, "#define PEOPLE " + std::to_string(PersonDepths::kMaxPeople + 1) + "\n"),
@@ -211,7 +211,8 @@ void Compositor::person(const cv::Mat& person, const PersonTiles& tiles, const P
                     person.ptr(tiles.rows.x));
     uploadSlots(depths);
     std::array<glm::vec3, PersonDepths::kMaxPeople + 1> window{};
-    for (std::size_t i = 0; i < window.size(); ++i) window[i] = windowDepthPlane(projection, depths.inverseDepth[i], size_.y);
+    for (std::size_t i = 0; i < window.size(); ++i)
+        window[i] = windowDepthPlane(projection, depths.inverseDepth[i], size_.y);
 
     output_.bind();
     glEnable(GL_DEPTH_TEST);
@@ -241,4 +242,4 @@ void Compositor::person(const cv::Mat& person, const PersonTiles& tiles, const P
     glDepthMask(GL_TRUE);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

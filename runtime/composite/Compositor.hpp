@@ -19,9 +19,9 @@
 //   Compositor c({768, 576});
 //   c.begin(frame, {});                                 // BGR, video size
 //   renderer.draw(scene, cgList, view, {.clearColor = std::nullopt});
-//   c.beginHoldout(); holdoutRenderer.draw(holdoutScene, frontList, view, {.clearColor = std::nullopt}); c.endHoldout();
-//   c.person(personBgra, depths, view.projection);      // premultiplied BGRA
-//   Image img = c.output().read();                      // or sample c.output().colorTexture() in a window
+//   c.beginHoldout(); holdoutRenderer.draw(holdoutScene, frontList, view, {.clearColor = std::nullopt});
+//   c.endHoldout(); c.person(personBgra, depths, view.projection);      // premultiplied BGRA Image img =
+//   c.output().read();                      // or sample c.output().colorTexture() in a window
 //
 // Colour: everything is blended as premultiplied RGBA in the sRGB-encoded
 // (gamma) space the video arrives in and the renderer writes (it lights in
@@ -30,8 +30,8 @@
 // decode/encode per pixel, at the price of slightly dark soft edges between
 // very different colours.
 
-#include "runtime/gl/GlHandle.hpp"
 #include "runtime/composite/PersonDepths.hpp"
+#include "runtime/gl/GlHandle.hpp"
 #include "runtime/gl/RenderTarget.hpp"
 #include "runtime/gl/ShaderProgram.hpp"
 
@@ -48,7 +48,7 @@ namespace arcomp {
 // each frame, which keeps its buffers.
 struct PersonTiles {
     std::vector<std::uint8_t> occupied;  // per tile, row by row from the top (tileGrid)
-    std::vector<float> quads;  // the occupied tiles as quads (TileQuads), two triangles each, NDC x, y
+    std::vector<float> quads;            // the occupied tiles as quads (TileQuads), two triangles each, NDC x, y
     std::size_t count = 0;
     glm::ivec2 rows{0};  // the image rows [x, y) the occupied tiles cover
 };
@@ -84,7 +84,8 @@ public:
     void person(const cv::Mat& person, const PersonDepths& depths, const glm::mat4& projection);
     // person() with the layer's tiles from findTiles, which a pipelined
     // station finds on its capture thread.
-    void person(const cv::Mat& person, const PersonTiles& tiles, const PersonDepths& depths, const glm::mat4& projection);
+    void person(const cv::Mat& person, const PersonTiles& tiles, const PersonDepths& depths,
+                const glm::mat4& projection);
     // The kTile-square tiles where `person` (premultiplied BGRA) has alpha,
     // into `tiles` (its buffers are reused); none for an image of another type.
     static void findTiles(const cv::Mat& person, PersonTiles& tiles);
@@ -117,4 +118,4 @@ private:
     PersonProgram program_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

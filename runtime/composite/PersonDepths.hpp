@@ -53,4 +53,4 @@ struct PersonDepths {
     }
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -13,7 +13,8 @@ namespace {
 
 // Drawn over the tiles that the shadows' rectangles cover, each pixel once.
 // The quarter-size mask is blurred by four bilinear taps, a texel apart: a
-// soft edge about eight output pixels wide, for four fetches a pixel (nine cost llvmpipe a millisecond more at 768x576).
+// soft edge about eight output pixels wide, for four fetches a pixel (nine cost llvmpipe a millisecond more at
+// 768x576).
 const char* const kApplyShader = R"(
 #ifdef VERTEX
 layout(location = 0) in vec2 aPosition;
@@ -36,7 +37,7 @@ void main() {
 constexpr int kBlurMarginPx = 12;
 constexpr int kTilePx = 8;
 
-} // namespace
+}  // namespace
 
 glm::mat4 floorShadowMatrix(const glm::vec3& light) {
     // p' = p - light * (p.y / light.y): column 1 holds what y contributes.
@@ -112,8 +113,9 @@ void ShadowCatcher::cast(const Scene& scene, const DrawList& cg, const View& vie
     std::vector<MaskKey> key;
     key.reserve(flattened_.items.size());
     for (std::size_t i = 0; i < flattened_.items.size(); ++i)
-        key.push_back({flattened_.items[i].part.geometry, flattened_.items[i].part.material, flattened_.items[i].firstIndex,
-                       flattened_.items[i].indexCount, flattened_.items[i].fade, models_[i]});
+        key.push_back({flattened_.items[i].part.geometry, flattened_.items[i].part.material,
+                       flattened_.items[i].firstIndex, flattened_.items[i].indexCount, flattened_.items[i].fade,
+                       models_[i]});
     if (key != maskKey_ || viewProjection != maskViewProjection_) {
         mask_.bind();
         renderer.draw(scene, flattened_, view, {.clearColor = glm::vec4(0.0f), .coverageOnly = true});
@@ -143,7 +145,8 @@ void ShadowCatcher::cast(const Scene& scene, const DrawList& cg, const View& vie
     glUniform1f(apply_.strength, shadow.strength);
     glBindVertexArray(tileVao_.get());
     glBindBuffer(GL_ARRAY_BUFFER, tileBuffer_.get());
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(tiles_.size() * sizeof(float)), tiles_.data(), GL_STREAM_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(tiles_.size() * sizeof(float)), tiles_.data(),
+                 GL_STREAM_DRAW);
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(tiles_.size() / 2));
     glBindVertexArray(0);
     glDisable(GL_BLEND);
@@ -159,7 +162,8 @@ void ShadowCatcher::coverRectangles(glm::ivec2 size) {
     covered_.assign(static_cast<std::size_t>(tx * ty), 0);
     for (const Rectangle& r : rectangles_)
         for (int j = r.from.y / kTilePx; j <= (r.to.y - 1) / kTilePx; ++j)
-            for (int i = r.from.x / kTilePx; i <= (r.to.x - 1) / kTilePx; ++i) covered_[static_cast<std::size_t>(j * tx + i)] = 1;
+            for (int i = r.from.x / kTilePx; i <= (r.to.x - 1) / kTilePx; ++i)
+                covered_[static_cast<std::size_t>(j * tx + i)] = 1;
 }
 
 void ShadowCatcher::findMaskTiles(glm::ivec2 size) {
@@ -178,13 +182,15 @@ void ShadowCatcher::findMaskTiles(glm::ivec2 size) {
                           std::clamp(static_cast<int>(std::ceil(static_cast<float>(k + 2) * s + 0.5f)), 0, extent - 1));
     };
     for (int row = 0; row < m.y; ++row) {
-        const std::uint8_t* texels = &maskImage_.rgba[static_cast<std::size_t>(row) * static_cast<std::size_t>(m.x) * 4];
+        const std::uint8_t* texels =
+            &maskImage_.rgba[static_cast<std::size_t>(row) * static_cast<std::size_t>(m.x) * 4];
         const glm::ivec2 ys = pixels(m.y - 1 - row, scale.y, size.y);  // window rows count from the bottom
         for (int k = 0; k < m.x; ++k) {
             if (texels[k * 4 + 3] == 0) continue;
             const glm::ivec2 xs = pixels(k, scale.x, size.x);
             for (int j = ys.x / kTilePx; j <= ys.y / kTilePx; ++j)
-                for (int i = xs.x / kTilePx; i <= xs.y / kTilePx; ++i) maskTiles_[static_cast<std::size_t>(j * tx + i)] = 1;
+                for (int i = xs.x / kTilePx; i <= xs.y / kTilePx; ++i)
+                    maskTiles_[static_cast<std::size_t>(j * tx + i)] = 1;
         }
     }
 }
@@ -194,4 +200,4 @@ void ShadowCatcher::buildQuads(glm::ivec2 size) {
     pixels_ = appendTileQuads(covered_, size, kTilePx, TileRows::FromBottom, tiles_);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -24,8 +24,8 @@
 #include "graph/core/View.hpp"
 #include "runtime/config/CompositingConfig.hpp"
 #include "runtime/gl/RenderTarget.hpp"
-#include "runtime/render/Renderer.hpp"
 #include "runtime/gl/ShaderProgram.hpp"
+#include "runtime/render/Renderer.hpp"
 
 #include <vector>
 
@@ -95,4 +95,4 @@ private:
 // (towards the light, y > 0): where its shadow falls.
 glm::mat4 floorShadowMatrix(const glm::vec3& light);
 
-} // namespace arcomp
+}  // namespace arcomp

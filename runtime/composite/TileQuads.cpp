@@ -43,4 +43,4 @@ std::size_t appendTileQuads(const std::vector<std::uint8_t>& occupied, glm::ivec
     return pixels;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -28,4 +28,4 @@ inline glm::ivec2 tileGrid(glm::ivec2 size, int tile) { return (size + tile - 1)
 std::size_t appendTileQuads(const std::vector<std::uint8_t>& occupied, glm::ivec2 size, int tile, TileRows rows,
                             std::vector<float>& quads);
 
-} // namespace arcomp
+}  // namespace arcomp

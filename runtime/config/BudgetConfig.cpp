@@ -17,7 +17,8 @@ void readBudgetConfig(YamlMap& root, BudgetConfig& out) {
             level |= s == "level";
             shading |= s == "shading";
         }
-        if (!ok) b.report().add(list.Mark(), "budget.change: expected a list of 'level' and/or 'shading'");
+        if (!ok)
+            b.report().add(list.Mark(), "budget.change: expected a list of 'level' and/or 'shading'");
         else {
             out.changeLevel = level;
             out.changeShading = shading;
@@ -45,4 +46,4 @@ BudgetSettings toBudgetSettings(const BudgetConfig& c) {
     return s;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -28,13 +28,13 @@ struct BudgetConfig {
     bool changeLevel = BudgetSettings{}.changeLevel;
     bool changeShading = BudgetSettings{}.changeShading;
     std::filesystem::path calibration;
-    bool refit = true;                                              // re-fit the cost model while running
+    bool refit = true;                                                 // re-fit the cost model while running
     double upgradeMarginPct = 100.0 * BudgetSettings{}.upgradeMargin;  // hysteresis band below the target
     int holdFrames = BudgetSettings{}.holdFrames;
-    float eccentricityFloor = BudgetSettings{}.eccentricityFloor;   // 1: importance by screen size alone
+    float eccentricityFloor = BudgetSettings{}.eccentricityFloor;  // 1: importance by screen size alone
 };
 
 void readBudgetConfig(YamlMap& root, BudgetConfig& out);
 BudgetSettings toBudgetSettings(const BudgetConfig& config);
 
-} // namespace arcomp
+}  // namespace arcomp

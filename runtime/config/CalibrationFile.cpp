@@ -30,7 +30,7 @@ void readPair(YamlMap& m, const char* key, CostCoefficients& out) {
     out = {a, b};
 }
 
-} // namespace
+}  // namespace
 
 void writeCalibration(const std::filesystem::path& file, const CostModel& model, const CalibrationInfo& info) {
     if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
@@ -81,4 +81,4 @@ CostModel readCalibration(const std::filesystem::path& file, CalibrationInfo* in
     return model;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -22,8 +22,8 @@
 namespace arcomp {
 
 struct CalibrationInfo {
-    std::string device;       // the GL context it was measured on
-    glm::ivec2 viewport{0};   // the output size it was measured at
+    std::string device;      // the GL context it was measured on
+    glm::ivec2 viewport{0};  // the output size it was measured at
 };
 
 // Throws std::runtime_error when the file cannot be written.
@@ -31,4 +31,4 @@ void writeCalibration(const std::filesystem::path& file, const CostModel& model,
 // Throws ConfigError listing every problem with its place.
 CostModel readCalibration(const std::filesystem::path& file, CalibrationInfo* info = nullptr);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -39,7 +39,7 @@ void write(const std::filesystem::path& file, const std::string& text) {
     writeFileAtomically(file, std::as_bytes(std::span(text.data(), text.size())));
 }
 
-} // namespace
+}  // namespace
 
 void writeCameraFile(const std::filesystem::path& file, const CalibratedCamera& camera, const std::string& note) {
     std::vector<double> rotation;
@@ -84,18 +84,21 @@ CalibratedCamera readCameraFile(const std::filesystem::path& file) {
     for (std::size_t i = 0; i < distortion.size() && i < 5; ++i) k.distortion[i] = distortion[i];
     if (root.has("rotation") != root.has("translation"))
         report.add(root.mark(), "rotation and translation: give both (the pose) or neither (intrinsics only)");
-    if (!rotation.empty() && rotation.size() != 9) report.add(root.mark(), "rotation: expected 9 numbers, a 3x3 matrix row by row");
+    if (!rotation.empty() && rotation.size() != 9)
+        report.add(root.mark(), "rotation: expected 9 numbers, a 3x3 matrix row by row");
     if (!translation.empty() && translation.size() != 3) report.add(root.mark(), "translation: expected 3 numbers");
     if (rotation.size() == 9 && translation.size() == 3) {
         for (int row = 0; row < 3; ++row)
-            for (int column = 0; column < 3; ++column) camera.rotation[column][row] = rotation[static_cast<std::size_t>(row * 3 + column)];
+            for (int column = 0; column < 3; ++column)
+                camera.rotation[column][row] = rotation[static_cast<std::size_t>(row * 3 + column)];
         camera.translation = glm::dvec3(translation[0], translation[1], translation[2]);
         // A rotation is orthonormal with determinant +1; anything else would
         // shear or mirror the CG against the video.
         const glm::dmat3 shouldBeIdentity = glm::transpose(camera.rotation) * camera.rotation;
         double worst = std::abs(glm::determinant(camera.rotation) - 1.0);
         for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) worst = std::max(worst, std::abs(shouldBeIdentity[i][j] - (i == j ? 1.0 : 0.0)));
+            for (int j = 0; j < 3; ++j)
+                worst = std::max(worst, std::abs(shouldBeIdentity[i][j] - (i == j ? 1.0 : 0.0)));
         if (worst > 1e-3) report.add(root.mark(), "rotation: not a rotation matrix (orthonormal, determinant +1)");
     }
     root.finish();
@@ -103,4 +106,4 @@ CalibratedCamera readCameraFile(const std::filesystem::path& file) {
     return camera;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

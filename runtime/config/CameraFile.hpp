@@ -35,4 +35,4 @@ void writeCameraFile(const std::filesystem::path& file, const CalibratedCamera& 
 void writeLensFile(const std::filesystem::path& file, const CameraIntrinsics& intrinsics, const std::string& note);
 CalibratedCamera readCameraFile(const std::filesystem::path& file);
 
-} // namespace arcomp
+}  // namespace arcomp

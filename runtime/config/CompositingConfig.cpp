@@ -12,8 +12,10 @@ void readVideo(YamlMap& root, CompositingConfig& out) {
     SourceSpec spec;
     std::string kind = "file";
     v.choice("source", kind, {"file", "pattern", "v4l2", "libcamera"});
-    spec.kind = kind == "file" ? SourceKind::File : kind == "pattern" ? SourceKind::Pattern
-              : kind == "v4l2" ? SourceKind::V4l2 : SourceKind::Libcamera;
+    spec.kind = kind == "file"      ? SourceKind::File
+                : kind == "pattern" ? SourceKind::Pattern
+                : kind == "v4l2"    ? SourceKind::V4l2
+                                    : SourceKind::Libcamera;
     if (spec.kind == SourceKind::File) {
         // Not required to exist: a missing file falls back (see `fallback`).
         std::filesystem::path p;
@@ -30,9 +32,11 @@ void readVideo(YamlMap& root, CompositingConfig& out) {
     v.boolean("loop", spec.loop);
     std::string fallback = "none";
     v.choice("fallback", fallback, {"none", "pattern", "file", "image", "last_good"});
-    spec.fallback.kind = fallback == "pattern" ? FallbackKind::Pattern : fallback == "file" ? FallbackKind::File
-                       : fallback == "image"   ? FallbackKind::Image   : fallback == "last_good" ? FallbackKind::LastGoodFrame
-                                               : FallbackKind::None;
+    spec.fallback.kind = fallback == "pattern"     ? FallbackKind::Pattern
+                         : fallback == "file"      ? FallbackKind::File
+                         : fallback == "image"     ? FallbackKind::Image
+                         : fallback == "last_good" ? FallbackKind::LastGoodFrame
+                                                   : FallbackKind::None;
     if (spec.fallback.kind == FallbackKind::File || spec.fallback.kind == FallbackKind::Image) {
         std::filesystem::path p;
         v.path("fallback_path", p, true, Required::Yes);
@@ -67,8 +71,10 @@ void readMatte(YamlMap& root, MatteSpec& out, const std::optional<SourceSpec>& v
     YamlMap m = root.map("matte");
     std::string kind = "none";
     m.choice("kind", kind, {"none", "chroma", "background", "masks"});
-    out.kind = kind == "chroma" ? MatteKind::Chroma : kind == "background" ? MatteKind::Background
-             : kind == "masks" ? MatteKind::Masks : MatteKind::None;
+    out.kind = kind == "chroma"       ? MatteKind::Chroma
+               : kind == "background" ? MatteKind::Background
+               : kind == "masks"      ? MatteKind::Masks
+                                      : MatteKind::None;
     if (out.kind == MatteKind::Masks || m.has("masks")) {
         YamlMap k = m.map("masks", out.kind == MatteKind::Masks ? Required::Yes : Required::No);
         k.path("folder", out.masks.folder, true, Required::Yes);
@@ -94,9 +100,11 @@ void readMatte(YamlMap& root, MatteSpec& out, const std::optional<SourceSpec>& v
         BackgroundSpec& s = out.background;
         std::string method = "consensus";
         b.choice("method", method, {"consensus", "mog2", "knn", "cnt", "clean_plate"});
-        s.method = method == "mog2" ? BackgroundMethod::Mog2 : method == "knn" ? BackgroundMethod::Knn
-                 : method == "cnt" ? BackgroundMethod::Cnt : method == "clean_plate" ? BackgroundMethod::CleanPlate
-                 : BackgroundMethod::Consensus;
+        s.method = method == "mog2"          ? BackgroundMethod::Mog2
+                   : method == "knn"         ? BackgroundMethod::Knn
+                   : method == "cnt"         ? BackgroundMethod::Cnt
+                   : method == "clean_plate" ? BackgroundMethod::CleanPlate
+                                             : BackgroundMethod::Consensus;
         readConsensus(b, s.consensus);
         std::filesystem::path plate;
         b.path("clean_plate", plate, true);
@@ -126,8 +134,10 @@ void readCompositor(YamlMap& root, CompositorConfig& out) {
     out.holdout = holdout == "full" ? HoldoutMesh::Full : HoldoutMesh::Silhouette;
     std::string cache;
     c.text("bake_cache", cache);
-    if (cache == "none") out.bakeCache = "none";
-    else if (!cache.empty()) c.path("bake_cache", out.bakeCache, false);
+    if (cache == "none")
+        out.bakeCache = "none";
+    else if (!cache.empty())
+        c.path("bake_cache", out.bakeCache, false);
     std::string backdrop = "video";
     c.choice("backdrop", backdrop, {"video", "color"});
     out.backdropVideo = backdrop == "video";
@@ -145,7 +155,8 @@ void readCompositor(YamlMap& root, CompositorConfig& out) {
         if (const float length = glm::length(light); !(length > 0.0f) || !(light.y / length > 0.1f))
             sh.report().add(sh.mark(), sh.where() + ".light: expected a direction towards a light above the floor, "
                                                     "[x, y, z] with y well above 0 (e.g. [-0.4, 0.8, 0.45])");
-        else out.shadow.light = light / length;
+        else
+            out.shadow.light = light / length;
         sh.number("strength", out.shadow.strength, 0.0, 1.0);
         sh.finish();
     }
@@ -163,7 +174,7 @@ void readOutput(YamlMap& root, OutputConfig& out) {
     o.finish();
 }
 
-} // namespace
+}  // namespace
 
 void readCompositingConfig(YamlMap& root, CompositingConfig& out) {
     readVideo(root, out);
@@ -172,4 +183,4 @@ void readCompositingConfig(YamlMap& root, CompositingConfig& out) {
     readOutput(root, out.output);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -60,8 +60,8 @@ struct OutputConfig {
     std::filesystem::path pngDir;     // frame-000000.png ...; empty: none
     std::filesystem::path videoFile;  // empty: none
     std::string videoFourcc = "MJPG";
-    std::filesystem::path matteDir;   // the matte's alpha per frame, for inspection; empty: none
-    bool window = false;              // for `arcomp run`; replay ignores it
+    std::filesystem::path matteDir;  // the matte's alpha per frame, for inspection; empty: none
+    bool window = false;             // for `arcomp run`; replay ignores it
 };
 
 struct CompositingConfig {
@@ -73,4 +73,4 @@ struct CompositingConfig {
 
 void readCompositingConfig(YamlMap& root, CompositingConfig& out);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -29,9 +29,9 @@ std::string reasonOf(const std::vector<ConfigIssue>& issues) {
     return reason;
 }
 
-} // namespace
+}  // namespace
 
 ConfigError::ConfigError(std::vector<ConfigIssue> list)
     : BadInput(sourceOf(list), whereOf(list), reasonOf(list), joined(list)), issues(std::move(list)) {}
 
-} // namespace arcomp
+}  // namespace arcomp

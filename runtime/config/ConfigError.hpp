@@ -28,4 +28,4 @@ public:
     std::vector<ConfigIssue> issues;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -16,4 +16,4 @@ void readGazeConfig(YamlMap& root, GazeConfig& out) {
     gaze.finish();
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -24,4 +24,4 @@ struct GazeConfig {
 
 void readGazeConfig(YamlMap& root, GazeConfig& out);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -19,7 +19,8 @@ void readGroupingConfig(YamlMap& root, GroupingConfig& out) {
     g.number("omega_t_start", p.omegaStart, 1e-9, 1e3);
     g.number("omega_t_max", p.omegaMax, 1e-9, 1e3);
     g.number("omega_t_step", p.omegaStep, 1e-9, 1e3);
-    if (p.omegaMax < p.omegaStart) g.report().add(g.mark(), "grouping: omega_t_max must not be below omega_t_start");
+    if (p.omegaMax < p.omegaStart)
+        g.report().add(g.mark(), "grouping: omega_t_max must not be below omega_t_start");
     else if ((double(p.omegaMax) - double(p.omegaStart)) / double(p.omegaStep) > 1e6)
         g.report().add(g.mark(), "grouping: omega_t_step too small: more than 1,000,000 steps");
     std::string proxy = "box";
@@ -35,4 +36,4 @@ void readGroupingConfig(YamlMap& root, GroupingConfig& out) {
     g.finish();
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -28,4 +28,4 @@ struct GroupingConfig {
 
 void readGroupingConfig(YamlMap& root, GroupingConfig& out);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -18,11 +18,14 @@ void readOperatorConfig(YamlMap& root, OperatorConfig& out) {
         if (!isLoopbackAddress(out.status.bind)) {
             in_addr address{};
             if (inet_pton(AF_INET, out.status.bind.c_str(), &address) != 1)
-                status.report().add(status.mark(), "status.bind: expected an IPv4 address such as 127.0.0.1 (loopback) or 0.0.0.0 (every interface)");
+                status.report().add(
+                    status.mark(),
+                    "status.bind: expected an IPv4 address such as 127.0.0.1 (loopback) or 0.0.0.0 (every interface)");
             else if (out.status.tokenFile.empty())
-                status.report().add(status.mark(), "status.bind: " + out.status.bind +
-                                                       " is beyond loopback, so the endpoint needs status.token_file: a file "
-                                                       "holding the bearer token that scrapers must send");
+                status.report().add(status.mark(),
+                                    "status.bind: " + out.status.bind +
+                                        " is beyond loopback, so the endpoint needs status.token_file: a file "
+                                        "holding the bearer token that scrapers must send");
         }
         if (!out.status.tokenFile.empty() && std::filesystem::exists(out.status.tokenFile)) {
             try {
@@ -41,4 +44,4 @@ void readOperatorConfig(YamlMap& root, OperatorConfig& out) {
     log.finish();
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -26,7 +26,7 @@ struct StatusLimits {
 
 struct StatusEndpoint {
     std::string bind = "127.0.0.1";
-    int port = 0;                     // 0: any free port
+    int port = 0;                          // 0: any free port
     std::filesystem::path tokenFile = {};  // required when `bind` is not loopback
     StatusLimits limits = {};
     bool operator==(const StatusEndpoint&) const = default;
@@ -47,4 +47,4 @@ struct OperatorConfig {
 
 void readOperatorConfig(YamlMap& root, OperatorConfig& out);
 
-} // namespace arcomp
+}  // namespace arcomp

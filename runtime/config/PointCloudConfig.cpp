@@ -1,9 +1,9 @@
 #include "runtime/config/PointCloudConfig.hpp"
 
-#include "graph/points/LdiCamera.hpp"
-#include "graph/scenes/ProceduralTree.hpp"
 #include "graph/io/VoxelFile.hpp"
+#include "graph/points/LdiCamera.hpp"
 #include "graph/points/Voxelizer.hpp"
+#include "graph/scenes/ProceduralTree.hpp"
 #include "runtime/config/YamlMap.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -66,4 +66,4 @@ void addPointClouds(const PointCloudConfig& cfg, const std::filesystem::path& co
     }
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -26,7 +26,7 @@ struct PointCloudObject {
     int ldis = 6;                  // LDI cameras placed around the cloud
     glm::vec3 position{0.0f};
     float rotationYDegrees = 0.0f;
-    float scale = 1.0f;            // uniform: the renderer's layer needs it so
+    float scale = 1.0f;  // uniform: the renderer's layer needs it so
     int line = 0;
 };
 
@@ -41,4 +41,4 @@ void readPointCloudConfig(YamlMap& root, PointCloudConfig& out);
 void addPointClouds(const PointCloudConfig& cfg, const std::filesystem::path& configFile, Scene& scene,
                     PointCloudNodes& clouds, std::vector<std::string>& warnings);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -20,7 +20,8 @@ void readObjectLod(YamlMap& lod, ObjectConfig& o) {
                   : policy == "gaze"        ? LodPolicy::GazeAcuity
                                             : LodPolicy::ScreenSizeTimesAcuity;
     if (!lod.has("ratios")) lod.report().add(lod.mark(), lod.where() + ": 'ratios' is required (e.g. [1, 0.25, 0.05])");
-    if (!lod.has("thresholds")) lod.report().add(lod.mark(), lod.where() + ": 'thresholds' is required, one fewer than ratios");
+    if (!lod.has("thresholds"))
+        lod.report().add(lod.mark(), lod.where() + ": 'thresholds' is required, one fewer than ratios");
     lod.numbers("ratios", o.lodRatios, 1e-4, 1.0);
     lod.numbers("thresholds", o.lodThresholds, 0.0, kLarge);
     lod.number("fade_s", o.lodFadeSeconds, 0.0, 10.0);
@@ -60,9 +61,12 @@ ObjectConfig readObject(YamlMap& m, std::size_t index) {
     if (m.has("scale")) {
         const YAML::Node s = m.take("scale");
         double uniform = 0;
-        if (s.IsScalar() && YAML::convert<double>::decode(s, uniform) && uniform > 0) o.scale = glm::vec3(static_cast<float>(uniform));
-        else if (s.IsSequence() && s.size() == 3) m.vec3("scale", o.scale);
-        else m.report().add(s.Mark(), m.where() + ".scale: expected a positive number or a list of 3 numbers");
+        if (s.IsScalar() && YAML::convert<double>::decode(s, uniform) && uniform > 0)
+            o.scale = glm::vec3(static_cast<float>(uniform));
+        else if (s.IsSequence() && s.size() == 3)
+            m.vec3("scale", o.scale);
+        else
+            m.report().add(s.Mark(), m.where() + ".scale: expected a positive number or a list of 3 numbers");
     }
     if (m.has("lod")) {
         YamlMap lod = m.map("lod");
@@ -74,7 +78,8 @@ ObjectConfig readObject(YamlMap& m, std::size_t index) {
         // Required: a mover with no turning point would leave for good on a
         // station that runs all day.
         motion.number("range_m", o.rangeMetres, 1e-3, kLarge, Required::Yes);
-        if (glm::length(o.velocity) == 0.0f) motion.report().add(motion.mark(), motion.where() + ".velocity: must not be zero");
+        if (glm::length(o.velocity) == 0.0f)
+            motion.report().add(motion.mark(), motion.where() + ".velocity: must not be zero");
         motion.finish();
     }
     // Which animation exists is known once the model is loaded (buildScene,
@@ -99,7 +104,7 @@ ObjectConfig readObject(YamlMap& m, std::size_t index) {
     return o;
 }
 
-} // namespace
+}  // namespace
 
 StationConfig loadStationConfig(const std::filesystem::path& file) {
     ConfigReport report(file);
@@ -121,8 +126,10 @@ StationConfig loadStationConfig(const std::filesystem::path& file) {
         if (!cfg.camera.calibration.empty()) {
             for (const char* key : {"eye", "target", "up", "fovy_deg"})
                 if (camera.has(key))
-                    camera.report().add(camera.mark(), std::string("camera.") + key +
-                                                           ": not used with camera.calibration, which gives the real camera's pose and field of view");
+                    camera.report().add(
+                        camera.mark(),
+                        std::string("camera.") + key +
+                            ": not used with camera.calibration, which gives the real camera's pose and field of view");
             if (std::filesystem::exists(cfg.camera.calibration)) {
                 try {
                     cfg.camera.calibrated = readCameraFile(cfg.camera.calibration);
@@ -140,7 +147,8 @@ StationConfig loadStationConfig(const std::filesystem::path& file) {
         if (cfg.camera.calibrated && !camera.has("size")) cfg.camera.size = cfg.camera.calibrated->intrinsics.imageSize;
         camera.number("near", cfg.camera.near, 1e-6, kLarge);
         camera.number("far", cfg.camera.far, 1e-6, kLarge);
-        if (cfg.camera.far <= cfg.camera.near) camera.report().add(camera.mark(), "camera: far must be larger than near");
+        if (cfg.camera.far <= cfg.camera.near)
+            camera.report().add(camera.mark(), "camera: far must be larger than near");
         if (cfg.camera.calibration.empty() && glm::length(cfg.camera.eye - cfg.camera.target) <= 0.0f)
             camera.report().add(camera.mark(), "camera: eye and target must differ");
         camera.finish();
@@ -156,7 +164,8 @@ StationConfig loadStationConfig(const std::filesystem::path& file) {
         std::string environment;
         render.text("environment", environment);
         if (environment.empty())
-            render.report().add(render.mark(), "render.environment: expected 'neutral' or an equirectangular .hdr or .png file");
+            render.report().add(render.mark(),
+                                "render.environment: expected 'neutral' or an equirectangular .hdr or .png file");
         else if (environment != "neutral") {
             std::filesystem::path p(environment);
             if (p.is_relative()) p = file.parent_path() / p;
@@ -178,4 +187,4 @@ StationConfig loadStationConfig(const std::filesystem::path& file) {
     return cfg;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -6,13 +6,13 @@
 //   StationConfig cfg = loadStationConfig("configs/demo-replay.yaml");
 
 #include "graph/camera/CalibratedCamera.hpp"
-#include "graph/lod/Lod.hpp"
 #include "graph/core/Shading.hpp"
-#include "runtime/config/CompositingConfig.hpp"
-#include "runtime/config/OperatorConfig.hpp"
+#include "graph/lod/Lod.hpp"
 #include "runtime/config/BudgetConfig.hpp"
-#include "runtime/config/GroupingConfig.hpp"
+#include "runtime/config/CompositingConfig.hpp"
 #include "runtime/config/GazeConfig.hpp"
+#include "runtime/config/GroupingConfig.hpp"
+#include "runtime/config/OperatorConfig.hpp"
 #include "runtime/config/PointCloudConfig.hpp"
 
 #include <glm/glm.hpp>
@@ -95,4 +95,4 @@ struct StationConfig {
 
 StationConfig loadStationConfig(const std::filesystem::path& file);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -23,13 +23,15 @@ std::string readBearerToken(const std::filesystem::path& file) {
     const auto space = [](unsigned char c) { return std::isspace(c) != 0; };
     line.erase(std::find_if_not(line.rbegin(), line.rend(), space).base(), line.end());
     line.erase(line.begin(), std::find_if_not(line.begin(), line.end(), space));
-    if (line.empty()) throw BadInput(file.string(), "line 1", "the status token file is empty; expected a token on its first line");
+    if (line.empty())
+        throw BadInput(file.string(), "line 1", "the status token file is empty; expected a token on its first line");
     if (line.size() < kMinBearerTokenLength)
         throw BadInput(file.string(), "line 1",
                        "the status token is " + std::to_string(line.size()) + " characters; expected at least " +
                            std::to_string(kMinBearerTokenLength) + " (e.g. from `openssl rand -hex 32`)");
     if (std::any_of(line.begin(), line.end(), [](unsigned char c) { return c < 0x21 || c > 0x7e; }))
-        throw BadInput(file.string(), "line 1", "the status token holds a space or a non-ASCII character; expected printable ASCII");
+        throw BadInput(file.string(), "line 1",
+                       "the status token holds a space or a non-ASCII character; expected printable ASCII");
     return line;
 }
 
@@ -44,8 +46,9 @@ bool bearerTokenMatches(std::string_view authorization, std::string_view token) 
     // time depends on the token's length only, which is no secret.
     unsigned difference = given.size() == token.size() ? 0u : 1u;
     for (std::size_t i = 0; i < token.size(); ++i)
-        difference |= static_cast<unsigned char>(token[i]) ^ static_cast<unsigned char>(i < given.size() ? given[i] : 0);
+        difference |=
+            static_cast<unsigned char>(token[i]) ^ static_cast<unsigned char>(i < given.size() ? given[i] : 0);
     return difference == 0;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

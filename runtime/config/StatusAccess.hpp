@@ -29,4 +29,4 @@ constexpr std::size_t kMinBearerTokenLength = 16;
 // time.
 bool bearerTokenMatches(std::string_view authorization, std::string_view token);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -11,11 +11,11 @@ namespace fs = std::filesystem;
 namespace {
 // An absent node; YAML::Node{} would be a defined null.
 YAML::Node absent() { return YAML::Node(YAML::NodeType::Undefined); }
-} // namespace
+}  // namespace
 
 void ConfigReport::add(const YAML::Mark& mark, std::string message) {
-    issues_.push_back({file_.string(), mark.line < 0 ? 0 : mark.line + 1, mark.column < 0 ? 0 : mark.column + 1,
-                       std::move(message)});
+    issues_.push_back(
+        {file_.string(), mark.line < 0 ? 0 : mark.line + 1, mark.column < 0 ? 0 : mark.column + 1, std::move(message)});
 }
 
 void ConfigReport::addFileLevel(std::string message) { issues_.push_back({file_.string(), 0, 0, std::move(message)}); }
@@ -83,7 +83,9 @@ void YamlMap::number(const char* key, double& out, double min, double max, Requi
     if (!n) return;
     double v = 0;
     if (!n.IsScalar() || !YAML::convert<double>::decode(n, v) || !std::isfinite(v)) {
-        report_.add(n.Mark(), keyPath(key) + ": expected a number, got '" + (n.IsScalar() ? n.Scalar() : "a " + std::string(n.IsMap() ? "mapping" : "list")) + "'");
+        report_.add(n.Mark(), keyPath(key) + ": expected a number, got '" +
+                                  (n.IsScalar() ? n.Scalar() : "a " + std::string(n.IsMap() ? "mapping" : "list")) +
+                                  "'");
         return;
     }
     if (v < min || v > max) {
@@ -106,7 +108,8 @@ void YamlMap::integer(const char* key, int& out, int min, int max, Required r) {
     if (!n) return;
     int v = 0;
     if (!n.IsScalar() || !YAML::convert<int>::decode(n, v)) {
-        report_.add(n.Mark(), keyPath(key) + ": expected a whole number, got '" + (n.IsScalar() ? n.Scalar() : "") + "'");
+        report_.add(n.Mark(),
+                    keyPath(key) + ": expected a whole number, got '" + (n.IsScalar() ? n.Scalar() : "") + "'");
         return;
     }
     if (v < min || v > max) {
@@ -252,4 +255,4 @@ void YamlMap::finish() {
     }
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -89,4 +89,4 @@ private:
 // with their place and leave the root empty.
 YAML::Node loadYamlFile(ConfigReport& report);
 
-} // namespace arcomp
+}  // namespace arcomp

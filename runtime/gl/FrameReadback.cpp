@@ -53,7 +53,8 @@ void FrameReadback::collect(Slot& slot, Image& into) {
     into.height = slot.size.y;
     into.rgba.resize(slot.capacity);
     glBindBuffer(GL_PIXEL_PACK_BUFFER, slot.buffer.get());
-    const void* mapped = glMapBufferRange(GL_PIXEL_PACK_BUFFER, 0, static_cast<GLsizeiptr>(slot.capacity), GL_MAP_READ_BIT);
+    const void* mapped =
+        glMapBufferRange(GL_PIXEL_PACK_BUFFER, 0, static_cast<GLsizeiptr>(slot.capacity), GL_MAP_READ_BIT);
     if (!mapped) {
         // The frames in the two buffers are lost; later ones are read the plain way.
         const GLenum error = glGetError();
@@ -62,8 +63,8 @@ void FrameReadback::collect(Slot& slot, Image& into) {
         for (Slot& s : slots_) s.pending = false;
         char hex[16];
         std::snprintf(hex, sizeof hex, "0x%04x", error);
-        throw std::runtime_error(std::string("reading a frame back: the GL cannot map its pixel buffer (GL error ") + hex +
-                                 "); the frames in flight are lost, later frames are read synchronously");
+        throw std::runtime_error(std::string("reading a frame back: the GL cannot map its pixel buffer (GL error ") +
+                                 hex + "); the frames in flight are lost, later frames are read synchronously");
     }
     // GL's rows run bottom to top: copied into place, the flip costs nothing extra.
     const std::size_t row = static_cast<std::size_t>(slot.size.x) * 4;
@@ -75,4 +76,4 @@ void FrameReadback::collect(Slot& slot, Image& into) {
     glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -53,4 +53,4 @@ private:
     std::size_t next_ = 0;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -32,4 +32,4 @@ double FrameTimer::end() {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -49,4 +49,4 @@ private:
     std::chrono::steady_clock::time_point start_{};
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -18,7 +18,7 @@ bool hasExtension(const char* name) {
     }
     return false;
 }
-} // namespace
+}  // namespace
 
 std::string_view toString(GlApiKind kind) { return kind == GlApiKind::Gl33 ? "gl33" : "es3"; }
 
@@ -30,8 +30,8 @@ std::optional<GlApiKind> parseGlApi(std::string_view text, bool& isAuto) {
 }
 
 void loadGl(GlApiKind kind, const GetProcAddress& getProc) {
-#define ARCOMP_LOAD_GL(suffix, name)                                                          \
-    gl::name = reinterpret_cast<PFNGL##suffix##PROC>(getProc(#name));                         \
+#define ARCOMP_LOAD_GL(suffix, name)                                                                                   \
+    gl::name = reinterpret_cast<PFNGL##suffix##PROC>(getProc(#name));                                                  \
     if (!gl::name) throw std::runtime_error("OpenGL entry point " #name " is not available");
     ARCOMP_GL_FUNCTIONS(ARCOMP_LOAD_GL)
 #undef ARCOMP_LOAD_GL
@@ -73,4 +73,4 @@ std::string glDescription() {
     return std::string(toString(g_api)) + ": " + str(GL_VERSION) + " on " + str(GL_RENDERER);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

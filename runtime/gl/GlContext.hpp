@@ -41,4 +41,4 @@ private:
     void* context_ = nullptr;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

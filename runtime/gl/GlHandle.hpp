@@ -52,8 +52,10 @@ public:
 
     void reset() {
         if (!name_) return;
-        if constexpr (std::is_invocable_v<decltype(Destroy), GLuint>) Destroy(name_);  // glDeleteProgram, glDeleteShader
-        else Destroy(1, &name_);
+        if constexpr (std::is_invocable_v<decltype(Destroy), GLuint>)
+            Destroy(name_);  // glDeleteProgram, glDeleteShader
+        else
+            Destroy(1, &name_);
         name_ = 0;
     }
 
@@ -71,4 +73,4 @@ using GlProgram = GlHandle<gl::glCreateProgram, gl::glDeleteProgram>;
 // glCreateShader needs the stage: adopt its result rather than generate().
 using GlShader = GlHandle<gl::glCreateShader, gl::glDeleteShader>;
 
-} // namespace arcomp
+}  // namespace arcomp

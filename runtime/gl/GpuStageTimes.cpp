@@ -55,4 +55,4 @@ void GpuStageTimes::collect() {
     }
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -62,4 +62,4 @@ private:
     bool finish_ = false;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -46,7 +46,7 @@ EGLDisplay openDisplay(std::string& why) {
     return EGL_NO_DISPLAY;
 }
 
-} // namespace
+}  // namespace
 
 bool HeadlessContext::tryCreate(GlApiKind kind, std::string& why) {
     auto display = static_cast<EGLDisplay>(display_);
@@ -55,8 +55,8 @@ bool HeadlessContext::tryCreate(GlApiKind kind, std::string& why) {
         why += std::string(toString(kind)) + ": eglBindAPI failed; ";
         return false;
     }
-    const EGLint configAttributes[] = {EGL_RENDERABLE_TYPE, es ? EGL_OPENGL_ES3_BIT : EGL_OPENGL_BIT,
-                                       EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_NONE};
+    const EGLint configAttributes[] = {EGL_RENDERABLE_TYPE, es ? EGL_OPENGL_ES3_BIT : EGL_OPENGL_BIT, EGL_SURFACE_TYPE,
+                                       EGL_PBUFFER_BIT, EGL_NONE};
     EGLConfig config = nullptr;
     EGLint count = 0;
     // Surfaceless rendering needs no surface type; drivers without pbuffer
@@ -69,7 +69,9 @@ bool HeadlessContext::tryCreate(GlApiKind kind, std::string& why) {
         }
     }
     std::vector<EGLint> contextAttributes{EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, es ? 0 : 3};
-    if (!es) contextAttributes.insert(contextAttributes.end(), {EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT});
+    if (!es)
+        contextAttributes.insert(contextAttributes.end(),
+                                 {EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT});
     contextAttributes.push_back(EGL_NONE);
     EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, contextAttributes.data());
     if (context == EGL_NO_CONTEXT) {
@@ -111,4 +113,4 @@ void HeadlessContext::makeCurrent() {
                    static_cast<EGLContext>(context_));
 }
 
-} // namespace arcomp
+}  // namespace arcomp

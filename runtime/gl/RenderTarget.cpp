@@ -71,4 +71,4 @@ Image RenderTarget::read() const { return readFramebuffer(framebuffer_.get(), si
 
 void RenderTarget::read(Image& into) const { readFramebuffer(framebuffer_.get(), size_, into); }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -41,4 +41,4 @@ private:
 Image readFramebuffer(GLuint framebuffer, glm::ivec2 size);
 void readFramebuffer(GLuint framebuffer, glm::ivec2 size, Image& into);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -28,7 +28,7 @@ GlShader compile(GLenum stage, const std::string& text) {
     return shader;
 }
 
-} // namespace
+}  // namespace
 
 ShaderProgram::ShaderProgram(const std::string& source, const std::string& defines) : defines_(defines) {
     const std::string common = shaderPreamble() + defines;
@@ -75,7 +75,8 @@ void main() {
     gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
 }
 #else
-)" + fragment + "\n#endif\n";
+)" + fragment +
+           "\n#endif\n";
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -42,4 +42,4 @@ private:
 // `fragment` is the fragment stage.
 std::string fullScreenTriangle(const std::string& fragment);
 
-} // namespace arcomp
+}  // namespace arcomp

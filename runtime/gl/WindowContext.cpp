@@ -13,7 +13,7 @@ std::string lastGlfwError() {
     glfwGetError(&description);
     return description ? description : "unknown GLFW error";
 }
-} // namespace
+}  // namespace
 
 std::unique_ptr<WindowContext> WindowContext::create(const WindowSettings& settings, GlRequest request) {
     if (!glfwInit()) throw std::runtime_error("cannot open a window: " + lastGlfwError());
@@ -25,7 +25,8 @@ std::unique_ptr<WindowContext> WindowContext::create(const WindowSettings& setti
     }
     std::string why;
     for (GlApiKind kind : {GlApiKind::Gl33, GlApiKind::Es3}) {
-        if ((kind == GlApiKind::Gl33 && request == GlRequest::Es3) || (kind == GlApiKind::Es3 && request == GlRequest::Gl33))
+        if ((kind == GlApiKind::Gl33 && request == GlRequest::Es3) ||
+            (kind == GlApiKind::Es3 && request == GlRequest::Gl33))
             continue;
         glfwDefaultWindowHints();
         if (kind == GlApiKind::Gl33) {
@@ -91,4 +92,4 @@ glm::dvec2 WindowContext::cursor() const {
     return c;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -19,7 +19,7 @@ struct WindowSettings {
     std::string title = "arcomp";
     glm::ivec2 size{1280, 720};
     bool fullscreen = false;
-    int monitor = 0;      // index into the connected monitors, for fullscreen
+    int monitor = 0;  // index into the connected monitors, for fullscreen
     bool vsync = true;
     bool hideCursor = false;
 };
@@ -45,4 +45,4 @@ private:
     std::function<void(int)> keyHandler_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -37,4 +37,4 @@ private:
     int fd_ = -1;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

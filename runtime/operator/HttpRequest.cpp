@@ -8,7 +8,8 @@ namespace {
 
 // RFC 9110's tchar: what a method or a header name may be made of.
 bool isTokenChar(char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || std::string_view("!#$%&'*+-.^_`|~").find(c) != std::string_view::npos;
+    return std::isalnum(static_cast<unsigned char>(c)) ||
+           std::string_view("!#$%&'*+-.^_`|~").find(c) != std::string_view::npos;
 }
 
 bool isToken(std::string_view s) { return !s.empty() && std::all_of(s.begin(), s.end(), isTokenChar); }
@@ -42,15 +43,21 @@ std::string_view takeLine(std::string_view& rest) {
     return line;
 }
 
-} // namespace
+}  // namespace
 
 HttpRequestHead parseHttpRequestHead(std::string_view received) {
     // The head ends at the first empty line.
     std::size_t end = std::string_view::npos;
     for (std::size_t i = received.find('\n'); i != std::string_view::npos; i = received.find('\n', i + 1)) {
         const std::size_t next = i + 1;
-        if (next < received.size() && received[next] == '\n') { end = next + 1; break; }
-        if (next + 1 < received.size() && received[next] == '\r' && received[next + 1] == '\n') { end = next + 2; break; }
+        if (next < received.size() && received[next] == '\n') {
+            end = next + 1;
+            break;
+        }
+        if (next + 1 < received.size() && received[next] == '\r' && received[next + 1] == '\n') {
+            end = next + 2;
+            break;
+        }
     }
     if (end == std::string_view::npos || end > kMaxHttpHeadBytes) {
         HttpRequestHead head;
@@ -67,8 +74,9 @@ HttpRequestHead parseHttpRequestHead(std::string_view received) {
     const std::string_view target = requestLine.substr(s1 + 1, s2 - s1 - 1);
     const std::string_view version = requestLine.substr(s2 + 1);
     if (!isToken(method)) return bad("the method is not a token");
-    if (target.empty() || target.front() != '/' ||
-        std::any_of(target.begin(), target.end(), [](char c) { return static_cast<unsigned char>(c) <= ' ' || c == 0x7f; }))
+    if (target.empty() || target.front() != '/' || std::any_of(target.begin(), target.end(), [](char c) {
+            return static_cast<unsigned char>(c) <= ' ' || c == 0x7f;
+        }))
         return bad("the target is not a path starting with /");
     if (version != "HTTP/1.1" && version != "HTTP/1.0") return bad("the version is not HTTP/1.0 or HTTP/1.1");
 
@@ -82,7 +90,8 @@ HttpRequestHead parseHttpRequestHead(std::string_view received) {
         if (colon == std::string_view::npos || !isToken(line.substr(0, colon)))
             return bad("a header line is not `Name: value`");
         const std::string_view value = trimmed(line.substr(colon + 1));
-        if (std::any_of(value.begin(), value.end(), [](char c) { return (c >= 0 && c < ' ' && c != '\t') || c == 0x7f; }))
+        if (std::any_of(value.begin(), value.end(),
+                        [](char c) { return (c >= 0 && c < ' ' && c != '\t') || c == 0x7f; }))
             return bad("a header value holds a control character");
         if (equalsIgnoringCase(line.substr(0, colon), "authorization")) {
             // Two credentials would leave it to chance which one is checked.
@@ -94,4 +103,4 @@ HttpRequestHead parseHttpRequestHead(std::string_view received) {
     return head;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -31,4 +31,4 @@ constexpr std::size_t kMaxHttpHeadBytes = 8192;
 
 HttpRequestHead parseHttpRequestHead(std::string_view received);
 
-} // namespace arcomp
+}  // namespace arcomp

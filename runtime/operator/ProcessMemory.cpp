@@ -40,8 +40,8 @@ int openFileDescriptors() {
     return n - 1;  // the iterator's own descriptor
 }
 
-} // namespace
+}  // namespace
 
 ProcessMemory ProcessMemory::now() { return {residentBytes(), heapBytesInUse(), openFileDescriptors()}; }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -24,4 +24,4 @@ struct ProcessMemory {
     static ProcessMemory now();
 };
 
-} // namespace arcomp
+}  // namespace arcomp

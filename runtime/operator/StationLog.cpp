@@ -28,4 +28,4 @@ void configureLogging(const LogSettings& settings) {
     spdlog::set_default_logger(logger);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

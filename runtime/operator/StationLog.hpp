@@ -14,4 +14,4 @@ namespace arcomp {
 // with stderr alone).
 void configureLogging(const LogSettings& settings);
 
-} // namespace arcomp
+}  // namespace arcomp

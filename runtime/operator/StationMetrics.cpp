@@ -16,13 +16,15 @@ std::string labelValue(std::string_view text) {
     std::string out;
     for (char c : text) {
         if (c == '\\' || c == '"') out += '\\';
-        if (c == '\n') out += "\\n";
-        else out += c;
+        if (c == '\n')
+            out += "\\n";
+        else
+            out += c;
     }
     return out;
 }
 
-} // namespace
+}  // namespace
 
 StationMetrics::StationMetrics() : started_(std::chrono::steady_clock::now()) {}
 
@@ -45,7 +47,8 @@ void StationMetrics::recordFrame(double frameMs) {
 // reading, not of the last frame.
 std::size_t StationMetrics::framesInLastSecond() const {
     const auto since = std::chrono::steady_clock::now() - std::chrono::seconds(1);
-    return static_cast<std::size_t>(std::count_if(recentFrames_.begin(), recentFrames_.end(), [&](auto t) { return t > since; }));
+    return static_cast<std::size_t>(
+        std::count_if(recentFrames_.begin(), recentFrames_.end(), [&](auto t) { return t > since; }));
 }
 
 void StationMetrics::forgetCameras() {
@@ -58,8 +61,10 @@ void StationMetrics::setCamera(const std::string& name, const SourceState& state
     Camera& camera = cameras_[name];
     const bool lost = isLost(state.status) || state.status == SourceStatus::Stalled;
     if (camera.wasLost && state.status == SourceStatus::Streaming) ++camera.reconnects;
-    if (lost) camera.wasLost = true;
-    else if (state.status == SourceStatus::Streaming) camera.wasLost = false;
+    if (lost)
+        camera.wasLost = true;
+    else if (state.status == SourceStatus::Streaming)
+        camera.wasLost = false;
     camera.state = state;
     camera.drops = drops;
 }
@@ -79,8 +84,11 @@ void StationMetrics::setConfig(std::string file) {
 std::string StationMetrics::statusJson() const {
     std::lock_guard lock(mutex_);
     const double uptime = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
-    nlohmann::ordered_json status = {{"config", config_}, {"uptime_s", uptime}, {"frames", frames_},
-                                     {"fps", framesInLastSecond()}, {"last_frame_ms", lastFrameMs_}};
+    nlohmann::ordered_json status = {{"config", config_},
+                                     {"uptime_s", uptime},
+                                     {"frames", frames_},
+                                     {"fps", framesInLastSecond()},
+                                     {"last_frame_ms", lastFrameMs_}};
     nlohmann::ordered_json& cameras = status["cameras"] = nlohmann::ordered_json::array();
     for (const auto& [name, camera] : cameras_)
         cameras.push_back({{"name", name},
@@ -118,7 +126,8 @@ std::string StationMetrics::prometheusText() const {
       << "# HELP arcomp_camera_up 1 while the camera streams, 0 otherwise.\n"
          "# TYPE arcomp_camera_up gauge\n";
     for (const auto& [name, camera] : cameras_)
-        s << "arcomp_camera_up{camera=\"" << labelValue(name) << "\"} " << (camera.state.status == SourceStatus::Streaming ? 1 : 0) << '\n';
+        s << "arcomp_camera_up{camera=\"" << labelValue(name) << "\"} "
+          << (camera.state.status == SourceStatus::Streaming ? 1 : 0) << '\n';
     s << "# HELP arcomp_camera_dropped_frames_total Frames a camera delivered that the station was too slow to show.\n"
          "# TYPE arcomp_camera_dropped_frames_total counter\n";
     for (const auto& [name, camera] : cameras_)
@@ -133,4 +142,4 @@ std::string StationMetrics::prometheusText() const {
     return s.str();
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -24,7 +24,8 @@ namespace arcomp {
 class StationMetrics {
 public:
     // Upper bounds of the frame-time histogram, in seconds (Prometheus `le`).
-    static constexpr std::array<double, 9> kFrameTimeBuckets{0.005, 0.010, 0.0167, 0.020, 0.0333, 0.050, 0.100, 0.250, 1.0};
+    static constexpr std::array<double, 9> kFrameTimeBuckets{0.005, 0.010, 0.0167, 0.020, 0.0333,
+                                                             0.050, 0.100, 0.250,  1.0};
 
     StationMetrics();
 
@@ -53,7 +54,8 @@ private:
     std::uint64_t frames_ = 0;
     double frameSecondsSum_ = 0.0;
     std::array<std::uint64_t, kFrameTimeBuckets.size()> bucketCounts_{};  // not cumulative
-    std::deque<std::chrono::steady_clock::time_point> recentFrames_;     // for fps: the last second's, pruned as it is read
+    std::deque<std::chrono::steady_clock::time_point>
+        recentFrames_;  // for fps: the last second's, pruned as it is read
     std::size_t framesInLastSecond() const;
     double lastFrameMs_ = 0.0;
     std::map<std::string, Camera> cameras_;
@@ -61,4 +63,4 @@ private:
     std::uint64_t errors_ = 0;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -1,9 +1,9 @@
 #include "runtime/operator/StatusServer.hpp"
 
 #include "graph/core/BadInput.hpp"
+#include "runtime/config/StatusAccess.hpp"
 #include "runtime/operator/FileDescriptor.hpp"
 #include "runtime/operator/HttpRequest.hpp"
-#include "runtime/config/StatusAccess.hpp"
 
 #include <arpa/inet.h>
 #include <netinet/in.h>
@@ -42,15 +42,15 @@ struct Connection {
 std::string httpReply(int code, const char* reason, const char* contentType, const std::string& body,
                       const char* extraHeader = "") {
     return "HTTP/1.1 " + std::to_string(code) + " " + reason + "\r\nContent-Type: " + contentType +
-           "\r\nContent-Length: " + std::to_string(body.size()) + "\r\nConnection: close\r\nCache-Control: no-store\r\n" +
-           extraHeader + "\r\n" + body;
+           "\r\nContent-Length: " + std::to_string(body.size()) +
+           "\r\nConnection: close\r\nCache-Control: no-store\r\n" + extraHeader + "\r\n" + body;
 }
 
 std::string errorReply(int code, const char* reason, const std::string& detail, const char* extraHeader = "") {
     return httpReply(code, reason, "text/plain; charset=utf-8", detail + "\n", extraHeader);
 }
 
-} // namespace
+}  // namespace
 
 struct StatusServer::Impl {
     Impl(const StationMetrics& m, StatusLimits l) : metrics(m), limits(l) {}
@@ -90,7 +90,8 @@ void StatusServer::Impl::run() {
             wakeAt = std::min(wakeAt, c.deadline);
         }
         const auto waitMs = std::chrono::ceil<std::chrono::milliseconds>(wakeAt - before).count();
-        if (::poll(polled.data(), polled.size(), static_cast<int>(std::max<long long>(waitMs, 0))) < 0 && errno != EINTR)
+        if (::poll(polled.data(), polled.size(), static_cast<int>(std::max<long long>(waitMs, 0))) < 0 &&
+            errno != EINTR)
             std::this_thread::sleep_for(std::chrono::milliseconds(10));  // ENOMEM: try again shortly
         if (polled[0].revents != 0) return;
 
@@ -98,8 +99,10 @@ void StatusServer::Impl::run() {
         for (std::size_t i = 0; i < connections.size(); ++i) {
             if (polled[i + 2].revents == 0) continue;
             Connection& c = connections[i];
-            if (c.replying()) send(c);
-            else receive(c, now);
+            if (c.replying())
+                send(c);
+            else
+                receive(c, now);
         }
         for (Connection& c : connections)
             if (!c.closed && now >= c.deadline) {
@@ -119,7 +122,8 @@ void StatusServer::Impl::acceptWaiting(Clock::time_point now) {
     for (int i = 0; i < std::max(1, limits.maxConnections / 2); ++i) {
         sockaddr_in peer{};
         socklen_t length = sizeof peer;
-        const int fd = ::accept4(listener.get(), reinterpret_cast<sockaddr*>(&peer), &length, SOCK_NONBLOCK | SOCK_CLOEXEC);
+        const int fd =
+            ::accept4(listener.get(), reinterpret_cast<sockaddr*>(&peer), &length, SOCK_NONBLOCK | SOCK_CLOEXEC);
         if (fd >= 0) {
             admit(FileDescriptor(fd), ntohl(peer.sin_addr.s_addr), now);
             continue;
@@ -221,7 +225,8 @@ std::string StatusServer::Impl::answer(const HttpRequestHead& head) {
         ++refused;
         ++unauthorized;
         return errorReply(401, "Unauthorized",
-                          head.authorization.empty() ? "this endpoint needs `Authorization: Bearer <token>`" : "wrong token",
+                          head.authorization.empty() ? "this endpoint needs `Authorization: Bearer <token>`"
+                                                     : "wrong token",
                           "WWW-Authenticate: Bearer realm=\"arcomp\"\r\n");
     }
     if (head.method != "GET") {
@@ -264,7 +269,8 @@ void StatusServer::Impl::send(Connection& c) {
 StatusServer::StatusServer(const StationMetrics& metrics, const StatusEndpoint& endpoint)
     : impl_(std::make_unique<Impl>(metrics, endpoint.limits)) {
     const std::string address = endpoint.bind + ":" + std::to_string(endpoint.port);
-    if (!endpoint.tokenFile.empty()) impl_->token = readBearerToken(endpoint.tokenFile);
+    if (!endpoint.tokenFile.empty())
+        impl_->token = readBearerToken(endpoint.tokenFile);
     else if (!isLoopbackAddress(endpoint.bind))
         throw BadInput("status", "bind " + endpoint.bind,
                        "an endpoint beyond loopback needs status.token_file (a file holding the bearer token)");
@@ -289,7 +295,8 @@ StatusServer::StatusServer(const StationMetrics& metrics, const StatusEndpoint& 
     port_ = ntohs(socketAddress.sin_port);
 
     impl_->wake = FileDescriptor(::eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK));
-    if (!impl_->wake) throw std::runtime_error("status server: cannot create its eventfd: " + std::string(std::strerror(errno)));
+    if (!impl_->wake)
+        throw std::runtime_error("status server: cannot create its eventfd: " + std::string(std::strerror(errno)));
     impl_->thread = std::thread([impl = impl_.get()] {
         pthread_setname_np(pthread_self(), "arcomp-status");
         impl->run();
@@ -306,4 +313,4 @@ StatusServerCounters StatusServer::counters() const {
     return {impl_->served, impl_->refused, impl_->unauthorized, impl_->evicted, impl_->timedOut};
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -21,8 +21,8 @@
 // error with the address or file in the message; the station logs it and
 // runs on without a status endpoint.
 
-#include "runtime/operator/StationMetrics.hpp"
 #include "runtime/config/OperatorConfig.hpp"
+#include "runtime/operator/StationMetrics.hpp"
 
 #include <chrono>
 #include <cstdint>
@@ -62,4 +62,4 @@ private:
     int port_ = 0;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -43,7 +43,7 @@ glm::vec3 neutralRadiance(const glm::vec3& d) {
     return glm::vec3(value);
 }
 
-} // namespace
+}  // namespace
 
 glm::vec2 equirectangularUv(const glm::vec3& d) {
     return {std::atan2(d.z, d.x) / (2.0f * kPi) + 0.5f, 0.5f - std::asin(std::clamp(d.y, -1.0f, 1.0f)) / kPi};
@@ -91,11 +91,13 @@ Environment loadEnvironment(const std::filesystem::path& file) {
     if (image.empty())
         throw BadInput(name, "", "cannot decode the environment: expected a Radiance .hdr or a PNG/JPEG image");
     if (image.cols != 2 * image.rows)
-        throw BadInput(name, "", "environment is " + std::to_string(image.cols) + "x" + std::to_string(image.rows) +
-                                     ": expected an equirectangular image, twice as wide as high");
+        throw BadInput(name, "",
+                       "environment is " + std::to_string(image.cols) + "x" + std::to_string(image.rows) +
+                           ": expected an equirectangular image, twice as wide as high");
     const int channels = image.channels();
     if (channels != 1 && channels != 3 && channels != 4)
-        throw BadInput(name, "", "environment has " + std::to_string(channels) + " channels: expected grey, RGB or RGBA");
+        throw BadInput(name, "",
+                       "environment has " + std::to_string(channels) + " channels: expected grey, RGB or RGBA");
     cv::Mat values;
     const bool linear = image.depth() == CV_32F || image.depth() == CV_64F;
     const double scale = image.depth() == CV_8U ? 1.0 / 255.0 : image.depth() == CV_16U ? 1.0 / 65535.0 : 1.0;
@@ -151,4 +153,4 @@ void writeRadianceHdr(const std::filesystem::path& file, const Environment& env)
     if (!out) throw std::runtime_error("cannot write " + file.string() + ": write failed");
 }
 
-} // namespace arcomp
+}  // namespace arcomp

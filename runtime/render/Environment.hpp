@@ -51,4 +51,4 @@ Environment environmentFromOption(const std::string& option);
 // accepts). Throws std::runtime_error naming the file when it cannot.
 void writeRadianceHdr(const std::filesystem::path& file, const Environment& environment);
 
-} // namespace arcomp
+}  // namespace arcomp

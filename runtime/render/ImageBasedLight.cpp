@@ -97,7 +97,7 @@ glm::vec3 prefiltered(const std::vector<Environment>& pyramid, const glm::vec3& 
     return weight > 0.0f ? sum / weight : glm::vec3(0.0f);
 }
 
-} // namespace
+}  // namespace
 
 ImageBasedLight prefilterEnvironment(const Environment& environment, int size, int levels) {
     ImageBasedLight light;
@@ -202,4 +202,4 @@ SplitSumTable splitSumTable(int size) {
     return table;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

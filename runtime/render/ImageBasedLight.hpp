@@ -44,4 +44,4 @@ struct SplitSumTable {
 };
 SplitSumTable splitSumTable(int size = 32);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -48,9 +48,10 @@ void unpremultiply(Image& img) {
     }
 }
 
-} // namespace
+}  // namespace
 
-std::size_t bakeImpostors(Scene& scene, NodeId groupingNode, GroupingNodes& table, const ImpostorBakeSettings& settings) {
+std::size_t bakeImpostors(Scene& scene, NodeId groupingNode, GroupingNodes& table,
+                          const ImpostorBakeSettings& settings) {
     GroupingNode& g = table.nodes[scene.payload(groupingNode)];
     const GroupingTree& tree = g.tree;
     g.impostorMaterial.assign(tree.nodeCount(), GroupingNode::kNoImpostor);
@@ -68,8 +69,8 @@ std::size_t bakeImpostors(Scene& scene, NodeId groupingNode, GroupingNodes& tabl
         std::vector<NodeId> meshes;
         for (std::uint32_t o : tree.objectsUnder(t)) finestMeshes(scene, g.objects[o], meshes);
         for (NodeId m : meshes)
-            list.items.push_back({m, scene.meshPart(m), glm::length(scene.worldBound(m).center - view.eye), 0.0f, 0,
-                                  Shading::Phong});
+            list.items.push_back(
+                {m, scene.meshPart(m), glm::length(scene.worldBound(m).center - view.eye), 0.0f, 0, Shading::Phong});
         RenderTarget target({side, side});
         target.bind();
         renderer.draw(scene, list, view, {.clearColor = glm::vec4(0.0f)});
@@ -99,4 +100,4 @@ std::size_t bakeImpostors(Scene& scene, GroupingNodes& table, const glm::vec3& e
     return baked;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -29,9 +29,10 @@ struct ImpostorBakeSettings {
 };
 
 // Bakes every group of the node's tree; returns how many.
-std::size_t bakeImpostors(Scene& scene, NodeId groupingNode, GroupingNodes& table, const ImpostorBakeSettings& settings);
+std::size_t bakeImpostors(Scene& scene, NodeId groupingNode, GroupingNodes& table,
+                          const ImpostorBakeSettings& settings);
 // Bakes every grouping node of the scene whose proxy is Impostor, at its
 // own pixels per unit, seen from `eye`.
 std::size_t bakeImpostors(Scene& scene, GroupingNodes& table, const glm::vec3& eye);
 
-} // namespace arcomp
+}  // namespace arcomp

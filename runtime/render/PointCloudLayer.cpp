@@ -45,10 +45,11 @@ View localView(const View& view, const glm::mat4& world) {
     return local;
 }
 
-} // namespace
+}  // namespace
 
 PointCloudLayer::LayerProgram::LayerProgram()
-    : program(fullScreenTriangle(kLayerShader)), color(program.requiredLocation("uColor")), depth(program.requiredLocation("uDepth")) {}
+    : program(fullScreenTriangle(kLayerShader)), color(program.requiredLocation("uColor")),
+      depth(program.requiredLocation("uDepth")) {}
 
 PointCloudLayer::PointCloudLayer(int threads) : threads_(threads), vao_(GlVertexArray::generate()) {}
 
@@ -122,4 +123,4 @@ void PointCloudLayer::draw(const Scene& scene, const PointCloudNodes& clouds, st
     glBindVertexArray(0);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

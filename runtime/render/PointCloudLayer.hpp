@@ -20,9 +20,9 @@
 // space; the transform must be rigid with a uniform scale.
 
 #include "graph/core/DrawList.hpp"
+#include "graph/core/View.hpp"
 #include "graph/points/LdiRenderer.hpp"
 #include "graph/points/PointCloudNodes.hpp"
-#include "graph/core/View.hpp"
 #include "runtime/gl/GlHandle.hpp"
 #include "runtime/gl/ShaderProgram.hpp"
 
@@ -40,7 +40,8 @@ public:
     PointCloudLayer& operator=(const PointCloudLayer&) = delete;
 
     // Needs a current context. `visible`: the select pass's point-cloud bin.
-    void draw(const Scene& scene, const PointCloudNodes& clouds, std::span<const PointCloudItem> visible, const View& view);
+    void draw(const Scene& scene, const PointCloudNodes& clouds, std::span<const PointCloudItem> visible,
+              const View& view);
 
     std::size_t cloudsDrawn() const { return cloudsDrawn_; }
     std::size_t splatsDrawn() const { return splatsDrawn_; }
@@ -65,4 +66,4 @@ private:
     std::size_t cloudsDrawn_ = 0, splatsDrawn_ = 0;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

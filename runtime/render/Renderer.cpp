@@ -356,36 +356,27 @@ const ImageBasedLight& neutralLight() {
     return light;
 }
 
-} // namespace
+}  // namespace
 
 // Lighting's uniforms are read only where a level lights, and the compiler
 // drops them elsewhere: those may be -1, as may the texture slots' in the
 // untextured variant. The rest every level reads.
 Renderer::MeshProgram::MeshProgram(Shading shading, bool skinned, bool textured)
-    : program(kMeshShader, "#define SHADING " + std::to_string(static_cast<int>(shading)) + "\n" +
-                               (skinned ? "#define SKINNED\n#define MAX_JOINTS " + std::to_string(kMaxJointsPerDraw) + "\n" : "") +
-                               (textured ? "" : "#define UNTEXTURED\n")),
-      model(program.requiredLocation("uModel")),
-      viewProjection(program.requiredLocation("uViewProjection")),
-      normalMatrix(program.location("uNormalMatrix")),
-      eye(program.location("uEye")),
-      lightDirection(program.location("uLightDirection")),
-      lightRadiance(program.location("uLightRadiance")),
-      irradiance(program.location("uIrradiance")),
-      environmentIntensity(program.location("uEnvironmentIntensity")),
+    : program(kMeshShader,
+              "#define SHADING " + std::to_string(static_cast<int>(shading)) + "\n" +
+                  (skinned ? "#define SKINNED\n#define MAX_JOINTS " + std::to_string(kMaxJointsPerDraw) + "\n" : "") +
+                  (textured ? "" : "#define UNTEXTURED\n")),
+      model(program.requiredLocation("uModel")), viewProjection(program.requiredLocation("uViewProjection")),
+      normalMatrix(program.location("uNormalMatrix")), eye(program.location("uEye")),
+      lightDirection(program.location("uLightDirection")), lightRadiance(program.location("uLightRadiance")),
+      irradiance(program.location("uIrradiance")), environmentIntensity(program.location("uEnvironmentIntensity")),
       specularLevels(program.location("uSpecularLevels")),
-      specularEnvironment(program.location("uSpecularEnvironment")),
-      splitSum(program.location("uSplitSum")),
-      baseColor(program.requiredLocation("uBaseColor")),
-      metallic(program.location("uMetallic")),
-      roughness(program.location("uRoughness")),
-      emissive(program.requiredLocation("uEmissive")),
-      normalScale(program.location("uNormalScale")),
-      occlusionStrength(program.location("uOcclusionStrength")),
-      alphaMode(program.requiredLocation("uAlphaMode")),
-      alphaCutoff(program.requiredLocation("uAlphaCutoff")),
-      fade(program.requiredLocation("uFade")),
-      doubleSided(program.location("uDoubleSided")),
+      specularEnvironment(program.location("uSpecularEnvironment")), splitSum(program.location("uSplitSum")),
+      baseColor(program.requiredLocation("uBaseColor")), metallic(program.location("uMetallic")),
+      roughness(program.location("uRoughness")), emissive(program.requiredLocation("uEmissive")),
+      normalScale(program.location("uNormalScale")), occlusionStrength(program.location("uOcclusionStrength")),
+      alphaMode(program.requiredLocation("uAlphaMode")), alphaCutoff(program.requiredLocation("uAlphaCutoff")),
+      fade(program.requiredLocation("uFade")), doubleSided(program.location("uDoubleSided")),
       hasTangents(program.location("uHasTangents")),
       texCoord(textured ? program.requiredLocation("uTexCoord") : program.location("uTexCoord")),
       uvTransform(textured ? program.requiredLocation("uUvTransform") : program.location("uUvTransform")),
@@ -459,9 +450,14 @@ const Renderer::GpuGeometry& Renderer::geometry(const Scene& scene, std::uint32_
     gpu.hasTangents = g.tangents.size() == n && n > 0;
     gpu.hasColors = g.colors.size() == n && n > 0;
     gpu.hasSkinInfluences = g.hasSkinInfluences();
-    const std::array<std::pair<bool, int>, 8> attributes{{{true, 3}, {true, 3}, {uv0, 2}, {uv1, 2},
-                                                          {gpu.hasTangents, 4}, {gpu.hasColors, 4},
-                                                          {gpu.hasSkinInfluences, 4}, {gpu.hasSkinInfluences, 4}}};
+    const std::array<std::pair<bool, int>, 8> attributes{{{true, 3},
+                                                          {true, 3},
+                                                          {uv0, 2},
+                                                          {uv1, 2},
+                                                          {gpu.hasTangents, 4},
+                                                          {gpu.hasColors, 4},
+                                                          {gpu.hasSkinInfluences, 4},
+                                                          {gpu.hasSkinInfluences, 4}}};
     int floatsPerVertex = 0;
     for (const auto& [present, size] : attributes) floatsPerVertex += present ? size : 0;
     std::vector<float> vertices;
@@ -471,8 +467,10 @@ const Renderer::GpuGeometry& Renderer::geometry(const Scene& scene, std::uint32_
                                          g.normals[i].y, g.normals[i].z});
         if (uv0) vertices.insert(vertices.end(), {g.texcoords[i].x, g.texcoords[i].y});
         if (uv1) vertices.insert(vertices.end(), {g.texcoords1[i].x, g.texcoords1[i].y});
-        if (gpu.hasTangents) vertices.insert(vertices.end(), {g.tangents[i].x, g.tangents[i].y, g.tangents[i].z, g.tangents[i].w});
-        if (gpu.hasColors) vertices.insert(vertices.end(), {g.colors[i].r, g.colors[i].g, g.colors[i].b, g.colors[i].a});
+        if (gpu.hasTangents)
+            vertices.insert(vertices.end(), {g.tangents[i].x, g.tangents[i].y, g.tangents[i].z, g.tangents[i].w});
+        if (gpu.hasColors)
+            vertices.insert(vertices.end(), {g.colors[i].r, g.colors[i].g, g.colors[i].b, g.colors[i].a});
         if (gpu.hasSkinInfluences) {
             const glm::vec4 joints(g.joints[i]);
             vertices.insert(vertices.end(), {joints.x, joints.y, joints.z, joints.w, g.weights[i].x, g.weights[i].y,
@@ -483,7 +481,8 @@ const Renderer::GpuGeometry& Renderer::geometry(const Scene& scene, std::uint32_
     glBindVertexArray(gpu.vao.get());
     gpu.vertices = GlBuffer::generate();
     glBindBuffer(GL_ARRAY_BUFFER, gpu.vertices.get());
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(float)), vertices.data(), GL_STATIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(float)), vertices.data(),
+                 GL_STATIC_DRAW);
     gpu.indices = GlBuffer::generate();
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.indices.get());
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(g.indices.size() * sizeof(std::uint32_t)),
@@ -520,7 +519,8 @@ GLuint Renderer::texture(const Scene& scene, const TextureRef& ref, bool srgb) {
                  GL_UNSIGNED_BYTE, img.rgba.data());
     if (usesMipmaps(s.minFilter)) glGenerateMipmap(GL_TEXTURE_2D);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, glFilter(s.minFilter));
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, s.magFilter == TextureFilter::Nearest ? GL_NEAREST : GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER,
+                    s.magFilter == TextureFilter::Nearest ? GL_NEAREST : GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, glWrap(s.wrapS));
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, glWrap(s.wrapT));
     return t.get();
@@ -534,7 +534,8 @@ void Renderer::drawItem(const Scene& scene, const DrawItem& item, const View& vi
     const auto slots = m.textures();
     std::array<GLuint, kSlotCount> textures{};
     for (int slot = 0; slot < kSlotCount; ++slot)  // base colour and emission are colours (sRGB); the rest are data
-        textures[static_cast<std::size_t>(slot)] = texture(scene, *slots[static_cast<std::size_t>(slot)], slot == 0 || slot == 4);
+        textures[static_cast<std::size_t>(slot)] =
+            texture(scene, *slots[static_cast<std::size_t>(slot)], slot == 0 || slot == 4);
     const bool textured = std::any_of(textures.begin(), textures.end(), [](GLuint t) { return t != 0; });
     const MeshProgram& p = program(shading, skinned, textured);
     p.program.use();
@@ -601,8 +602,10 @@ void Renderer::drawItem(const Scene& scene, const DrawItem& item, const View& vi
         glUniformMatrix3x4fv(p.jointMatrices, static_cast<GLsizei>(count), GL_FALSE, jointRows_.data());
     }
 
-    if (m.doubleSided) glDisable(GL_CULL_FACE);
-    else glEnable(GL_CULL_FACE);
+    if (m.doubleSided)
+        glDisable(GL_CULL_FACE);
+    else
+        glEnable(GL_CULL_FACE);
     glUniform1i(p.hasTangents, g.hasTangents ? 1 : 0);
     // What an absent attribute reads: generic values are context state, not
     // the vertex array's, so they are set for every draw.
@@ -657,4 +660,4 @@ void Renderer::draw(const Scene& scene, const DrawList& list, const View& view, 
     glBindVertexArray(0);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -23,8 +23,8 @@
 #include "graph/core/DrawList.hpp"
 #include "graph/core/View.hpp"
 #include "runtime/gl/GlHandle.hpp"
-#include "runtime/render/ImageBasedLight.hpp"
 #include "runtime/gl/ShaderProgram.hpp"
+#include "runtime/render/ImageBasedLight.hpp"
 
 #include <array>
 #include <map>
@@ -35,7 +35,7 @@
 namespace arcomp {
 
 struct RenderSettings {
-    std::optional<glm::vec4> clearColor = glm::vec4(0.0f);  // nullopt: draw over what is there
+    std::optional<glm::vec4> clearColor = glm::vec4(0.0f);                     // nullopt: draw over what is there
     glm::vec3 lightDirection = glm::normalize(glm::vec3(-0.4f, 0.8f, 0.45f));  // towards the light, world space
     // Linear colour and intensity of the directional light, as three.js's
     // DirectionalLight takes them: a white diffuse surface facing it
@@ -77,9 +77,9 @@ private:
     struct MeshProgram {
         MeshProgram(Shading shading, bool skinned, bool textured);
         ShaderProgram program;
-        GLint model, viewProjection, normalMatrix, eye, lightDirection, lightRadiance, irradiance,
-            environmentIntensity, specularLevels, specularEnvironment, splitSum, baseColor, metallic, roughness, emissive,
-            normalScale, occlusionStrength, alphaMode, alphaCutoff, fade, doubleSided, hasTangents, texCoord, uvTransform,
+        GLint model, viewProjection, normalMatrix, eye, lightDirection, lightRadiance, irradiance, environmentIntensity,
+            specularLevels, specularEnvironment, splitSum, baseColor, metallic, roughness, emissive, normalScale,
+            occlusionStrength, alphaMode, alphaCutoff, fade, doubleSided, hasTangents, texCoord, uvTransform,
             jointMatrices;  // -1 unless skinned
     };
     // One GL texture per image, colour space and sampler: an image can be
@@ -102,4 +102,4 @@ private:
     std::size_t trianglesDrawn_ = 0;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

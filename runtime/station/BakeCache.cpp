@@ -10,13 +10,14 @@ namespace {
 std::filesystem::path chosenFolder(const CompositorConfig& c) {
     if (c.bakeCache == "none") return {};
     if (!c.bakeCache.empty()) return c.bakeCache;
-    if (const char* d = std::getenv("CACHE_DIRECTORY"); d && *d) return std::string(d).substr(0, std::string(d).find(':'));
+    if (const char* d = std::getenv("CACHE_DIRECTORY"); d && *d)
+        return std::string(d).substr(0, std::string(d).find(':'));
     if (const char* d = std::getenv("XDG_CACHE_HOME"); d && *d) return std::filesystem::path(d) / "arcomp";
     if (const char* d = std::getenv("HOME"); d && *d) return std::filesystem::path(d) / ".cache" / "arcomp";
     return {};
 }
 
-} // namespace
+}  // namespace
 
 std::filesystem::path bakeCacheFolder(const CompositorConfig& config) {
     std::filesystem::path folder = chosenFolder(config);
@@ -35,4 +36,4 @@ std::string bakeCacheFileName(const std::filesystem::path& config, const std::st
     return name + "-" + std::to_string(id) + extension;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

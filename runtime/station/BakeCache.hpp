@@ -33,4 +33,4 @@ std::filesystem::path bakeCacheFolder(const CompositorConfig& config);
 std::string bakeCacheFileName(const std::filesystem::path& config, const std::string& node, std::uint32_t id,
                               const char* extension);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -23,4 +23,4 @@ BudgetStats BudgetStage::plan(const Scene& scene, DrawList& list, const View& vi
     return budget_.apply(scene, list, view, gaze);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -27,4 +27,4 @@ private:
     FrameBudget budget_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

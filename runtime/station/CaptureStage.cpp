@@ -87,7 +87,8 @@ bool CaptureStage::accept(std::optional<Frame> f) {
         // A source that does not stamp its frames is taken as capturing now;
         // a fallback source's frames may not come in order with the last
         // camera frame, and animation time must not run backwards.
-        const auto captured = f->captured == std::chrono::steady_clock::time_point{} ? std::chrono::steady_clock::now() : f->captured;
+        const auto captured =
+            f->captured == std::chrono::steady_clock::time_point{} ? std::chrono::steady_clock::now() : f->captured;
         liveCaptured_ = std::max(liveCaptured_, captured);
     }
     if (f) {
@@ -130,4 +131,4 @@ SourceState CaptureStage::state() const {
 
 std::uint64_t CaptureStage::drops() const { return input_.live ? input_.live->drops() : 0; }
 
-} // namespace arcomp
+}  // namespace arcomp

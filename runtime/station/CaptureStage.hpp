@@ -95,4 +95,4 @@ private:
     std::chrono::steady_clock::time_point liveCaptured_{};  // the newest live frame's capture time
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -14,20 +14,20 @@
 namespace arcomp {
 
 struct FrameStats {
-    std::uint64_t frame = 0;   // frames composited so far, this one included
-    double captureMs = 0;      // CPU: wait for / decode the frame
-    double matteMs = 0;        // CPU: person layer
-    double trackMs = 0;        // CPU: people tracked and their depths (0 without a calibrated camera)
-    double updateMs = 0;       // CPU: transforms and bounds
-    double selectMs = 0;       // CPU: culling, LOD, grouping cut, silhouette region, bins
-    double budgetMs = 0;       // CPU: the frame-time controller (0 when it is off)
-    double shadowMs = 0;       // GL: contact shadows on the video's floor (0 without)
-    double renderMs = 0;       // GL: CG, all objects, shaded (what the controller observes)
-    double pointCloudMs = 0;   // CPU: point clouds splatted and laid over the CG (0 without)
-    double holdoutMs = 0;      // GL: holdout mask from the front objects' silhouette meshes
-    double compositeMs = 0;    // GL: backdrop upload, person upload and tiles
-    double outputMs = 0;       // CPU: read back and write files (0 without file outputs)
-    double totalMs = 0;        // wall time of the whole frame on the CPU
+    std::uint64_t frame = 0;  // frames composited so far, this one included
+    double captureMs = 0;     // CPU: wait for / decode the frame
+    double matteMs = 0;       // CPU: person layer
+    double trackMs = 0;       // CPU: people tracked and their depths (0 without a calibrated camera)
+    double updateMs = 0;      // CPU: transforms and bounds
+    double selectMs = 0;      // CPU: culling, LOD, grouping cut, silhouette region, bins
+    double budgetMs = 0;      // CPU: the frame-time controller (0 when it is off)
+    double shadowMs = 0;      // GL: contact shadows on the video's floor (0 without)
+    double renderMs = 0;      // GL: CG, all objects, shaded (what the controller observes)
+    double pointCloudMs = 0;  // CPU: point clouds splatted and laid over the CG (0 without)
+    double holdoutMs = 0;     // GL: holdout mask from the front objects' silhouette meshes
+    double compositeMs = 0;   // GL: backdrop upload, person upload and tiles
+    double outputMs = 0;      // CPU: read back and write files (0 without file outputs)
+    double totalMs = 0;       // wall time of the whole frame on the CPU
     std::size_t cgTriangles = 0;
     std::size_t holdoutTriangles = 0;
     std::size_t objectsInFront = 0;
@@ -41,4 +41,4 @@ struct FrameStats {
     bool newVideoFrame = false;  // live: false when the camera had nothing new
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -32,7 +32,8 @@ std::optional<GazeSample> HeadPoseGaze::sample(double timeSeconds) {
     return g;
 }
 
-TrackerGaze::TrackerGaze(Poll poll, const glm::mat4& trackerToWorld) : poll_(std::move(poll)), toWorld_(trackerToWorld) {}
+TrackerGaze::TrackerGaze(Poll poll, const glm::mat4& trackerToWorld)
+    : poll_(std::move(poll)), toWorld_(trackerToWorld) {}
 
 std::optional<GazeSample> TrackerGaze::sample(double timeSeconds) {
     std::optional<GazeSample> s = poll_ ? poll_() : std::nullopt;
@@ -74,7 +75,7 @@ std::string_view trimmed(std::string_view s) {
 
 constexpr const char* kFieldNames[7] = {"time", "eye_x", "eye_y", "eye_z", "gaze_x", "gaze_y", "gaze_z"};
 
-} // namespace
+}  // namespace
 
 std::vector<GazeSample> parseGazeTrackCsv(std::string_view text, const std::string& name) {
     std::vector<GazeSample> samples;
@@ -148,4 +149,4 @@ std::unique_ptr<GazeSource> makeGazeSource(const GazeConfig& config, const View&
     return nullptr;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

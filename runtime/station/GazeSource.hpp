@@ -111,4 +111,4 @@ glm::vec3 gazeThroughPixel(const View& view, glm::vec2 pixel);
 // Throws GazeTrackError (with the file and line) for a bad track.
 std::unique_ptr<GazeSource> makeGazeSource(const GazeConfig& config, const View& view);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -7,7 +7,8 @@ NodeId beginGrouping(const GroupingConfig& cfg, Scene& scene, GroupingNodes& tab
     return addGroupingNode(scene, scene.root(), table, "grouping");
 }
 
-void finishGrouping(const GroupingConfig& cfg, Scene& scene, NodeId groupingNode, GroupingNodes& table, LodTable& lods) {
+void finishGrouping(const GroupingConfig& cfg, Scene& scene, NodeId groupingNode, GroupingNodes& table,
+                    LodTable& lods) {
     if (groupingNode == kNoNode) return;
     if (cfg.forest) addPaperForestTo(scene, groupingNode, lods, *cfg.forest);
     scene.update();
@@ -18,4 +19,4 @@ void finishGrouping(const GroupingConfig& cfg, Scene& scene, NodeId groupingNode
     g.impostorPixelsPerUnit = cfg.impostorPixelsPerUnit;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -16,4 +16,4 @@ namespace arcomp {
 NodeId beginGrouping(const GroupingConfig& cfg, Scene& scene, GroupingNodes& table);
 void finishGrouping(const GroupingConfig& cfg, Scene& scene, NodeId groupingNode, GroupingNodes& table, LodTable& lods);
 
-} // namespace arcomp
+}  // namespace arcomp

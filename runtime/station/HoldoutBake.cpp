@@ -48,8 +48,8 @@ HoldoutBake bakeHoldouts(World& world, const View& view, const CompositorConfig&
             ++bake.baked;
             continue;
         }
-        const LoadedOrBaked s = loadOrBakeSilhouetteMesh(bake.folder / bakeCacheFileName(configFile, scene.name(n), n, ".sil"),
-                                                         g.positions, g.indices, regions);
+        const LoadedOrBaked s = loadOrBakeSilhouetteMesh(
+            bake.folder / bakeCacheFileName(configFile, scene.name(n), n, ".sil"), g.positions, g.indices, regions);
         world.holdouts.add(scene, n, s.mesh, material);
         if (s.loaded) {
             ++bake.loaded;
@@ -61,4 +61,4 @@ HoldoutBake bakeHoldouts(World& world, const View& view, const CompositorConfig&
     return bake;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -6,13 +6,14 @@
 // the next start when it still matches the mesh and the region, so a
 // station that restarts does not bake again what it baked yesterday.
 //
-//   const HoldoutBake bake = bakeHoldouts(world, view, cfg.compositing.compositor, folder, cfg.file);   // folder: runtime/station/BakeCache.hpp
+//   const HoldoutBake bake = bakeHoldouts(world, view, cfg.compositing.compositor, folder, cfg.file);   // folder:
+//   runtime/station/BakeCache.hpp
 //   // world.holdouts now has an entry per mesh node; bake.loaded + bake.baked of them
 
 #include "graph/core/View.hpp"
 #include "graph/core/World.hpp"
-#include "runtime/station/BakeCache.hpp"
 #include "runtime/config/CompositingConfig.hpp"
+#include "runtime/station/BakeCache.hpp"
 
 #include <filesystem>
 
@@ -30,4 +31,4 @@ struct HoldoutBake : BakeTally {
 HoldoutBake bakeHoldouts(World& world, const View& view, const CompositorConfig& config,
                          const std::filesystem::path& cacheFolder, const std::filesystem::path& configFile);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -22,4 +22,4 @@ void HoldoutStage::cut(const World& world, const DrawList& cg, const View& view,
     stats.holdoutTriangles = renderer.trianglesDrawn();
 }
 
-} // namespace arcomp
+}  // namespace arcomp

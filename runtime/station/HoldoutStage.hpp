@@ -13,8 +13,8 @@
 #include "graph/core/View.hpp"
 #include "graph/core/World.hpp"
 #include "runtime/composite/Compositor.hpp"
-#include "runtime/station/FrameStats.hpp"
 #include "runtime/render/Renderer.hpp"
+#include "runtime/station/FrameStats.hpp"
 
 namespace arcomp {
 
@@ -31,4 +31,4 @@ private:
     DrawList list_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

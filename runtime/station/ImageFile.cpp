@@ -50,9 +50,12 @@ Image readPng(const fs::path& file) {
     const cv::Mat bgra = cv::imread(file.string(), cv::IMREAD_UNCHANGED);
     if (bgra.empty()) throw std::runtime_error("cannot read image " + file.string());
     cv::Mat rgba;
-    if (bgra.channels() == 4) cv::cvtColor(bgra, rgba, cv::COLOR_BGRA2RGBA);
-    else if (bgra.channels() == 3) cv::cvtColor(bgra, rgba, cv::COLOR_BGR2RGBA);
-    else cv::cvtColor(bgra, rgba, cv::COLOR_GRAY2RGBA);
+    if (bgra.channels() == 4)
+        cv::cvtColor(bgra, rgba, cv::COLOR_BGRA2RGBA);
+    else if (bgra.channels() == 3)
+        cv::cvtColor(bgra, rgba, cv::COLOR_BGR2RGBA);
+    else
+        cv::cvtColor(bgra, rgba, cv::COLOR_GRAY2RGBA);
     Image img;
     img.width = rgba.cols;
     img.height = rgba.rows;
@@ -60,4 +63,4 @@ Image readPng(const fs::path& file) {
     return img;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

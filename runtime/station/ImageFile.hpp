@@ -16,4 +16,4 @@ void writePng(const std::filesystem::path& file, const Image& image);
 // Throws std::runtime_error naming the file when it cannot be read.
 Image readPng(const std::filesystem::path& file);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -36,4 +36,4 @@ private:
     unsigned current_ = 0;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -20,7 +20,7 @@ std::string numbered(const char* stem, std::uint64_t index) {
     return name;
 }
 
-} // namespace
+}  // namespace
 
 OutputStage::OutputStage(const OutputConfig& config, double fps, glm::ivec2 size, FrameReadback::Mode readback)
     : config_(config), readback_(readback) {
@@ -29,7 +29,8 @@ OutputStage::OutputStage(const OutputConfig& config, double fps, glm::ivec2 size
                                                    cv::Size(size.x, size.y));
 }
 
-template <class Step> void OutputStage::counted(Step&& step) {
+template <class Step>
+void OutputStage::counted(Step&& step) {
     try {
         step();
     } catch (const std::exception& e) {
@@ -71,4 +72,4 @@ void OutputStage::finish() {
     if (video_) video_->close();
 }
 
-} // namespace arcomp
+}  // namespace arcomp

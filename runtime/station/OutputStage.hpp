@@ -45,17 +45,18 @@ public:
 private:
     void writeMatte(std::uint64_t index, const cv::Mat& person);
     void writeFrame(std::uint64_t index, const Image& image);
-    template <class Step> void counted(Step&& step);
+    template <class Step>
+    void counted(Step&& step);
 
     OutputConfig config_;
     std::unique_ptr<VideoFileWriter> video_;
     FrameReadback readback_;
     std::uint64_t inFlight_ = 0;  // the index of the frame readback_ holds
-    Image image_;  // the frame read back, kept so that its 8 MB (at 1080p) are not allocated again
+    Image image_;                 // the frame read back, kept so that its 8 MB (at 1080p) are not allocated again
     cv::Mat bgr_;
     std::uint64_t next_ = 0;
     std::uint64_t failures_ = 0;
     std::string lastError_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

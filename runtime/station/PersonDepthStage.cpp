@@ -18,7 +18,7 @@ PersonTracker::Settings trackingAt(int scale) {
     return s;
 }
 
-} // namespace
+}  // namespace
 
 PersonDepthStage::PersonDepthStage(const std::optional<CalibratedCamera>& camera, float personPlaneMetres,
                                    glm::ivec2 size)
@@ -36,7 +36,7 @@ glm::vec3 PersonDepthStage::cardThrough(const glm::dvec3& feet) const {
     glm::dvec3 towards = feet - camera_->position();
     towards.y = 0.0;
     if (glm::length(towards) < 1e-6) return {0.0f, 0.0f, static_cast<float>(1.0 / camera_->depthOf(feet))};
-    const glm::dvec3 n = camera_->rotation * glm::normalize(towards);  // camera axes
+    const glm::dvec3 n = camera_->rotation * glm::normalize(towards);               // camera axes
     const double d = glm::dot(n, camera_->rotation * feet + camera_->translation);  // the card: n . X = d
     // A pixel's ray is s ((u - cx) / fx, (v - cy) / fy, 1) at depth s, and meets the card where 1 / s = n . ray / d.
     const CameraIntrinsics& k = camera_->intrinsics;
@@ -62,7 +62,8 @@ void PersonDepthStage::run(const cv::Mat& person, bool newFrame) {
     for (const TrackedPerson& p : people) {
         // The tracking pixel's centre in frame pixels.
         const float offset = 0.5f * static_cast<float>(scale_ - 1);
-        const glm::vec2 foot(p.foot.x * static_cast<float>(scale_) + offset, p.foot.y * static_cast<float>(scale_) + offset);
+        const glm::vec2 foot(p.foot.x * static_cast<float>(scale_) + offset,
+                             p.foot.y * static_cast<float>(scale_) + offset);
         bool measured = false;
         if (p.missed == 0 && p.feetVisible) {
             if (const std::optional<glm::dvec3> floor = camera_->floorPointAt(glm::dvec2(foot))) {
@@ -77,7 +78,7 @@ void PersonDepthStage::run(const cv::Mat& person, bool newFrame) {
             standing_.push_back({.id = p.id,
                                  .foot = foot,
                                  .metres = d != lastStand_.end() ? d->second.metres : plane_,
-                                 .depth = measured                 ? StandingPerson::Depth::Measured
+                                 .depth = measured                ? StandingPerson::Depth::Measured
                                           : d != lastStand_.end() ? StandingPerson::Depth::Kept
                                                                   : StandingPerson::Depth::Plane});
     }
@@ -140,8 +141,9 @@ void PersonDepthStage::assignSlots() {
     // walker's edge still showed over the CG in front of them).
     if (depths_.people > 0) {
         const int reach = std::max(1, (kSoftEdgePx + scale_ - 1) / scale_);  // in tracking pixels
-        cv::dilate(depths_.slots, depths_.slots, cv::getStructuringElement(cv::MORPH_RECT, {2 * reach + 1, 2 * reach + 1}));
+        cv::dilate(depths_.slots, depths_.slots,
+                   cv::getStructuringElement(cv::MORPH_RECT, {2 * reach + 1, 2 * reach + 1}));
     }
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -73,4 +73,4 @@ private:
     std::vector<StandingPerson> standing_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

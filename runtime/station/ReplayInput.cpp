@@ -1,8 +1,8 @@
 #include "runtime/station/ReplayInput.hpp"
 
+#include "video/pixels/VideoError.hpp"
 #include "video/sources/FileSource.hpp"
 #include "video/sources/TestPatternSource.hpp"
-#include "video/pixels/VideoError.hpp"
 
 namespace arcomp {
 
@@ -13,7 +13,7 @@ StationInput pattern(const SourceSpec& spec) {
         std::make_unique<TestPatternSource>(TestPatternOptions{spec.width, spec.height, spec.fps, false}), spec.fps);
 }
 
-} // namespace
+}  // namespace
 
 StationInput openReplayInput(const SourceSpec& spec, std::vector<std::string>& warnings) {
     switch (spec.kind) {
@@ -36,4 +36,4 @@ StationInput openReplayInput(const SourceSpec& spec, std::vector<std::string>& w
     throw VideoError(spec.path, "replay", "replay needs a file or pattern source, not a camera; give --video FILE");
 }
 
-} // namespace arcomp
+}  // namespace arcomp

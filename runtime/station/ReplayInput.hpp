@@ -14,4 +14,4 @@ namespace arcomp {
 
 StationInput openReplayInput(const SourceSpec& spec, std::vector<std::string>& warnings);
 
-} // namespace arcomp
+}  // namespace arcomp

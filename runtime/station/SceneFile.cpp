@@ -2,8 +2,8 @@
 #include "graph/core/JoinText.hpp"
 
 #include "graph/io/LodFile.hpp"
-#include "graph/lod/LodLevels.hpp"
 #include "graph/io/ModelLoader.hpp"
+#include "graph/lod/LodLevels.hpp"
 #include "runtime/station/GroupingSetup.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -31,7 +31,7 @@ LodNode lodSettings(const ObjectConfig& o) {
     return node;
 }
 
-} // namespace
+}  // namespace
 
 BakeTally buildScene(const StationConfig& cfg, World& world, std::vector<std::string>& warnings,
                      const fs::path& bakeCache) {
@@ -47,7 +47,8 @@ BakeTally buildScene(const StationConfig& cfg, World& world, std::vector<std::st
         m = glm::rotate(m, glm::radians(o.rotationDegrees.x), {1, 0, 0});
         m = glm::scale(m, o.scale);
         const NodeId place = scene.addTransform(objectParent, m, o.name);
-        if (glm::length(o.velocity) > 0.0f) world.motions.push_back({.node = place, .rest = m, .velocity = o.velocity, .range = o.rangeMetres});
+        if (glm::length(o.velocity) > 0.0f)
+            world.motions.push_back({.node = place, .rest = m, .velocity = o.velocity, .range = o.rangeMetres});
         MeshPlacer placeMesh;
         if (!o.lodRatios.empty())
             placeMesh = [&](NodeId parent, MeshPart part) {
@@ -56,14 +57,16 @@ BakeTally buildScene(const StationConfig& cfg, World& world, std::vector<std::st
                     ++levels.baked;
                     return;
                 }
-                LoadedOrSimplified l = loadOrSimplifyLevels(bakeCache / bakeCacheFileName(cfg.file, o.name, part.geometry, ".lod"),
-                                                            scene.geometry(part.geometry), o.lodRatios);
+                LoadedOrSimplified l =
+                    loadOrSimplifyLevels(bakeCache / bakeCacheFileName(cfg.file, o.name, part.geometry, ".lod"),
+                                         scene.geometry(part.geometry), o.lodRatios);
                 ++(l.loaded ? levels.loaded : levels.baked);
                 if (!l.loaded) spdlog::info(joinText("levels of '", o.name, "': ", l.note));
                 addLodLevels(scene, lodTable, parent, part, std::move(l.levels), lodSettings(o));
             };
         if (!o.model.empty()) {
-            const std::string object = cfg.file.string() + ":" + std::to_string(o.line) + ": object '" + o.name + "' skipped: ";
+            const std::string object =
+                cfg.file.string() + ":" + std::to_string(o.line) + ": object '" + o.name + "' skipped: ";
             try {
                 ParsedModel parsed = parseModel(o.model);
                 // Checked before placing, so that a wrong name leaves no
@@ -74,12 +77,14 @@ BakeTally buildScene(const StationConfig& cfg, World& world, std::vector<std::st
                                        "'; its animations: " + listAnimations(parsed.animations));
                     continue;
                 }
-                const LoadedModel loaded = placeModel(std::move(parsed), scene, place, o.model.stem().string(), placeMesh);
+                const LoadedModel loaded =
+                    placeModel(std::move(parsed), scene, place, o.model.stem().string(), placeMesh);
                 for (const std::string& w : loaded.warnings) warnings.push_back(o.model.string() + ": " + w);
                 if (clip)
-                    world.animations.push_back({.player = AnimationPlayer(loaded.animations[*clip],
-                                                                          {.loop = o.animationLoop, .speed = o.animationSpeed}),
-                                                .node = place});
+                    world.animations.push_back(
+                        {.player = AnimationPlayer(loaded.animations[*clip],
+                                                   {.loop = o.animationLoop, .speed = o.animationSpeed}),
+                         .node = place});
             } catch (const ModelError& e) {
                 warnings.push_back(object + e.what());
             }
@@ -91,8 +96,10 @@ BakeTally buildScene(const StationConfig& cfg, World& world, std::vector<std::st
         mat.baseColor = o.color;
         if (o.color.a < 1.0f) mat.alphaMode = AlphaMode::Blend;
         const MeshPart part{scene.addGeometry(std::move(g)), scene.addMaterial(std::move(mat))};
-        if (placeMesh) placeMesh(place, part);
-        else scene.addMesh(place, part, o.name);
+        if (placeMesh)
+            placeMesh(place, part);
+        else
+            scene.addMesh(place, part, o.name);
     }
     finishGrouping(cfg.grouping, scene, groupingNode, world.grouping, lodTable);
     // A mover or an animated object inside the grouping node rebuilds only its own branch.
@@ -136,4 +143,4 @@ SceneFile loadSceneFile(const fs::path& file) {
     return out;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -6,10 +6,10 @@
 //   SceneFile g = loadSceneFile("station.yaml");       // throws ConfigError
 
 #include "graph/animation/Skin.hpp"
-#include "graph/core/World.hpp"
 #include "graph/core/View.hpp"
-#include "runtime/station/BakeCache.hpp"
+#include "graph/core/World.hpp"
 #include "runtime/config/StationConfig.hpp"
+#include "runtime/station/BakeCache.hpp"
 
 #include <optional>
 
@@ -46,4 +46,4 @@ BakeTally buildScene(const StationConfig& cfg, World& world, std::vector<std::st
                      const std::filesystem::path& bakeCache = {});
 View cameraView(const CameraConfig& camera);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -2,12 +2,12 @@
 
 #include "graph/core/ElapsedTime.hpp"
 #include "graph/core/SelectPass.hpp"
+#include "runtime/composite/ShadowCatcher.hpp"
 #include "runtime/config/CalibrationFile.hpp"
 #include "runtime/render/Environment.hpp"
 #include "runtime/render/ImpostorBaker.hpp"
 #include "runtime/render/PointCloudLayer.hpp"
 #include "runtime/station/SceneFile.hpp"
-#include "runtime/composite/ShadowCatcher.hpp"
 
 namespace arcomp {
 
@@ -43,7 +43,7 @@ private:
     WorkerThread& worker_;
 };
 
-} // namespace
+}  // namespace
 
 void Station::preflight(const StationConfig& cfg) {
     if (cfg.budget.enabled) (void)readCalibration(cfg.budget.calibration);
@@ -68,11 +68,13 @@ Station::Station(const StationConfig& cfg, StationInput input)
         const CameraIntrinsics k = camera.calibrated->intrinsics.scaledTo(camera.size);
         const auto& d = k.distortion;
         capture_.undistortWith(LensUndistortion(cv::Matx33d(k.fx, 0, k.cx, 0, k.fy, k.cy, 0, 0, 1),
-                                                cv::Vec<double, 5>(d[0], d[1], d[2], d[3], d[4]), {camera.size.x, camera.size.y}));
+                                                cv::Vec<double, 5>(d[0], d[1], d[2], d[3], d[4]),
+                                                {camera.size.x, camera.size.y}));
     }
-    view_ = cfg_.camera.given ? cameraView(camera)
-                              : View::framing(world_.scene.bound().empty() ? Sphere{glm::vec3(0.0f), 1.0f} : world_.scene.bound(),
-                                              camera.fovyDegrees, camera.size);
+    view_ = cfg_.camera.given
+                ? cameraView(camera)
+                : View::framing(world_.scene.bound().empty() ? Sphere{glm::vec3(0.0f), 1.0f} : world_.scene.bound(),
+                                camera.fovyDegrees, camera.size);
     gaze_ = makeGazeSource(cfg_.gaze, view_);
     holdoutBake_ = bakeHoldouts(world_, view_, cfg_.compositing.compositor, cache, cfg_.file);
     bakeImpostors(world_.scene, world_.grouping, view_.eye);
@@ -85,7 +87,8 @@ Station::Station(const StationConfig& cfg, StationInput input)
         try {
             renderer_->setEnvironment(prefilterEnvironment(loadEnvironment(cfg_.render.environment)));
         } catch (const std::exception& e) {
-            warnings_.push_back(std::string("render.environment: ") + e.what() + "; lighting with the neutral environment");
+            warnings_.push_back(std::string("render.environment: ") + e.what() +
+                                "; lighting with the neutral environment");
         }
     }
     gpuTimes_ = std::make_unique<GpuStageTimes>(kGpuStageCount);
@@ -175,23 +178,27 @@ bool Station::frame() {
 
     const CompositorConfig& comp = cfg_.compositing.compositor;
     gpuTimes_->time(kGpuBackdrop, [&] {
-        compositor_->beginWithPlate(now.plate, {.backdropVideo = comp.backdropVideo, .backdropColor = comp.backdropColor});
+        compositor_->beginWithPlate(now.plate,
+                                    {.backdropVideo = comp.backdropVideo, .backdropColor = comp.backdropColor});
     });
     if (shadows_)
         gpuTimes_->time(kGpuShadow, [&] {
             shadows_->cast(world_.scene, drawList_, view_, comp.shadow, *renderer_, compositor_->output());
         });
     gpuTimes_->time(kGpuRender, [&] {
-        renderer_->draw(world_.scene, drawList_, view_, {.clearColor = std::nullopt, .lightDirection = comp.shadow.light,
-                                                                  .environmentIntensity = cfg_.render.environmentIntensity});
+        renderer_->draw(world_.scene, drawList_, view_,
+                        {.clearColor = std::nullopt,
+                         .lightDirection = comp.shadow.light,
+                         .environmentIntensity = cfg_.render.environmentIntensity});
     });
     stats_.cgTriangles = renderer_->trianglesDrawn();
     clock.lap();
     if (cloudLayer_) cloudLayer_->draw(world_.scene, world_.pointClouds, drawList_.pointClouds, view_);
     stats_.pointCloudMs = clock.lap();
     const PersonDepths& people = personDepths_.depths();
-    gpuTimes_->time(kGpuHoldout,
-                    [&] { holdout_.cut(world_, drawList_, view_, people.farthest(), *renderer_, *compositor_, stats_); });
+    gpuTimes_->time(kGpuHoldout, [&] {
+        holdout_.cut(world_, drawList_, view_, people.farthest(), *renderer_, *compositor_, stats_);
+    });
     gpuTimes_->time(kGpuPerson, [&] { compositor_->person(now.person, now.tiles, people, view_.projection); });
     gpuTimes_->endFrame();
     stats_.personTiles = compositor_->personTiles();
@@ -247,4 +254,4 @@ StationInput Station::releaseInput() {
     return capture_.release(readAhead);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -51,19 +51,19 @@
 #include "graph/core/DrawList.hpp"
 #include "graph/core/View.hpp"
 #include "graph/core/World.hpp"
+#include "runtime/composite/Compositor.hpp"
+#include "runtime/config/StationConfig.hpp"
+#include "runtime/gl/GpuStageTimes.hpp"
+#include "runtime/render/Renderer.hpp"
 #include "runtime/station/BudgetStage.hpp"
 #include "runtime/station/CaptureStage.hpp"
-#include "runtime/composite/Compositor.hpp"
 #include "runtime/station/FrameStats.hpp"
 #include "runtime/station/GazeSource.hpp"
-#include "runtime/gl/GpuStageTimes.hpp"
 #include "runtime/station/HoldoutBake.hpp"
 #include "runtime/station/HoldoutStage.hpp"
 #include "runtime/station/MatteStage.hpp"
 #include "runtime/station/OutputStage.hpp"
 #include "runtime/station/PersonDepthStage.hpp"
-#include "runtime/render/Renderer.hpp"
-#include "runtime/config/StationConfig.hpp"
 #include "runtime/station/WorkerThread.hpp"
 
 #include <array>
@@ -159,10 +159,10 @@ private:
     // times the stage clock and the movers run on for it. Filled in place:
     // its plate and tiles keep their buffers from one use to the next.
     struct CapturedFrame {
-        bool ok = false;  // false: a replay input has ended
-        cv::Mat image;    // BGR, video size; never written after capture
-        cv::Mat plate;    // the image as the compositor uploads it (Compositor::makePlate)
-        cv::Mat person;   // premultiplied BGRA, video size
+        bool ok = false;    // false: a replay input has ended
+        cv::Mat image;      // BGR, video size; never written after capture
+        cv::Mat plate;      // the image as the compositor uploads it (Compositor::makePlate)
+        cv::Mat person;     // premultiplied BGRA, video size
         PersonTiles tiles;  // where the person layer has alpha (Compositor::findTiles)
         bool newFrame = false;
         double seconds = 0, frameSeconds = 0;
@@ -187,7 +187,7 @@ private:
     BakeTally lodBake_;
     DrawList drawList_;
     std::optional<BudgetStage> budget_;
-    std::unique_ptr<Renderer> renderer_;  // CG and holdouts: one scene, one set of GPU buffers
+    std::unique_ptr<Renderer> renderer_;           // CG and holdouts: one scene, one set of GPU buffers
     std::unique_ptr<PointCloudLayer> cloudLayer_;  // only with point clouds
     std::unique_ptr<ShadowCatcher> shadows_;       // only with contact shadows on
     HoldoutStage holdout_;
@@ -205,4 +205,4 @@ private:
     WorkerThread front_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

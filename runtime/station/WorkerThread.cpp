@@ -68,4 +68,4 @@ void WorkerThread::run() {
     }
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -51,8 +51,8 @@ private:
     bool running_ = false;       // the job is on the thread now
     bool stop_ = false;
     std::exception_ptr thrown_;
-    bool busy_ = false;          // the owner's side: started, not finished
-    std::thread thread_;         // last: starts once the rest is ready
+    bool busy_ = false;   // the owner's side: started, not finished
+    std::thread thread_;  // last: starts once the rest is ready
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -26,17 +26,18 @@ glm::vec4 aboutZ(float degrees) {
     return {0.0f, 0.0f, std::sin(half), std::cos(half)};
 }
 
-} // namespace
+}  // namespace
 
 TEST(AnimationSample, linearIsLerpBetweenKeysAndHoldsOutsideThem) {
-    const auto c = channel(AnimationPath::Translation, Interpolation::Linear, {1.0f, 3.0f}, {{0, 0, 0, 0}, {4, 2, -2, 0}});
+    const auto c =
+        channel(AnimationPath::Translation, Interpolation::Linear, {1.0f, 3.0f}, {{0, 0, 0, 0}, {4, 2, -2, 0}});
     expectVec(sample(c, 1.0f), {0, 0, 0, 0});
     expectVec(sample(c, 3.0f), {4, 2, -2, 0});
     expectVec(sample(c, 1.5f), {1, 0.5f, -0.5f, 0});
     expectVec(sample(c, 2.0f), {2, 1, -1, 0});
-    expectVec(sample(c, 0.0f), {0, 0, 0, 0});     // before the first key: the first value
+    expectVec(sample(c, 0.0f), {0, 0, 0, 0});  // before the first key: the first value
     expectVec(sample(c, -5.0f), {0, 0, 0, 0});
-    expectVec(sample(c, 9.0f), {4, 2, -2, 0});    // after the last: the last value
+    expectVec(sample(c, 9.0f), {4, 2, -2, 0});  // after the last: the last value
 }
 
 TEST(AnimationSample, linearFindsTheRightIntervalAmongSeveral) {
@@ -64,15 +65,16 @@ TEST(AnimationSample, stepHoldsThePreviousKey) {
 // = 0.25 + 0.5 − 0.5 = 0.25. The first key's in-tangent and the last key's
 // out-tangent (99) are never used.
 TEST(AnimationSample, cubicSplineIsTheHermiteWithTangentsScaledByTheInterval) {
-    const auto c = channel(AnimationPath::Translation, Interpolation::CubicSpline, {0.0f, 2.0f},
-                           {{99, 99, 99, 0}, {0, 10, 0, 0}, {1, 0, 0, 0}, {2, 0, 0, 0}, {1, 10, 0, 0}, {99, 99, 99, 0}});
+    const auto c =
+        channel(AnimationPath::Translation, Interpolation::CubicSpline, {0.0f, 2.0f},
+                {{99, 99, 99, 0}, {0, 10, 0, 0}, {1, 0, 0, 0}, {2, 0, 0, 0}, {1, 10, 0, 0}, {99, 99, 99, 0}});
     expectVec(sample(c, 0.0f), {0, 10, 0, 0});
     expectVec(sample(c, 2.0f), {1, 10, 0, 0});
     expectVec(sample(c, 1.0f), {0.25f, 10, 0, 0});
     // u = 0.25: t³ = 1/64, t² = 1/16. 2·(1/64 − 2/16 + 1/4) + (−2/64 + 3/16) + 2·(1/64 − 1/16)·2
-    expectVec(sample(c, 0.5f), {2.0f * (1.0f / 64 - 2.0f / 16 + 0.25f) + (-2.0f / 64 + 3.0f / 16) +
-                                    4.0f * (1.0f / 64 - 1.0f / 16),
-                                10, 0, 0});
+    expectVec(
+        sample(c, 0.5f),
+        {2.0f * (1.0f / 64 - 2.0f / 16 + 0.25f) + (-2.0f / 64 + 3.0f / 16) + 4.0f * (1.0f / 64 - 1.0f / 16), 10, 0, 0});
     expectVec(sample(c, -1.0f), {0, 10, 0, 0});
     expectVec(sample(c, 3.0f), {1, 10, 0, 0});
 }
@@ -99,7 +101,8 @@ TEST(AnimationSample, linearRotationIsSlerpNotNormalisedLerp) {
 TEST(AnimationSample, slerpTakesTheShortPathWhenTheNextKeyIsNegated) {
     // -q is the same 90° rotation as q; the short path passes through 45°,
     // the long one through -135°.
-    const auto c = channel(AnimationPath::Rotation, Interpolation::Linear, {0.0f, 1.0f}, {aboutZ(0.0f), -aboutZ(90.0f)});
+    const auto c =
+        channel(AnimationPath::Rotation, Interpolation::Linear, {0.0f, 1.0f}, {aboutZ(0.0f), -aboutZ(90.0f)});
     const glm::vec4 q = sample(c, 0.5f);
     const glm::vec3 x = glm::quat(q.w, q.x, q.y, q.z) * glm::vec3(1, 0, 0);
     EXPECT_NEAR(x.x, std::sqrt(0.5f), 1e-6f);
@@ -110,8 +113,10 @@ TEST(AnimationSample, slerpTakesTheShortPathWhenTheNextKeyIsNegated) {
 TEST(AnimationSample, clipDurationIsTheLastKeyOfAnyChannel) {
     AnimationClip clip;
     EXPECT_EQ(clip.duration(), 0.0f);
-    clip.channels.push_back(channel(AnimationPath::Scale, Interpolation::Step, {0.0f, 1.5f}, {glm::vec4(1), glm::vec4(2)}));
-    clip.channels.push_back(channel(AnimationPath::Scale, Interpolation::Step, {0.5f, 2.5f}, {glm::vec4(1), glm::vec4(2)}));
+    clip.channels.push_back(
+        channel(AnimationPath::Scale, Interpolation::Step, {0.0f, 1.5f}, {glm::vec4(1), glm::vec4(2)}));
+    clip.channels.push_back(
+        channel(AnimationPath::Scale, Interpolation::Step, {0.5f, 2.5f}, {glm::vec4(1), glm::vec4(2)}));
     EXPECT_FLOAT_EQ(clip.duration(), 2.5f);
 }
 
@@ -140,8 +145,8 @@ struct Slider {
     ModelAnimation animation() const {
         ModelAnimation a;
         a.clip.name = "slide";
-        a.clip.channels.push_back(channel(AnimationPath::Translation, Interpolation::Linear, {0.0f, 2.0f},
-                                          {{0, 0, 0, 0}, {4, 0, 0, 0}}));
+        a.clip.channels.push_back(
+            channel(AnimationPath::Translation, Interpolation::Linear, {0.0f, 2.0f}, {{0, 0, 0, 0}, {4, 0, 0, 0}}));
         Trs rest;
         rest.rotation = glm::angleAxis(glm::radians(90.0f), glm::vec3(0, 0, 1));
         rest.scale = glm::vec3(3.0f);
@@ -151,7 +156,7 @@ struct Slider {
     glm::vec3 x() const { return glm::vec3(scene.local(node)[3]); }
 };
 
-} // namespace
+}  // namespace
 
 TEST(AnimationPlayer, loopsByDefaultAndKeepsTheRestOfTheRestPose) {
     Slider s;
@@ -161,8 +166,8 @@ TEST(AnimationPlayer, loopsByDefaultAndKeepsTheRestOfTheRestPose) {
     player.apply(s.scene, 3.0);  // 3 mod 2 = 1 s into the clip
     EXPECT_NEAR(s.x().x, 2.0f, 1e-6f);
     // The channel drives translation only: the rest rotation and scale stay.
-    const glm::mat4 expected = glm::scale(glm::rotate(glm::translate(glm::mat4(1.0f), {2, 0, 0}), glm::radians(90.0f), {0, 0, 1}),
-                                          glm::vec3(3.0f));
+    const glm::mat4 expected = glm::scale(
+        glm::rotate(glm::translate(glm::mat4(1.0f), {2, 0, 0}), glm::radians(90.0f), {0, 0, 1}), glm::vec3(3.0f));
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r) EXPECT_NEAR(s.scene.local(s.node)[c][r], expected[c][r], 1e-5f);
 }
@@ -200,9 +205,11 @@ TEST(AnimationPlayer, worldMatricesAndBoundsFollowAfterUpdate) {
 
 TEST(AnimationSample, headerExample) {
     // graph/animation/AnimationClip.hpp
-    AnimationChannel c{.target = 0, .path = AnimationPath::Translation,
+    AnimationChannel c{.target = 0,
+                       .path = AnimationPath::Translation,
                        .interpolation = Interpolation::Linear,
-                       .times = {0.0f, 1.0f}, .values = {{0, 0, 0, 0}, {2, 0, 0, 0}}};
-    glm::vec4 v = sample(c, 0.25f);   // (0.5, 0, 0, 0)
+                       .times = {0.0f, 1.0f},
+                       .values = {{0, 0, 0, 0}, {2, 0, 0, 0}}};
+    glm::vec4 v = sample(c, 0.25f);  // (0.5, 0, 0, 0)
     EXPECT_EQ(v, glm::vec4(0.5f, 0, 0, 0));
 }

@@ -60,7 +60,7 @@ private:
     void (*oldHandler_)(int) = nullptr;
 };
 
-} // namespace
+}  // namespace
 
 TEST(BinaryWriter, writesLittleEndianThatTheReaderReadsBack) {
     const char magic[4] = {'A', '\0', 'B', 'C'};

@@ -30,7 +30,7 @@ ModelError errorOf(const std::function<void()>& read) {
 
 constexpr char kTestMagic[4] = {'T', 'E', '\0', 'S'};
 
-} // namespace
+}  // namespace
 
 TEST(BinaryReader, readsLittleEndianValuesAndKeepsItsPlace) {
     const auto b = bytes({0x11, 0x34, 0x12, 0x78, 0x56, 0x34, 0x12, 1, 0, 0, 0, 0, 0, 0, 0x80, 0, 0, 0x80, 0x3f});
@@ -57,7 +57,8 @@ TEST(BinaryReader, magicMustMatchEveryByteIncludingZeros) {
     EXPECT_EQ(std::string(e.what()), "x.bin: byte 0: wrong magic");
 
     const auto shortFile = bytes({'T', 'E'});
-    const ModelError s = errorOf([&] { BinaryReader(shortFile, "x.bin").magic(kTestMagic, "the header", "wrong magic"); });
+    const ModelError s =
+        errorOf([&] { BinaryReader(shortFile, "x.bin").magic(kTestMagic, "the header", "wrong magic"); });
     EXPECT_EQ(std::string(s.what()), "x.bin: byte 0: file ends inside the header");
 }
 

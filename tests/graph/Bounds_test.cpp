@@ -52,9 +52,9 @@ TEST(Frustum, classifiesSpheresInsideStraddlingAndOutside) {
     const glm::mat4 view = glm::lookAt(glm::vec3(0), {0, 0, -1}, {0, 1, 0});
     const Frustum f = Frustum::fromViewProjection(proj * view);
     EXPECT_EQ(f.classify({{0, 0, -10}, 1}), Containment::Inside);
-    EXPECT_EQ(f.classify({{0, 0, 10}, 1}), Containment::Outside);      // behind the eye
-    EXPECT_EQ(f.classify({{0, 0, -200}, 1}), Containment::Outside);    // beyond far
-    EXPECT_EQ(f.classify({{0, 0, -100}, 1}), Containment::Intersects); // on the far plane
+    EXPECT_EQ(f.classify({{0, 0, 10}, 1}), Containment::Outside);       // behind the eye
+    EXPECT_EQ(f.classify({{0, 0, -200}, 1}), Containment::Outside);     // beyond far
+    EXPECT_EQ(f.classify({{0, 0, -100}, 1}), Containment::Intersects);  // on the far plane
     // At distance 10 the half-width is 10 * tan(30 deg) = 5.77.
     EXPECT_EQ(f.classify({{7.5f, 0, -10}, 1}), Containment::Outside);
     EXPECT_EQ(f.classify({{5.77f, 0, -10}, 1}), Containment::Intersects);

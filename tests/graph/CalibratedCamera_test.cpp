@@ -1,7 +1,7 @@
 #include "graph/camera/CalibratedCamera.hpp"
 
-#include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
 
 namespace arcomp {
 namespace {
@@ -28,7 +28,7 @@ glm::dvec2 pixelThroughView(const View& v, const glm::dvec3& p) {
     return {(ndc.x + 1.0) / 2.0 * v.viewport.x - 0.5, (1.0 - ndc.y) / 2.0 * v.viewport.y - 0.5};
 }
 
-} // namespace
+}  // namespace
 
 TEST(CalibratedCamera, poseGivesPositionHeightAndTilt) {
     const CalibratedCamera c = kioskCamera();
@@ -42,7 +42,8 @@ TEST(CalibratedCamera, theCgViewPutsEveryPointOnThePixelThePinholeModelDoes) {
     const CalibratedCamera c = kioskCamera();
     const View v = c.view(c.intrinsics.imageSize, 0.1f, 100.0f);
     EXPECT_NEAR(v.eye.y, 3.0f, 1e-5f);
-    for (const glm::dvec3 p : {glm::dvec3(0, 0, 0), glm::dvec3(2.5, 0, 1), glm::dvec3(-3, 1.7, -4), glm::dvec3(1, 0.2, 6)}) {
+    for (const glm::dvec3 p :
+         {glm::dvec3(0, 0, 0), glm::dvec3(2.5, 0, 1), glm::dvec3(-3, 1.7, -4), glm::dvec3(1, 0.2, 6)}) {
         const glm::dvec2 expected = c.project(p);
         const glm::dvec2 drawn = pixelThroughView(v, p);
         EXPECT_NEAR(drawn.x, expected.x, 2e-3) << p.x << "," << p.y << "," << p.z;
@@ -94,5 +95,4 @@ TEST(CalibratedCamera, aFootPixelGivesBackTheFloorPointAndItsDepth) {
     EXPECT_FALSE(c.floorPointAt({384.0, 0.0}));
 }
 
-} // namespace arcomp
-
+}  // namespace arcomp

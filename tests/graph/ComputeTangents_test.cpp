@@ -24,7 +24,7 @@ void expectNear(const glm::vec4& got, const glm::vec4& want) {
     EXPECT_EQ(got.w, want.w);
 }
 
-} // namespace
+}  // namespace
 
 TEST(ComputeTangents, uAlongXWithVDownTheImageGivesTangentXAndPositiveSign) {
     // As glTF exporters write a quad: u = x, v = 1 - y (image rows top down).
@@ -67,7 +67,7 @@ TEST(ComputeTangents, tangentIsMadePerpendicularToASlantedNormal) {
 
 TEST(ComputeTangents, degenerateUvsGiveAUnitTangentPerpendicularToTheNormalNeverNaN) {
     const std::vector<glm::vec3> normals{glm::normalize(glm::vec3(1, 2, 3)), {0, 0, 1}, {1, 0, 0}, {0, -1, 0}};
-    for (const std::vector<glm::vec2>& uv : {std::vector<glm::vec2>(4, glm::vec2(0.5f)),                    // one point
+    for (const std::vector<glm::vec2>& uv : {std::vector<glm::vec2>(4, glm::vec2(0.5f)),                 // one point
                                              std::vector<glm::vec2>{{0, 0}, {1, 0}, {2, 0}, {3, 0}}}) {  // one line
         const auto t = computeTangents(kQuad, normals, uv, kTwoTriangles);
         ASSERT_EQ(t.size(), 4u);

@@ -18,7 +18,8 @@ namespace {
 // cost depends on both.
 CostModel singleObjectTable() {
     CostModel m(3);
-    const double perPixel[3][kShadingCount] = {{8e-6, 9e-6, 10e-6, 37e-6}, {4e-6, 5e-6, 5e-6, 23e-6}, {3e-6, 3.5e-6, 4e-6, 19e-6}};
+    const double perPixel[3][kShadingCount] = {
+        {8e-6, 9e-6, 10e-6, 37e-6}, {4e-6, 5e-6, 5e-6, 23e-6}, {3e-6, 3.5e-6, 4e-6, 19e-6}};
     const double fixed[3][kShadingCount] = {{1.1, 1.2, 1.25, 2.4}, {0.2, 0.2, 0.22, 0.55}, {0.05, 0.06, 0.06, 0.13}};
     for (std::size_t l = 0; l < 3; ++l)
         for (int s = 0; s < kShadingCount; ++s) m.set(l, static_cast<Shading>(s), {perPixel[l][s], fixed[l][s]});
@@ -49,7 +50,8 @@ std::vector<ChargedItem> randomFrame(std::mt19937& rng, bool (*allowed)(std::siz
     const int favourite = level(rng);
     std::vector<ChargedItem> items;
     while (items.size() < 50) {
-        const ChargedItem item{static_cast<std::size_t>(rng() % 2 ? favourite : level(rng)), static_cast<Shading>(shading(rng)), pixels(rng)};
+        const ChargedItem item{static_cast<std::size_t>(rng() % 2 ? favourite : level(rng)),
+                               static_cast<Shading>(shading(rng)), pixels(rng)};
         if (allowed(item.level, item.shading)) items.push_back(item);
     }
     return items;
@@ -61,7 +63,8 @@ double frameMs(const CostModel& m, const std::vector<ChargedItem>& items) {
     return ms;
 }
 
-void addFrames(CostTableFit& fit, const CostModel& t, int frames, bool (*allowed)(std::size_t, Shading), unsigned seed) {
+void addFrames(CostTableFit& fit, const CostModel& t, int frames, bool (*allowed)(std::size_t, Shading),
+               unsigned seed) {
     std::mt19937 rng(seed);
     for (int f = 0; f < frames; ++f) {
         const std::vector<ChargedItem> items = randomFrame(rng, allowed);
@@ -73,7 +76,7 @@ bool anyPair(std::size_t, Shading) { return true; }
 bool notLevel1Phong(std::size_t level, Shading s) { return !(level == 1 && s == Shading::Phong); }
 bool notFlat(std::size_t, Shading s) { return s != Shading::Flat; }
 
-} // namespace
+}  // namespace
 
 TEST(CostTableFit, wholeFramesPredictTheScenesFramesWhereTheSingleObjectTableCannot) {
     const CostModel prior = singleObjectTable();
@@ -84,7 +87,8 @@ TEST(CostTableFit, wholeFramesPredictTheScenesFramesWhereTheSingleObjectTableCan
     const CostModel fitted = fit.table();
     ASSERT_EQ(fitted.levels(), 3u);
     EXPECT_EQ(fitted.overheadMs, prior.overheadMs);
-    for (int s = 0; s < kShadingCount; ++s) EXPECT_NEAR(fit.gains()[static_cast<std::size_t>(s)], kSceneShare[s], 0.02) << "shading " << s;
+    for (int s = 0; s < kShadingCount; ++s)
+        EXPECT_NEAR(fit.gains()[static_cast<std::size_t>(s)], kSceneShare[s], 0.02) << "shading " << s;
     EXPECT_NEAR(fit.gains()[kShadingCount], kSceneFixed, 0.02);
     // Frames it was not fitted on: other random mixes, and the mix the
     // controller makes (near objects fine and lit, far ones coarse and
@@ -124,7 +128,8 @@ TEST(CostTableFit, aShadingTheFramesNeverDrawKeepsItsSingleObjectCost) {
     CostTableFit fit(prior);
     addFrames(fit, sceneTable(prior), 150, notFlat, 3);
     const CostModel fitted = fit.table();
-    for (std::size_t l = 0; l < 3; ++l) EXPECT_DOUBLE_EQ(fitted.at(l, Shading::Flat).msPerPixel, prior.at(l, Shading::Flat).msPerPixel);
+    for (std::size_t l = 0; l < 3; ++l)
+        EXPECT_DOUBLE_EQ(fitted.at(l, Shading::Flat).msPerPixel, prior.at(l, Shading::Flat).msPerPixel);
     EXPECT_NE(fitted.at(0, Shading::Gouraud).msPerPixel, prior.at(0, Shading::Gouraud).msPerPixel);
 }
 

@@ -7,7 +7,7 @@ using namespace arcomp;
 namespace {
 // Identity view-projection: positions are NDC, so x, y in [-1, 1] fill the mask.
 const glm::mat4 kIdentity(1.0f);
-} // namespace
+}  // namespace
 
 TEST(CoverageRaster, fullScreenQuadCoversEveryPixel) {
     const std::vector<glm::vec3> p = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
@@ -19,8 +19,8 @@ TEST(CoverageRaster, fullScreenQuadCoversEveryPixel) {
 
 TEST(CoverageRaster, sharedEdgeThroughPixelCentresGoesToExactlyOneTriangle) {
     // A square whose diagonal runs exactly through pixel centres of an 8x8 mask.
-    const std::vector<glm::vec3> p = {{-0.875f, -0.875f, 0}, {0.875f, -0.875f, 0}, {0.875f, 0.875f, 0},
-                                      {-0.875f, 0.875f, 0}};
+    const std::vector<glm::vec3> p = {
+        {-0.875f, -0.875f, 0}, {0.875f, -0.875f, 0}, {0.875f, 0.875f, 0}, {-0.875f, 0.875f, 0}};
     const std::vector<std::uint32_t> first = {0, 1, 2}, second = {0, 2, 3}, both = {0, 1, 2, 0, 2, 3};
     CoverageMask a(8, 8), b(8, 8), ab(8, 8);
     rasterizeCoverage(p, first, kIdentity, a);

@@ -1,5 +1,5 @@
-#include "graph/silhouette/FacingClass.hpp"
 #include "graph/core/Geometry.hpp"
+#include "graph/silhouette/FacingClass.hpp"
 #include "graph/silhouette/ViewRegion.hpp"
 
 #include <gtest/gtest.h>
@@ -21,7 +21,7 @@ std::vector<Facing> classifyCube(const Box& region) {
     return classifyTriangles(cube.positions, cube.indices, ViewRegion::fromBox(region).vertices());
 }
 
-} // namespace
+}  // namespace
 
 TEST(FacingClass, cubeFaceIsFrontMeshFromRegionInFrontOfIt) {
     const auto f = classifyCube({{-0.5f, -0.5f, 3}, {0.5f, 0.5f, 4}});

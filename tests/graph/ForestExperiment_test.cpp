@@ -82,8 +82,8 @@ TEST(ForestExperiment, simplificationAloneDrawsFewerThanFullDetail) {
     EXPECT_LT(f.triangles(ForestMode::Simplified, 0.01f), f.triangles(ForestMode::Full, 0.01f));
 }
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp
 
 namespace arcomp {
 namespace {
@@ -100,7 +100,8 @@ TEST(ForestExperiment, aTreeCarriedAwayLeavesItsGroupAndIsDrawnOnItsOwn) {
     const std::size_t before = f.triangles(ForestMode::Grouped, 0.1f);
     EXPECT_EQ(before, 12u) << "one box";
     // Tree 0 is carried 10 m towards the viewer at 2 m/s.
-    f.world.scene.setLocal(f.forest.trees[0], glm::translate(f.world.scene.local(f.forest.trees[0]), {0.0f, 0.0f, 1000.0f}));
+    f.world.scene.setLocal(f.forest.trees[0],
+                           glm::translate(f.world.scene.local(f.forest.trees[0]), {0.0f, 0.0f, 1000.0f}));
     f.world.scene.update();
     const MovedObject moved[] = {{0, {0.0f, 0.0f, 200.0f}}};
     const GroupingRebuildStats s = regroupMoved(f.world.scene, f.forest.grouping, f.world.grouping, moved);
@@ -117,7 +118,8 @@ TEST(ForestExperiment, treesCarriedTogetherStayGrouped) {
     const std::uint32_t root = tree.roots()[0];
     std::vector<MovedObject> moved;
     for (std::uint32_t i = 0; i < kForestTrees; ++i) {
-        f.world.scene.setLocal(f.forest.trees[i], glm::translate(f.world.scene.local(f.forest.trees[i]), {50.0f, 0.0f, 0.0f}));
+        f.world.scene.setLocal(f.forest.trees[i],
+                               glm::translate(f.world.scene.local(f.forest.trees[i]), {50.0f, 0.0f, 0.0f}));
         moved.push_back({i, {150.0f, 0.0f, 0.0f}});
     }
     f.world.scene.update();
@@ -127,8 +129,8 @@ TEST(ForestExperiment, treesCarriedTogetherStayGrouped) {
     EXPECT_EQ(tree.roots()[0], root);
 }
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp
 
 namespace arcomp {
 namespace {
@@ -150,7 +152,8 @@ TEST(ForestExperiment, anImpostorIsUsedOnlyWhileItsGroupStaysWhereItWasBaked) {
     EXPECT_EQ(proxyGeometry(), g.quadGeometry);
     std::vector<MovedObject> moved;
     for (std::uint32_t i = 0; i < kForestTrees; ++i) {
-        f.world.scene.setLocal(f.forest.trees[i], glm::translate(f.world.scene.local(f.forest.trees[i]), {400.0f, 0.0f, 0.0f}));
+        f.world.scene.setLocal(f.forest.trees[i],
+                               glm::translate(f.world.scene.local(f.forest.trees[i]), {400.0f, 0.0f, 0.0f}));
         moved.push_back({i, {100.0f, 0.0f, 0.0f}});
     }
     f.world.scene.update();
@@ -158,5 +161,5 @@ TEST(ForestExperiment, anImpostorIsUsedOnlyWhileItsGroupStaysWhereItWasBaked) {
     EXPECT_EQ(proxyGeometry(), g.boxPart.geometry) << "moved since baking: the box stands in";
 }
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

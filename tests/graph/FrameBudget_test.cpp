@@ -67,24 +67,24 @@ std::vector<glm::vec3> ahead(std::size_t n) {
     return at;
 }
 
-} // namespace
+}  // namespace
 
 TEST(FrameBudget, oneObjectDegradesShadingFirstThenLevelWithShadingResetToHighest) {
     const Synthetic s(ahead(1));
     const CostModel m = table();
     // The paper's order, one step further each time the target drops below
     // the cost of the previous setting.
-    const Setting expected[] = {{0, Shading::Phong},   {0, Shading::Gouraud}, {0, Shading::Flat}, {0, Shading::Unlit},
-                                {1, Shading::Phong},   {1, Shading::Gouraud}, {1, Shading::Flat}, {1, Shading::Unlit},
-                                {2, Shading::Phong},   {2, Shading::Gouraud}, {2, Shading::Flat}, {2, Shading::Unlit}};
+    const Setting expected[] = {{0, Shading::Phong}, {0, Shading::Gouraud}, {0, Shading::Flat}, {0, Shading::Unlit},
+                                {1, Shading::Phong}, {1, Shading::Gouraud}, {1, Shading::Flat}, {1, Shading::Unlit},
+                                {2, Shading::Phong}, {2, Shading::Gouraud}, {2, Shading::Flat}, {2, Shading::Unlit}};
     const float pixels = 1e5f;
     for (const Setting& e : expected) {
         FrameBudget budget(m, {.targetMs = m.overheadMs + m.itemMs(e.level, e.shading, pixels) + 1e-9});
         DrawList list = s.list({pixels});
         budget.apply(s.scene, list, s.view);
-        EXPECT_EQ(settingOf(list.items[0]), e) << "expected level " << e.level << " " << toString(e.shading)
-                                               << ", got level " << int(list.items[0].level) << " "
-                                               << toString(list.items[0].shading);
+        EXPECT_EQ(settingOf(list.items[0]), e)
+            << "expected level " << e.level << " " << toString(e.shading) << ", got level " << int(list.items[0].level)
+            << " " << toString(list.items[0].shading);
     }
 }
 
@@ -133,8 +133,9 @@ TEST(FrameBudget, timeToSpareRaisesTheLargestFirstAndKeepsTheLastSettingThatFits
     // The largest stopped where its next step would not have fitted.
     const DrawItem& big = list.items[2];
     if (big.level != 0 || big.shading != Shading::Phong) {
-        const Setting next = big.shading == Shading::Phong ? Setting{big.level - 1, Shading::Unlit}
-                                                           : Setting{big.level, static_cast<Shading>(int(big.shading) + 1)};
+        const Setting next = big.shading == Shading::Phong
+                                 ? Setting{big.level - 1, Shading::Unlit}
+                                 : Setting{big.level, static_cast<Shading>(int(big.shading) + 1)};
         const double extra = m.itemMs(next.level, next.shading, 1e6) - m.itemMs(big.level, big.shading, 1e6);
         EXPECT_GT(st.predictedMs + extra, 6.5 * 0.95);
     }
@@ -224,7 +225,7 @@ int settingChanges(const BudgetSettings& settings) {
     return changes;
 }
 
-} // namespace
+}  // namespace
 
 TEST(FrameBudget, hysteresisKeepsSettingsFromFlippingFrameToFrame) {
     BudgetSettings steady{.targetMs = 12.0};

@@ -29,9 +29,7 @@ TEST(GazeAcuity, k2FallsLinearlyToZeroAtC2) {
     EXPECT_FLOAT_EQ(motionAcuity(60.0f, paper), 0.0f);
 }
 
-TEST(GazeAcuity, productOfBothCoefficients) {
-    EXPECT_NEAR(gazeAcuity(11.0f, 15.0f, paper), 0.5f * 0.3678794f, 1e-6f);
-}
+TEST(GazeAcuity, productOfBothCoefficients) { EXPECT_NEAR(gazeAcuity(11.0f, 15.0f, paper), 0.5f * 0.3678794f, 1e-6f); }
 
 TEST(GazeAcuity, representativePointIsNearestSpherePointToEye) {
     const glm::vec3 p = representativePoint({0, 0, 10}, {0, 0, 0}, 2.0f);

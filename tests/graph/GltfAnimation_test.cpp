@@ -23,8 +23,9 @@ namespace {
 std::string oneChannel(int input, int output, const std::string& path, const std::string& interpolation = "LINEAR",
                        int node = 0) {
     return R"([{"name": "spin", "samplers": [{"input": )" + std::to_string(input) + R"(, "output": )" +
-           std::to_string(output) + R"(, "interpolation": ")" + interpolation + R"("}], "channels": [{"sampler": 0, "target": {"node": )" +
-           std::to_string(node) + R"(, "path": ")" + path + R"("}}]}])";
+           std::to_string(output) + R"(, "interpolation": ")" + interpolation +
+           R"("}], "channels": [{"sampler": 0, "target": {"node": )" + std::to_string(node) + R"(, "path": ")" + path +
+           R"("}}]}])";
 }
 
 void expectRejected(const GltfFile& f, const std::string& where, const std::string& reasonPart) {
@@ -57,7 +58,7 @@ void expectMatrix(const glm::mat4& got, const glm::mat4& want) {
         for (int r = 0; r < 4; ++r) EXPECT_NEAR(got[c][r], want[c][r], 1e-5f) << "column " << c << " row " << r;
 }
 
-} // namespace
+}  // namespace
 
 // The spinner is scaled ×2 at rest and, over 2 s, slides from x = 0 to x = 4
 // and turns from 0° through 90° (at 1 s) to 180° about Z. At 0.5 s: x = 1,
@@ -72,7 +73,8 @@ TEST(GltfAnimation, aNodeTurnsAndSlidesWhenPlayed) {
     const glm::vec4 a = aboutZ(0), b = aboutZ(90), c = aboutZ(180);
     const int turn = f.add({a.x, a.y, a.z, a.w, b.x, b.y, b.z, b.w, c.x, c.y, c.z, c.w}, "VEC4");
     f.animations = R"([{"name": "spin", "samplers": [{"input": )" + std::to_string(times) + R"(, "output": )" +
-                   std::to_string(slide) + R"(}, {"input": )" + std::to_string(turnTimes) + R"(, "output": )" + std::to_string(turn) +
+                   std::to_string(slide) + R"(}, {"input": )" + std::to_string(turnTimes) + R"(, "output": )" +
+                   std::to_string(turn) +
                    R"(}], "channels": [{"sampler": 0, "target": {"node": 0, "path": "translation"}},
                                        {"sampler": 1, "target": {"node": 0, "path": "rotation"}}]}])";
     Scene scene;
@@ -92,8 +94,8 @@ TEST(GltfAnimation, aNodeTurnsAndSlidesWhenPlayed) {
         SCOPED_TRACE(seconds);
         player.apply(scene, seconds);
         scene.update();
-        const glm::mat4 want =
-            glm::scale(glm::rotate(glm::translate(glm::mat4(1.0f), {x, 0, 0}), glm::radians(degrees), {0, 0, 1}), glm::vec3(2.0f));
+        const glm::mat4 want = glm::scale(
+            glm::rotate(glm::translate(glm::mat4(1.0f), {x, 0, 0}), glm::radians(degrees), {0, 0, 1}), glm::vec3(2.0f));
         expectMatrix(scene.world(node), want);
         // The bound moved and turned with the node: centred on the turned,
         // scaled triangle's centre, twice its radius.
@@ -128,9 +130,11 @@ TEST(GltfAnimation, stepAndCubicSplineSamplersAreRead) {
     const int steps = f.add({1, 1, 1, 3, 3, 3}, "VEC3");
     const int cubic = f.add({0, 0, 0, 0, 0, 0, 9, 9, 9, /**/ 9, 9, 9, 1, 2, 3, 0, 0, 0}, "VEC3");
     f.nodes = R"([{"mesh": 0, "children": [1]}, {"name": "child"}])";
-    f.animations = R"([{"samplers": [{"input": )" + std::to_string(times) + R"(, "output": )" + std::to_string(steps) +
-                   R"(, "interpolation": "STEP"}, {"input": )" + std::to_string(times) + R"(, "output": )" + std::to_string(cubic) +
-                   R"(, "interpolation": "CUBICSPLINE"}], "channels": [{"sampler": 0, "target": {"node": 0, "path": "scale"}},
+    f.animations =
+        R"([{"samplers": [{"input": )" + std::to_string(times) + R"(, "output": )" + std::to_string(steps) +
+        R"(, "interpolation": "STEP"}, {"input": )" + std::to_string(times) + R"(, "output": )" +
+        std::to_string(cubic) +
+        R"(, "interpolation": "CUBICSPLINE"}], "channels": [{"sampler": 0, "target": {"node": 0, "path": "scale"}},
                       {"sampler": 1, "target": {"node": 1, "path": "translation"}}]}])";
     Scene scene;
     const LoadedModel m = loadText(f, scene);
@@ -167,11 +171,13 @@ TEST(GltfAnimation, samplerInputMustBeFloatScalarTimesThatIncrease) {
     const int out = f.add({0, 0, 0, 1, 1, 1}, "VEC3");
     const int vec = f.add({0, 1, 2, 3, 4, 5}, "VEC3");
     f.animations = oneChannel(vec, out, "translation");
-    expectRejected(f, "/accessors/" + std::to_string(vec) + "/type", "expected SCALAR (used by /animations/0/samplers/0/input)");
+    expectRejected(f, "/accessors/" + std::to_string(vec) + "/type",
+                   "expected SCALAR (used by /animations/0/samplers/0/input)");
     const std::uint16_t shorts[2] = {0, 1};
     const int ints = f.addBytes(shorts, 2, "SCALAR", 5123);
     f.animations = oneChannel(ints, out, "translation");
-    expectRejected(f, "/accessors/" + std::to_string(ints) + "/componentType", "not allowed for /animations/0/samplers/0/input");
+    expectRejected(f, "/accessors/" + std::to_string(ints) + "/componentType",
+                   "not allowed for /animations/0/samplers/0/input");
     const int flat = f.add({0, 0}, "SCALAR");
     f.animations = oneChannel(flat, out, "translation");
     expectRejected(f, "/animations/0/samplers/0/input", "key times must increase: key 1");
@@ -190,7 +196,8 @@ TEST(GltfAnimation, outputCountMustMatchTheKeysThreeTimesForCubicSpline) {
     expectRejected(f, "/animations/0/samplers/0/output", "has 3 elements; expected 2 (2 key times)");
     const int two = f.add({0, 0, 0, 1, 1, 1}, "VEC3");
     f.animations = oneChannel(times, two, "scale", "CUBICSPLINE");
-    expectRejected(f, "/animations/0/samplers/0/output", "has 2 elements; expected 6 (2 key times × 3 for CUBICSPLINE)");
+    expectRejected(f, "/animations/0/samplers/0/output",
+                   "has 2 elements; expected 6 (2 key times × 3 for CUBICSPLINE)");
     f.animations = oneChannel(times, two, "scale", "BEZIER");
     expectRejected(f, "/animations/0/samplers/0/interpolation", "unknown interpolation 'BEZIER'");
 }
@@ -201,7 +208,8 @@ TEST(GltfAnimation, outputTypeFollowsThePath) {
     const int vec4 = f.add({0, 0, 0, 1, 0, 0, 0, 1}, "VEC4");
     const int vec3 = f.add({0, 0, 0, 1, 1, 1}, "VEC3");
     f.animations = oneChannel(times, vec4, "translation");
-    expectRejected(f, "/accessors/" + std::to_string(vec4) + "/type", "is VEC4, expected VEC3 (used by /animations/0/samplers/0/output)");
+    expectRejected(f, "/accessors/" + std::to_string(vec4) + "/type",
+                   "is VEC4, expected VEC3 (used by /animations/0/samplers/0/output)");
     f.animations = oneChannel(times, vec3, "rotation");
     expectRejected(f, "/accessors/" + std::to_string(vec3) + "/type", "is VEC3, expected VEC4");
     const std::uint8_t bytes[6] = {0, 0, 0, 1, 1, 1};
@@ -228,7 +236,8 @@ TEST(GltfAnimation, channelsMustTargetExistingNodesWithoutAMatrix) {
     expectRejected(f, "/animations/0/channels/0/sampler", "sampler 1 does not exist (1 samplers)");
     f.animations = R"([{"samplers": [{"input": )" + std::to_string(times) + R"(, "output": )" + std::to_string(out) +
                    R"(}], "channels": [{"sampler": 0, "target": {"node": 0, "path": "translation"}},
-                                       {"sampler": 0, "target": {"node": 0, "path": "translation"}}]})" + "]";
+                                       {"sampler": 0, "target": {"node": 0, "path": "translation"}}]})" +
+                   "]";
     expectRejected(f, "/animations/0/channels/1", "a second channel for the translation of node 0");
 }
 
@@ -238,7 +247,8 @@ TEST(GltfAnimation, morphWeightsAreSkippedWithAWarningNamingTheAnimation) {
     const int weights = f.add({0, 1}, "SCALAR");
     const int out = f.add({0, 0, 0, 1, 1, 1}, "VEC3");
     f.animations = R"([{"name": "blink", "samplers": [{"input": )" + std::to_string(times) + R"(, "output": )" +
-                   std::to_string(weights) + R"(}, {"input": )" + std::to_string(times) + R"(, "output": )" + std::to_string(out) +
+                   std::to_string(weights) + R"(}, {"input": )" + std::to_string(times) + R"(, "output": )" +
+                   std::to_string(out) +
                    R"(}], "channels": [{"sampler": 0, "target": {"node": 0, "path": "weights"}},
                                        {"sampler": 1, "target": {"node": 0, "path": "scale"}}]}])";
     Scene scene;
@@ -255,14 +265,16 @@ TEST(GltfAnimation, morphWeightsAreSkippedWithAWarningNamingTheAnimation) {
 
 TEST(GltfSkin, jointsAndInverseBindMatricesAreKeptAndTheMeshDrawnInBindPose) {
     GltfFile f;
-    f.nodes = R"([{"name": "body", "mesh": 0, "skin": 0, "children": [1]}, {"name": "hip", "children": [2]}, {"name": "knee"}])";
+    f.nodes =
+        R"([{"name": "body", "mesh": 0, "skin": 0, "children": [1]}, {"name": "hip", "children": [2]}, {"name": "knee"}])";
     std::vector<float> ibm;
     for (int j = 0; j < 2; ++j) {
         const glm::mat4 m = glm::translate(glm::mat4(1.0f), {0, -float(j + 1), 0});
         for (int e = 0; e < 16; ++e) ibm.push_back(m[e / 4][e % 4]);
     }
     const int matrices = f.add(ibm, "MAT4");
-    f.skins = R"([{"name": "legs", "joints": [1, 2], "skeleton": 1, "inverseBindMatrices": )" + std::to_string(matrices) + "}]";
+    f.skins = R"([{"name": "legs", "joints": [1, 2], "skeleton": 1, "inverseBindMatrices": )" +
+              std::to_string(matrices) + "}]";
     Scene scene;
     const LoadedModel m = loadText(f, scene);
     ASSERT_EQ(m.skins.size(), 1u);
@@ -278,7 +290,8 @@ TEST(GltfSkin, jointsAndInverseBindMatricesAreKeptAndTheMeshDrawnInBindPose) {
     bool warned = false;
     // The mesh has no JOINTS_0 and WEIGHTS_0 to skin it with.
     for (const std::string& w : m.warnings)
-        warned |= w == "/meshes/0/primitives/0: skinned by skin 0 'legs' (/nodes/0) but has no skin influences to pose it; drawn in its bind pose";
+        warned |= w == "/meshes/0/primitives/0: skinned by skin 0 'legs' (/nodes/0) but has no skin influences to pose "
+                       "it; drawn in its bind pose";
     EXPECT_TRUE(warned);
 }
 

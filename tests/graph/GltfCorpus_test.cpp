@@ -51,7 +51,7 @@ const std::set<std::string> kUnsafeCodes{"ACCESSOR_INDEX_OOB", "BUFFER_VIEW_TOO_
                                          "MESH_PRIMITIVE_ATTRIBUTES_ACCESSOR_INVALID_FORMAT",
                                          "ACCESSOR_TOTAL_OFFSET_ALIGNMENT"};
 
-} // namespace
+}  // namespace
 
 TEST(GltfCorpus, everyFileLoadsOrIsRejectedCleanlyAsTheValidatorSays) {
     const fs::path corpus = arcomp::test::sharedData() / "gltf/validator-corpus";
@@ -78,8 +78,10 @@ TEST(GltfCorpus, everyFileLoadsOrIsRejectedCleanlyAsTheValidatorSays) {
         }
         if (errors == 0) {
             loaded ? ++validLoaded : ++validRejected;
-            if (!loaded) EXPECT_TRUE(kValidButNotLoaded.contains(name)) << name << " is valid but was rejected: " << why;
-            else EXPECT_FALSE(kValidButNotLoaded.contains(name)) << name << " now loads; update the list";
+            if (!loaded)
+                EXPECT_TRUE(kValidButNotLoaded.contains(name)) << name << " is valid but was rejected: " << why;
+            else
+                EXPECT_FALSE(kValidButNotLoaded.contains(name)) << name << " now loads; update the list";
         } else {
             loaded ? ++invalidLoaded : ++invalidRejected;
             if (loaded) {

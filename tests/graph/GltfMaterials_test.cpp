@@ -68,7 +68,7 @@ void expectTangent(const glm::vec4& t, const glm::vec4& want) {
 const char* kWithUv1 =
     R"([{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2, "TEXCOORD_1": 3}, "indices": 9, "material": 0}])";
 
-} // namespace
+}  // namespace
 
 TEST(GltfMaterials, everySlotFactorAndExtensionIsRead) {
     QuadGltf q;
@@ -132,7 +132,8 @@ TEST(GltfMaterials, texturesOfASecondModelPointAtItsOwnImages) {
     ASSERT_EQ(scene.images().size(), 2u);
     std::vector<int> images;
     for (NodeId n : scene.order())
-        if (scene.kind(n) == NodeKind::Mesh) images.push_back(scene.material(scene.meshPart(n).material).emissiveTexture.image);
+        if (scene.kind(n) == NodeKind::Mesh)
+            images.push_back(scene.material(scene.meshPart(n).material).emissiveTexture.image);
     EXPECT_EQ(images, (std::vector<int>{0, 1}));
 }
 
@@ -193,7 +194,8 @@ TEST(GltfMaterials, generatedTangentsFollowTheNormalMapsTexcoordSet) {
 
 TEST(GltfMaterials, tangentsInTheFileAreKeptForANormalMap) {
     QuadGltf q;
-    q.primitives = R"([{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2, "TANGENT": 7}, "indices": 9, "material": 0}])";
+    q.primitives =
+        R"([{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2, "TANGENT": 7}, "indices": 9, "material": 0}])";
     q.materials = R"([{"normalTexture": {"index": 0}}])";
     const auto l = load(q);
     EXPECT_FALSE(l->geometry().tangentsGenerated);
@@ -268,10 +270,13 @@ TEST(GltfMaterials, badReferencesFailWithTheirPointer) {
                    "/materials/0/pbrMetallicRoughness/metallicRoughnessTexture/index", "does not exist");
     expectRejected(withMaterial(R"({"pbrMetallicRoughness": {"baseColorTexture": {"index": 0, "texCoord": -1}}})"),
                    "/materials/0/pbrMetallicRoughness/baseColorTexture/texCoord", "expected 0 or more");
-    expectRejected(withMaterial(R"({"emissiveTexture": {"index": 0, "extensions": {"KHR_texture_transform": {"offset": [1]}}}})"),
-                   "/materials/0/emissiveTexture/extensions/KHR_texture_transform/offset", "2 numbers");
-    expectRejected(withMaterial(R"({"emissiveTexture": {"index": 0, "extensions": {"KHR_texture_transform": {"texCoord": 0.5}}}})"),
-                   "/materials/0/emissiveTexture/extensions/KHR_texture_transform/texCoord", "integer");
+    expectRejected(
+        withMaterial(R"({"emissiveTexture": {"index": 0, "extensions": {"KHR_texture_transform": {"offset": [1]}}}})"),
+        "/materials/0/emissiveTexture/extensions/KHR_texture_transform/offset", "2 numbers");
+    expectRejected(
+        withMaterial(
+            R"({"emissiveTexture": {"index": 0, "extensions": {"KHR_texture_transform": {"texCoord": 0.5}}}})"),
+        "/materials/0/emissiveTexture/extensions/KHR_texture_transform/texCoord", "integer");
     expectRejected(withMaterial(R"({"extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": -1}}})"),
                    "/materials/0/extensions/KHR_materials_emissive_strength/emissiveStrength", "negative");
 

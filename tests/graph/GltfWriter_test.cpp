@@ -24,14 +24,15 @@ GltfWriter triangle() {
     const std::uint16_t indices[3] = {0, 1, 2};
     const int position = w.accessor(corners, 3, "VEC3", GltfWriter::kFloat, {.bounds = true});
     w.accessor(pad, 1, "SCALAR", GltfWriter::kUnsignedByte);
-    const int index = w.accessor(indices, 3, "SCALAR", GltfWriter::kUnsignedShort, {.target = GltfWriter::kElementArrayBuffer});
+    const int index =
+        w.accessor(indices, 3, "SCALAR", GltfWriter::kUnsignedShort, {.target = GltfWriter::kElementArrayBuffer});
     GltfWriter::add(w.meshes, R"({"primitives": [{"attributes": {"POSITION": )" + std::to_string(position) +
                                   R"(}, "indices": )" + std::to_string(index) + "}]}");
     w.sceneNodes.push_back(GltfWriter::add(w.nodes, R"({"name": "tri", "mesh": 0})"));
     return w;
 }
 
-} // namespace
+}  // namespace
 
 TEST(GltfWriter, aTriangleLoadsWithItsBoundsAndAlignedViews) {
     const GltfWriter w = triangle();

@@ -64,5 +64,5 @@ TEST(GroupingMeasure, paperStepsRunFrom0001To01In100Steps) {
     EXPECT_NEAR(p.lastThreshold(), 0.1, 1e-6);  // the constants are floats
 }
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

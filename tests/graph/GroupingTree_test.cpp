@@ -200,8 +200,8 @@ TEST(GroupingTree, manyMovesKeepTheTreeSettled) {
     expectSettled(t);
 }
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp
 
 namespace arcomp {
 namespace {
@@ -225,5 +225,5 @@ TEST(GroupingTree, cascadingCutsInOneRebuildKeepTheTreeSettled) {
     expectSettled(t);
 }
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

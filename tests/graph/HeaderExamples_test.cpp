@@ -19,7 +19,7 @@ TEST(HeaderExamples, scene) {
     Scene scene;
     NodeId t = scene.addTransform(scene.root(), glm::translate(glm::mat4(1.0f), {0, 0, -5}));
     scene.addMesh(t, {scene.addGeometry(std::move(g)), scene.addMaterial({})});
-    scene.update();   // world matrices and bounds of what changed
+    scene.update();  // world matrices and bounds of what changed
     EXPECT_NEAR(scene.bound().center.z, -5.0f, 1e-5f);
 }
 
@@ -29,18 +29,18 @@ TEST(HeaderExamples, gazeAcuity) {
     const float radius = 1.0f, dt = 0.04f;
     TrackedPoint last = trackPoint(eye, world, localCenter, radius);
     // graph/lod/GazeAcuity.hpp
-    GazeAcuityParams p;                                        // a = 5°, c1 = 6°, c2 = 30°/s
+    GazeAcuityParams p;  // a = 5°, c1 = 6°, c2 = 30°/s
     float theta = angleDegrees(gaze, center - eye);
-    float speed = angularSpeed(last, worldNow, eyeNow, dt);     // degrees per second
-    float k = gazeAcuity(theta, speed, p);                      // in [0, 1]
-    last = trackPoint(eyeNow, worldNow, localCenter, radius);   // for the next frame
-    EXPECT_FLOAT_EQ(k, 1.0f);  // looked at, standing still
+    float speed = angularSpeed(last, worldNow, eyeNow, dt);    // degrees per second
+    float k = gazeAcuity(theta, speed, p);                     // in [0, 1]
+    last = trackPoint(eyeNow, worldNow, localCenter, radius);  // for the next frame
+    EXPECT_FLOAT_EQ(k, 1.0f);                                  // looked at, standing still
     EXPECT_TRUE(last.valid);
 }
 
 TEST(HeaderExamples, recursiveLeastSquares) {
     // graph/budget/RecursiveLeastSquares.hpp, fed y = 0.002 x + 3
-    RecursiveLeastSquares rls(2, 0.98);          // θ = (A, B), λ = 0.98
+    RecursiveLeastSquares rls(2, 0.98);  // θ = (A, B), λ = 0.98
     for (double pixels : {1000.0, 5000.0, 20000.0, 80000.0, 3000.0}) {
         const double measuredMs = 0.002 * pixels + 3.0;
         const double x[] = {pixels, 1.0};

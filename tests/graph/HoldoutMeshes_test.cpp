@@ -1,6 +1,6 @@
-#include "graph/silhouette/HoldoutMeshes.hpp"
-#include "graph/lod/Lod.hpp"
 #include "graph/core/SelectPass.hpp"
+#include "graph/lod/Lod.hpp"
+#include "graph/silhouette/HoldoutMeshes.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -30,7 +30,7 @@ struct OneHoldout {
 
 View lookingAtX10From(float z) { return View::lookAt({10, 0, z}, {10, 0, 0}, {0, 1, 0}, 60.0f, {64, 64}); }
 
-} // namespace
+}  // namespace
 
 TEST(HoldoutMeshes, selectPutsTheCgItemInTheHoldoutBinWithItsDepth) {
     OneHoldout f;

@@ -58,7 +58,7 @@ glm::u8vec4 pixel(const PointImage& img, int x, int y) {
     return {p[0], p[1], p[2], p[3]};
 }
 
-} // namespace
+}  // namespace
 
 TEST(LdiRenderer, mergeCompositesAllLdisFarthestFirst) {
     // Over, back to front, premultiplied: R = .5*.5*.5, G = .5*.5, B = .5, A = 1 - .5^3.

@@ -12,7 +12,7 @@ glm::vec3 onPixelRay(const LdiCamera& c, int x, int y, float depthAlongRay) {
     return c.eye + c.rayDirection(x, y) * depthAlongRay;
 }
 
-} // namespace
+}  // namespace
 
 TEST(Ldi, lxIsDepthTimesScreenOffsetOverScreenDistance) {
     // Lx = Dx * Lp / D0: 10 units deep, 0.5 px off the centre, screen 100 px away.
@@ -54,7 +54,8 @@ TEST(Ldi, eachPointGoesToTheLdiWithSmallestLx) {
     EXPECT_EQ(set.ldis[0].size() + set.ldis[1].size(), cloud.size());
     const LdiPlacement chosen = set.pointLdi[2] == 0 ? in0 : in1;
     const Ldi& ldi = set.ldis[set.pointLdi[2]];
-    EXPECT_NE(std::find(ldi.points.begin() + ldi.pixelStart[chosen.pixel], ldi.points.begin() + ldi.pixelStart[chosen.pixel + 1], 2u),
+    EXPECT_NE(std::find(ldi.points.begin() + ldi.pixelStart[chosen.pixel],
+                        ldi.points.begin() + ldi.pixelStart[chosen.pixel + 1], 2u),
               ldi.points.begin() + ldi.pixelStart[chosen.pixel + 1]);
 }
 
@@ -67,9 +68,11 @@ TEST(Ldi, pixelListsAreSortedByDepthAlongTheRay) {
     const Ldi& ldi = set.ldis[0];
     const std::uint32_t px = 16u * 32u + 16u;
     ASSERT_EQ(ldi.pixelStart[px + 1] - ldi.pixelStart[px], 4u);
-    const std::vector<std::uint32_t> ids(ldi.points.begin() + ldi.pixelStart[px], ldi.points.begin() + ldi.pixelStart[px + 1]);
+    const std::vector<std::uint32_t> ids(ldi.points.begin() + ldi.pixelStart[px],
+                                         ldi.points.begin() + ldi.pixelStart[px + 1]);
     EXPECT_EQ(ids, (std::vector<std::uint32_t>{1, 3, 2, 0}));
-    for (std::uint32_t k = ldi.pixelStart[px] + 1; k < ldi.pixelStart[px + 1]; ++k) EXPECT_LT(ldi.rayDepth[k - 1], ldi.rayDepth[k]);
+    for (std::uint32_t k = ldi.pixelStart[px] + 1; k < ldi.pixelStart[px + 1]; ++k)
+        EXPECT_LT(ldi.rayDepth[k - 1], ldi.rayDepth[k]);
 }
 
 TEST(Ldi, camerasAroundFrameTheWholeSphere) {

@@ -32,7 +32,7 @@ std::string errorOf(std::span<const unsigned char> bytes) {
     return "no error";
 }
 
-} // namespace
+}  // namespace
 
 TEST(LodLevels, sphereLevelsReachRequestedCountsAndKeepAttributes) {
     const Geometry sphere = makeUvSphere(1.0f, 64, 32);
@@ -122,9 +122,7 @@ TEST(LodFile, readerRejectsDamagedFilesWithPlace) {
     EXPECT_NE(errorOf(bad).find("file ends inside positions"), std::string::npos);
 }
 
-TEST(LodFile, missingFileIsModelError) {
-    EXPECT_THROW(readLodFile("/nonexistent/x.lod"), ModelError);
-}
+TEST(LodFile, missingFileIsModelError) { EXPECT_THROW(readLodFile("/nonexistent/x.lod"), ModelError); }
 
 TEST(LodFile, mutatedBytesParseOrThrowModelError) {
     const std::vector<unsigned char> good = fileBytes(simplifyLevels(makeUvSphere(1.0f, 8, 6), kRatios));
@@ -138,8 +136,7 @@ TEST(LodFile, mutatedBytesParseOrThrowModelError) {
             const std::vector<LodLevel> levels = parseLodFile(bytes, "x.lod");
             for (const LodLevel& l : levels)
                 for (std::uint32_t i : l.geometry.indices) ASSERT_LT(i, l.geometry.positions.size());
-        } catch (const ModelError&) {
-        }
+        } catch (const ModelError&) {}
     }
 }
 
@@ -184,7 +181,7 @@ Geometry sphereWithEveryAttribute(int slices, int stacks) {
     return g;
 }
 
-} // namespace
+}  // namespace
 
 TEST(LodLevels, simplifiedLevelsKeepEachVertexsTexcoord1AndTangent) {
     const Geometry sphere = sphereWithEveryAttribute(32, 16);
@@ -248,7 +245,8 @@ TEST(LodLevels, levelsOfASkinnedMeshKeepJointsWeightsAndTheSkin) {
     }
     Scene scene;
     const std::uint32_t sourceId = scene.addGeometry(sphere);
-    const NodeId joints[2] = {scene.addTransform(scene.root(), glm::mat4(1.0f)), scene.addTransform(scene.root(), glm::mat4(1.0f))};
+    const NodeId joints[2] = {scene.addTransform(scene.root(), glm::mat4(1.0f)),
+                              scene.addTransform(scene.root(), glm::mat4(1.0f))};
     const glm::mat4 binds[2] = {glm::mat4(1.0f), glm::mat4(1.0f)};
     const std::uint32_t skin = scene.addSkin(scene.root(), joints, binds);
     const MeshPart part{sourceId, scene.addMaterial({}), skin};
@@ -262,7 +260,8 @@ TEST(LodLevels, levelsOfASkinnedMeshKeepJointsWeightsAndTheSkin) {
         const Geometry& g = scene.geometry(scene.meshPart(level).geometry);
         ASSERT_TRUE(g.hasSkinInfluences());
         for (std::size_t v = 0; v < g.positions.size(); ++v) {
-            const auto from = std::find(source.positions.begin(), source.positions.end(), g.positions[v]) - source.positions.begin();
+            const auto from =
+                std::find(source.positions.begin(), source.positions.end(), g.positions[v]) - source.positions.begin();
             ASSERT_LT(static_cast<std::size_t>(from), source.positions.size());
             EXPECT_EQ(g.joints[v], source.joints[static_cast<std::size_t>(from)]);
             EXPECT_EQ(g.weights[v], source.weights[static_cast<std::size_t>(from)]);

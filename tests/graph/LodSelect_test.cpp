@@ -1,7 +1,7 @@
 // The select pass with LOD nodes: the level is chosen while culling, and
 // only the chosen level's subtree is visited.
-#include "graph/lod/Lod.hpp"
 #include "graph/core/SelectPass.hpp"
+#include "graph/lod/Lod.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -42,7 +42,7 @@ const View camera = View::lookAt({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60.0f, {1280,
 
 std::uint8_t levelFromK1(float k1) { return k1 >= 0.5f ? 0 : (k1 >= 0.1f ? 1 : 2); }
 
-} // namespace
+}  // namespace
 
 TEST(LodSelect, levelsFallOffAwayFromGazeAsK1Says) {
     LodNode node;
@@ -97,9 +97,8 @@ TEST(LodSelect, fastMovingObjectDropsToCoarseLevel) {
     row.scene.setLocal(transform, glm::translate(glm::mat4(1.0f), row.positions[5] + glm::vec3(2, 0, 0)));
     row.scene.update();
     select(row.world, camera, {.gaze = gaze, .timeSeconds = 1.0 / 60.0}, list);
-    const auto moved = std::find_if(list.items.begin(), list.items.end(), [&](const DrawItem& i) {
-        return row.scene.parent(i.node) == row.lodNodes[5];
-    });
+    const auto moved = std::find_if(list.items.begin(), list.items.end(),
+                                    [&](const DrawItem& i) { return row.scene.parent(i.node) == row.lodNodes[5]; });
     ASSERT_NE(moved, list.items.end());
     EXPECT_EQ(moved->level, 2);
 }
@@ -150,7 +149,7 @@ Geometry sphereAt(glm::vec3 center) {
     return g;
 }
 
-} // namespace
+}  // namespace
 
 TEST(LodSelect, aLevelOutsideTheViewIsCulledThoughItsLodNodeIsNot) {
     World world;

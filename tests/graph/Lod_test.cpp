@@ -14,7 +14,7 @@ LodNode distanceNode(float hysteresis) {
     return n;
 }
 
-} // namespace
+}  // namespace
 
 TEST(Lod, distanceRangesPickLevelsLikeOsgLod) {
     const LodNode n = distanceNode(0.0f);
@@ -50,7 +50,10 @@ TEST(Lod, hysteresisKeepsLevelWithinBand) {
     LodTable table;
     const std::uint32_t i = table.add(distanceNode(0.1f));  // band ±5 around 50
     double t = 0.0;
-    const auto at = [&](float d) { t += 1.0 / 60.0; return table.choose(i, {.distance = d}, t).level; };
+    const auto at = [&](float d) {
+        t += 1.0 / 60.0;
+        return table.choose(i, {.distance = d}, t).level;
+    };
     EXPECT_EQ(at(40.0f), 0);
     // Hovering across 50 within the band never flips.
     for (int k = 0; k < 10; ++k) {

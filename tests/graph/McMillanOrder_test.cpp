@@ -119,7 +119,8 @@ void expectBackToFront(glm::vec2 epipole, float eyeDepth, EpipoleSide column, Ep
     // Within each pixel: the walk equals sorting by distance from the eye.
     const Ldi& ldi = set.ldis[0];
     for (std::size_t px = 0; px + 1 < ldi.pixelStart.size(); ++px) {
-        std::vector<std::uint32_t> drawn(ldi.points.begin() + ldi.pixelStart[px], ldi.points.begin() + ldi.pixelStart[px + 1]);
+        std::vector<std::uint32_t> drawn(ldi.points.begin() + ldi.pixelStart[px],
+                                         ldi.points.begin() + ldi.pixelStart[px + 1]);
         std::sort(drawn.begin(), drawn.end(), [&](auto a, auto b) { return rank[a] < rank[b]; });
         std::vector<std::uint32_t> sorted = drawn;
         std::stable_sort(sorted.begin(), sorted.end(), [&](auto a, auto b) {
@@ -141,8 +142,8 @@ void expectBackToFront(glm::vec2 epipole, float eyeDepth, EpipoleSide column, Ep
 
 // Epipole positions on the pixel-centre lattice: before, on and after the screen.
 constexpr float kBefore = -6.5f, kInside = 7.5f, kAfter = 22.5f;
-constexpr float kInFront = 30.0f;   // beyond the points, looking back at them
-constexpr float kAmong = 9.0f;      // in front, among the points
+constexpr float kInFront = 30.0f;  // beyond the points, looking back at them
+constexpr float kAmong = 9.0f;     // in front, among the points
 constexpr float kBehind = -8.0f;
 
 struct Case {
@@ -150,16 +151,20 @@ struct Case {
     EpipoleSide column, row;
 };
 constexpr Case kCases[9] = {
-    {kBefore, kBefore, EpipoleSide::Before, EpipoleSide::Before}, {kInside, kBefore, EpipoleSide::Inside, EpipoleSide::Before},
-    {kAfter, kBefore, EpipoleSide::After, EpipoleSide::Before},   {kBefore, kInside, EpipoleSide::Before, EpipoleSide::Inside},
-    {kInside, kInside, EpipoleSide::Inside, EpipoleSide::Inside}, {kAfter, kInside, EpipoleSide::After, EpipoleSide::Inside},
-    {kBefore, kAfter, EpipoleSide::Before, EpipoleSide::After},   {kInside, kAfter, EpipoleSide::Inside, EpipoleSide::After},
+    {kBefore, kBefore, EpipoleSide::Before, EpipoleSide::Before},
+    {kInside, kBefore, EpipoleSide::Inside, EpipoleSide::Before},
+    {kAfter, kBefore, EpipoleSide::After, EpipoleSide::Before},
+    {kBefore, kInside, EpipoleSide::Before, EpipoleSide::Inside},
+    {kInside, kInside, EpipoleSide::Inside, EpipoleSide::Inside},
+    {kAfter, kInside, EpipoleSide::After, EpipoleSide::Inside},
+    {kBefore, kAfter, EpipoleSide::Before, EpipoleSide::After},
+    {kInside, kAfter, EpipoleSide::Inside, EpipoleSide::After},
     {kAfter, kAfter, EpipoleSide::After, EpipoleSide::After},
 };
 
 class McMillanCase : public testing::TestWithParam<std::tuple<int, float>> {};
 
-} // namespace
+}  // namespace
 
 TEST_P(McMillanCase, drawsOccludingPairsBackToFrontAndEachPixelSorted) {
     const auto [index, depth] = GetParam();

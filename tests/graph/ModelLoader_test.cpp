@@ -27,10 +27,12 @@ std::string triangleGltf(const std::string& bufferUri, const std::string& extra 
     return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": )" + nodes + R"(,
       "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
       "accessors": [
-        {"bufferView": 0, "componentType": 5126, "count": )" + std::to_string(positionCount) + R"(, "type": "VEC3"},
+        {"bufferView": 0, "componentType": 5126, "count": )" +
+           std::to_string(positionCount) + R"(, "type": "VEC3"},
         {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
       "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
-      "buffers": [{"byteLength": 44, "uri": ")" + bufferUri + "\"}]" + extra + "}";
+      "buffers": [{"byteLength": 44, "uri": ")" +
+           bufferUri + "\"}]" + extra + "}";
 }
 
 std::string dataUri(const std::vector<unsigned char>& bytes) {
@@ -51,7 +53,7 @@ void expectRejected(const std::filesystem::path& file, const std::string& where,
     EXPECT_EQ(scene.nodeCount(), before) << "a rejected model must leave the scene untouched";
 }
 
-} // namespace
+}  // namespace
 
 TEST(GltfLoader, loadsATriangleFromAnEmbeddedBuffer) {
     TempDir dir;
@@ -111,8 +113,10 @@ TEST(GltfLoader, rejectsACycleInTheNodeGraph) {
 TEST(GltfLoader, rejectsUnsupportedRequiredExtensionsByName) {
     TempDir dir;
     const auto file = dir.write(
-        "draco.gltf", triangleGltf(dataUri(triangleBytes()),
-                                   R"(, "extensionsUsed": ["KHR_draco_mesh_compression"], "extensionsRequired": ["KHR_draco_mesh_compression"])"));
+        "draco.gltf",
+        triangleGltf(
+            dataUri(triangleBytes()),
+            R"(, "extensionsUsed": ["KHR_draco_mesh_compression"], "extensionsRequired": ["KHR_draco_mesh_compression"])"));
     expectRejected(file, "/extensionsRequired/0", "KHR_draco_mesh_compression");
 }
 
@@ -152,9 +156,9 @@ TEST(ObjLoader, ignoresAMaterialLibraryOutsideTheFolderWithAWarning) {
     TempDir dir;
     dir.write("secret.mtl", "newmtl red\nKd 1 0 0\n");
     Scene scene;
-    const LoadedModel m = loadModel(
-        dir.write("sub/tri.obj", "mtllib ../secret.mtl\nusemtl red\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), scene,
-        scene.root());
+    const LoadedModel m =
+        loadModel(dir.write("sub/tri.obj", "mtllib ../secret.mtl\nusemtl red\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
+                  scene, scene.root());
     ASSERT_FALSE(m.warnings.empty());
     EXPECT_NE(m.warnings[0].find("outside the model's folder"), std::string::npos);
     EXPECT_EQ(scene.geometry(0).triangleCount(), 1u);

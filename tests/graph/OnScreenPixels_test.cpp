@@ -16,7 +16,7 @@ const View kView = View::lookAt({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60.0f, {1280, 
 const float kTop = 10.0f * std::tan(glm::radians(30.0f));
 const float kRight = kTop * 16.0f / 9.0f;
 
-} // namespace
+}  // namespace
 
 TEST(OnScreenPixels, aDiscInsideTheViewportCountsWhole) {
     EXPECT_FLOAT_EQ(onScreenShare({{0.0f, 0.0f, -10.0f}, 1.0f}, kView), 1.0f);

@@ -13,8 +13,8 @@
 
 #include <fstream>
 #include <functional>
-#include <typeinfo>
 #include <iterator>
+#include <typeinfo>
 #include <vector>
 
 using namespace arcomp;
@@ -28,7 +28,7 @@ std::vector<unsigned char> bytesOf(const fs::path& file) {
     return {std::istreambuf_iterator<char>(in), {}};
 }
 
-} // namespace
+}  // namespace
 
 TEST(ParserRegressions, gltfInputsLoadOrAreRefusedWithModelError) {
     eachLoadsOrIsRefused<ModelError>("gltf", [](const fs::path& f) { parseGltf(f); });

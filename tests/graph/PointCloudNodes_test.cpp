@@ -1,5 +1,5 @@
-#include "graph/points/PointCloudNodes.hpp"
 #include "graph/core/SelectPass.hpp"
+#include "graph/points/PointCloudNodes.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -17,7 +17,7 @@ PointCloud twoPoints() {
     return cloud;
 }
 
-} // namespace
+}  // namespace
 
 TEST(PointCloudNodes, addsAPointCloudNodeBoundingItsPoints) {
     Scene scene;
@@ -40,9 +40,10 @@ TEST(PointCloudNodes, selectBinsTheCloudsInViewWithTheirDistance) {
     PointCloudNodes& clouds = world.pointClouds;
     const PointCloud cloud = twoPoints();
     const auto cams = ldiCamerasAround(Sphere{{0, 0, 0}, 1.0f}, 1, 0.1f);
-    const NodeId ahead = clouds.add(scene, scene.addTransform(scene.root(), glm::translate(glm::mat4(1.0f), {0, 0, -10})),
-                                    buildLdis(cloud, cams));
-    clouds.add(scene, scene.addTransform(scene.root(), glm::translate(glm::mat4(1.0f), {0, 0, 10})), buildLdis(cloud, cams));
+    const NodeId ahead = clouds.add(
+        scene, scene.addTransform(scene.root(), glm::translate(glm::mat4(1.0f), {0, 0, -10})), buildLdis(cloud, cams));
+    clouds.add(scene, scene.addTransform(scene.root(), glm::translate(glm::mat4(1.0f), {0, 0, 10})),
+               buildLdis(cloud, cams));
     scene.update();
     DrawList list;
     select(world, View::lookAt({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60.0f, {64, 64}), {}, list);

@@ -21,7 +21,7 @@ struct Fixture {
         return t;
     }
 };
-} // namespace
+}  // namespace
 
 TEST(Scene, worldMatrixComposesParents) {
     Fixture f;

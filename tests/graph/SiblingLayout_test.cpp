@@ -49,13 +49,11 @@ struct RandomScene {
             switch (depth > 0 ? pick(0, 4) : 0) {
             case 0: addMesh(parent); break;
             case 1: scene.addGroup(parent); break;  // empty: an empty bound
-            case 2:
-                {
-                    const NodeId t = scene.addTransform(parent, randomLocal());
-                    transforms.push_back(t);
-                    grow(t, depth - 1, pick(1, 6));
-                }
-                break;
+            case 2: {
+                const NodeId t = scene.addTransform(parent, randomLocal());
+                transforms.push_back(t);
+                grow(t, depth - 1, pick(1, 6));
+            } break;
             case 3: grow(scene.addGroup(parent), depth - 1, pick(1, 40)); break;
             default: addLod(parent, depth); break;
             }
@@ -78,8 +76,10 @@ struct RandomScene {
         const NodeId node = scene.addNode(t, NodeKind::Lod, world.lods.add(lod));
         const int levels = pick(1, 4);  // fewer than three: the last level stands in
         for (int level = 0; level < levels; ++level) {
-            if (level == 1 && depth > 1) grow(scene.addGroup(node), depth - 2, pick(1, 5));
-            else addMesh(node);
+            if (level == 1 && depth > 1)
+                grow(scene.addGroup(node), depth - 2, pick(1, 5));
+            else
+                addMesh(node);
         }
     }
 };
@@ -112,15 +112,18 @@ void expectLayoutMatchesScene(const Scene& scene) {
         EXPECT_EQ(a.center, b.center) << "node " << n;
         EXPECT_EQ(a.radius, b.radius) << "node " << n;
         // The copy that runs of siblings are culled from.
-        EXPECT_EQ(glm::vec3(layout.centerX[slot], layout.centerY[slot], layout.centerZ[slot]), b.center) << "node " << n;
+        EXPECT_EQ(glm::vec3(layout.centerX[slot], layout.centerY[slot], layout.centerZ[slot]), b.center)
+            << "node " << n;
         EXPECT_EQ(layout.radius[slot], b.radius) << "node " << n;
         if (holder != n) continue;
         ++holders;
         EXPECT_EQ(layout.slots[slot].kind, scene.kind(n));
         EXPECT_EQ(layout.slots[slot].payload, scene.payload(n));
         std::vector<NodeId> children, expected;
-        for (std::uint32_t c = layout.slots[slot].firstChild; c < layout.childEnd(slot); ++c) children.push_back(layout.slots[c].node);
-        for (const NodeId c : scene.children(n)) expected.push_back(scene.kind(n) == NodeKind::Grouping ? c : slotHolder(scene, c));
+        for (std::uint32_t c = layout.slots[slot].firstChild; c < layout.childEnd(slot); ++c)
+            children.push_back(layout.slots[c].node);
+        for (const NodeId c : scene.children(n))
+            expected.push_back(scene.kind(n) == NodeKind::Grouping ? c : slotHolder(scene, c));
         EXPECT_EQ(children, expected) << "node " << n;
     }
     EXPECT_EQ(layout.size(), holders);
@@ -195,7 +198,7 @@ View randomView(std::mt19937& random) {
     return View::lookAt(eye, target, {0, 1, 0}, 60.0f, {1280, 720}, 0.1f, 200.0f);
 }
 
-} // namespace
+}  // namespace
 
 TEST(SiblingLayout, matchesTheSceneAfterUpdate) {
     RandomScene s(1);

@@ -14,16 +14,16 @@ namespace {
 SilhouetteMesh smallMesh() {
     const Geometry sphere = makeUvSphere(1.0f, 12, 6);
     const glm::vec3 tetra[] = {{3, 0, 0}, {4, 0, 0}, {3, 1, 0}, {3, 0, 1}};
-    return bakeSilhouetteMesh(sphere.positions, sphere.indices,
-                              {ViewRegion::fromBox({{-0.5f, -0.5f, 3}, {0.5f, 0.5f, 4}}),
-                               ViewRegion::fromVertices(tetra)});
+    return bakeSilhouetteMesh(
+        sphere.positions, sphere.indices,
+        {ViewRegion::fromBox({{-0.5f, -0.5f, 3}, {0.5f, 0.5f, 4}}), ViewRegion::fromVertices(tetra)});
 }
 
 void putU32(std::vector<std::byte>& b, std::size_t at, std::uint32_t v) {
     for (int i = 0; i < 4; ++i) b[at + i] = static_cast<std::byte>((v >> (8 * i)) & 0xff);
 }
 
-} // namespace
+}  // namespace
 
 TEST(SilhouetteFile, roundTripKeepsBufferRangesAndRegions) {
     const SilhouetteMesh m = smallMesh();
@@ -53,20 +53,27 @@ TEST(SilhouetteFile, badHeaderIndicesAndRangesAreRefused) {
         }
         return false;
     };
-    auto b = good; b[0] = std::byte{'X'};
-    EXPECT_TRUE(refused(b));                       // magic
-    b = good; putU32(b, 8, 2);
-    EXPECT_TRUE(refused(b));                       // version
-    b = good; putU32(b, 12, 0xffffffffu);
-    EXPECT_TRUE(refused(b));                       // vertex count beyond the file, refused before allocating
-    b = good; putU32(b, 36 + 12 * smallMesh().positions.size(), 1u << 30);
-    EXPECT_TRUE(refused(b));                       // first index out of range
-    b = good; putU32(b, 32, 0xfffffff0u);
-    EXPECT_TRUE(refused(b));                       // full range past the index list
-    b = good; b.push_back(std::byte{0});
-    EXPECT_TRUE(refused(b));                       // trailing bytes
-    b = good; putU32(b, 36, 0x7fc00000u);
-    EXPECT_TRUE(refused(b));                       // NaN position
+    auto b = good;
+    b[0] = std::byte{'X'};
+    EXPECT_TRUE(refused(b));  // magic
+    b = good;
+    putU32(b, 8, 2);
+    EXPECT_TRUE(refused(b));  // version
+    b = good;
+    putU32(b, 12, 0xffffffffu);
+    EXPECT_TRUE(refused(b));  // vertex count beyond the file, refused before allocating
+    b = good;
+    putU32(b, 36 + 12 * smallMesh().positions.size(), 1u << 30);
+    EXPECT_TRUE(refused(b));  // first index out of range
+    b = good;
+    putU32(b, 32, 0xfffffff0u);
+    EXPECT_TRUE(refused(b));  // full range past the index list
+    b = good;
+    b.push_back(std::byte{0});
+    EXPECT_TRUE(refused(b));  // trailing bytes
+    b = good;
+    putU32(b, 36, 0x7fc00000u);
+    EXPECT_TRUE(refused(b));  // NaN position
     EXPECT_FALSE(refused(good));
 }
 
@@ -82,10 +89,10 @@ TEST(SilhouetteFile, corruptedBytesGiveAMeshOrModelErrorNothingElse) {
         try {
             const SilhouetteMesh m = decodeSilhouetteMesh(b);
             for (std::uint32_t i : m.indices) ASSERT_LT(i, m.positions.size());
-            for (const SilhouetteRange& r : m.ranges) ASSERT_LE(std::uint64_t{r.firstIndex} + r.indexCount, m.indices.size());
+            for (const SilhouetteRange& r : m.ranges)
+                ASSERT_LE(std::uint64_t{r.firstIndex} + r.indexCount, m.indices.size());
             ++accepted;
-        } catch (const ModelError&) {
-        }
+        } catch (const ModelError&) {}
     }
     EXPECT_LT(accepted, 2000u);  // most corruptions land in positions or indices and some must be refused
 }

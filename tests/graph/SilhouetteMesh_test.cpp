@@ -1,15 +1,15 @@
+#include "graph/core/SelectPass.hpp"
+#include "graph/core/View.hpp"
 #include "graph/silhouette/CoverageRaster.hpp"
 #include "graph/silhouette/FlatMesh.hpp"
-#include "graph/core/SelectPass.hpp"
 #include "graph/silhouette/SilhouetteMesh.hpp"
 #include "graph/silhouette/SilhouetteNodes.hpp"
-#include "graph/core/View.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <cmath>
+#include <filesystem>
 #include <random>
 
 using namespace arcomp;
@@ -58,11 +58,12 @@ Geometry closedSphere(int slices, int stacks) {
 Geometry bumpySphere() {
     Geometry g = closedSphere(96, 48);
     for (glm::vec3& p : g.positions)
-        p *= 1.0f + 0.15f * std::sin(7.0f * std::atan2(p.z, p.x)) * std::sin(6.0f * std::acos(std::clamp(p.y, -1.0f, 1.0f)));
+        p *= 1.0f +
+             0.15f * std::sin(7.0f * std::atan2(p.z, p.x)) * std::sin(6.0f * std::acos(std::clamp(p.y, -1.0f, 1.0f)));
     return g;
 }
 
-} // namespace
+}  // namespace
 
 TEST(SilhouetteMesh, regionsIndexOneSharedVertexBuffer) {
     const Geometry sphere = makeUvSphere(1.0f, 32, 16);

@@ -25,7 +25,8 @@ constexpr int kUnsignedByte = 5121, kUnsignedShort = 5123;
 // "knee" (nodes 1 and 2); accessor 2 is JOINTS_0, 3 WEIGHTS_0.
 GltfFile skinnedTriangle(const std::vector<std::uint8_t>& joints, const std::vector<float>& weights) {
     GltfFile f;
-    f.nodes = R"([{"name": "body", "mesh": 0, "skin": 0, "children": [1]}, {"name": "hip", "children": [2]}, {"name": "knee"}])";
+    f.nodes =
+        R"([{"name": "body", "mesh": 0, "skin": 0, "children": [1]}, {"name": "hip", "children": [2]}, {"name": "knee"}])";
     f.skins = R"([{"name": "legs", "joints": [1, 2]}])";
     const int j = f.addBytes(joints.data(), joints.size() / 4, "VEC4", kUnsignedByte);
     const int w = f.add(weights, "VEC4");
@@ -61,11 +62,13 @@ void expectMatrix(const glm::mat4& got, const glm::mat4& want) {
         for (int r = 0; r < 4; ++r) EXPECT_NEAR(got[c][r], want[c][r], 1e-5f) << "column " << c << " row " << r;
 }
 
-} // namespace
+}  // namespace
 
 TEST(SkinInfluences, jointsAndWeightsAreReadAndAJointWithoutWeightBecomesZero) {
     Scene scene;
-    const LoadedModel m = load(skinnedTriangle({0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0}, {0.25f, 0.75f, 0, 0, 1, 0, 0, 0, 0.5f, 0.5f, 0, 0}), scene);
+    const LoadedModel m =
+        load(skinnedTriangle({0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0}, {0.25f, 0.75f, 0, 0, 1, 0, 0, 0, 0.5f, 0.5f, 0, 0}),
+             scene);
     EXPECT_TRUE(m.warnings.empty()) << m.warnings.front();
     const NodeId mesh = firstMesh(scene);
     ASSERT_NE(mesh, kNoNode);
@@ -98,16 +101,19 @@ TEST(SkinInfluences, normalizedShortWeightsReadAsFractions) {
 
 TEST(SkinInfluences, weightsAreRescaledToSumToOneAndOnlyAFarSumIsReported) {
     Scene near;
-    const LoadedModel quiet = load(skinnedTriangle({0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0}, {0.5f, 0.4999f, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}), near);
+    const LoadedModel quiet = load(
+        skinnedTriangle({0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0}, {0.5f, 0.4999f, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}), near);
     EXPECT_TRUE(quiet.warnings.empty()) << quiet.warnings.front();
     const Geometry& g = near.geometry(near.meshPart(firstMesh(near)).geometry);
     EXPECT_NEAR(g.weights[0].x + g.weights[0].y, 1.0f, 1e-6f);
 
     Scene far;
-    const LoadedModel loud = load(skinnedTriangle({0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0}, {0.4f, 0.4f, 0, 0, 1, 0, 0, 0, 0.3f, 0.3f, 0, 0}), far);
+    const LoadedModel loud = load(
+        skinnedTriangle({0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0}, {0.4f, 0.4f, 0, 0, 1, 0, 0, 0, 0.3f, 0.3f, 0, 0}), far);
     ASSERT_EQ(loud.warnings.size(), 1u);
-    EXPECT_EQ(loud.warnings[0], "/meshes/0/primitives/0/attributes/WEIGHTS_0: the weights of 2 vertices (the first vertex 0) "
-                                "do not sum to 1; rescaled so they do");
+    EXPECT_EQ(loud.warnings[0],
+              "/meshes/0/primitives/0/attributes/WEIGHTS_0: the weights of 2 vertices (the first vertex 0) "
+              "do not sum to 1; rescaled so they do");
     const Geometry& h = far.geometry(far.meshPart(firstMesh(far)).geometry);
     EXPECT_NEAR(h.weights[0].x, 0.5f, 1e-6f);
     EXPECT_NEAR(h.weights[2].y, 0.5f, 1e-6f);
@@ -116,17 +122,19 @@ TEST(SkinInfluences, weightsAreRescaledToSumToOneAndOnlyAFarSumIsReported) {
 TEST(SkinInfluences, badInfluencesAreRejectedWithTheirPointer) {
     const std::vector<std::uint8_t> joints{0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0};
     const std::vector<float> weights{0.5f, 0.5f, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0};
-    expectRejected(skinnedTriangle({0, 2, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0}, weights), "/meshes/0/primitives/0/attributes/JOINTS_0",
+    expectRejected(skinnedTriangle({0, 2, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0}, weights),
+                   "/meshes/0/primitives/0/attributes/JOINTS_0",
                    "vertex 0 uses joint 2, but skin 0 'legs' of /nodes/0 has 2 joints");
     expectRejected(skinnedTriangle(joints, {0.5f, 0.5f, 0, 0, 1, -0.5f, 0, 0, 1, 0, 0, 0}),
                    "/meshes/0/primitives/0/attributes/WEIGHTS_0", "vertex 1 has a negative weight");
-    expectRejected(skinnedTriangle(joints, {0.5f, 0.5f, 0, 0, 1, 0, 0, 0}), "/meshes/0/primitives/0/attributes/WEIGHTS_0",
-                   "has 2 elements, POSITION has 3");
+    expectRejected(skinnedTriangle(joints, {0.5f, 0.5f, 0, 0, 1, 0, 0, 0}),
+                   "/meshes/0/primitives/0/attributes/WEIGHTS_0", "has 2 elements, POSITION has 3");
 
     GltfFile floatJoints = skinnedTriangle(joints, weights);
     const int j = floatJoints.add({0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0}, "VEC4");
     floatJoints.attributes = R"(, "JOINTS_0": )" + std::to_string(j) + R"(, "WEIGHTS_0": 3)";
-    expectRejected(floatJoints, "/accessors/" + std::to_string(j) + "/componentType", "not allowed for /meshes/0/primitives/0/attributes/JOINTS_0");
+    expectRejected(floatJoints, "/accessors/" + std::to_string(j) + "/componentType",
+                   "not allowed for /meshes/0/primitives/0/attributes/JOINTS_0");
 
     GltfFile rawBytes = skinnedTriangle(joints, weights);
     const std::uint8_t bytes[12] = {255, 0, 0, 0, 255, 0, 0, 0, 255, 0, 0, 0};
@@ -141,12 +149,15 @@ TEST(SkinInfluences, badInfluencesAreRejectedWithTheirPointer) {
 
 TEST(SkinInfluences, aVertexWithoutWeightLeavesThePrimitiveUnskinned) {
     Scene scene;
-    const LoadedModel m = load(skinnedTriangle({0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0}, {0.5f, 0.5f, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0}), scene);
+    const LoadedModel m =
+        load(skinnedTriangle({0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0}, {0.5f, 0.5f, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0}), scene);
     ASSERT_EQ(m.warnings.size(), 2u);
-    EXPECT_EQ(m.warnings[0], "/meshes/0/primitives/0/attributes/WEIGHTS_0: 1 vertices (the first vertex 1) have no weight on "
-                             "any joint; the primitive is not skinned");
-    EXPECT_EQ(m.warnings[1], "/meshes/0/primitives/0: skinned by skin 0 'legs' (/nodes/0) but has no skin influences to "
-                             "pose it; drawn in its bind pose");
+    EXPECT_EQ(m.warnings[0],
+              "/meshes/0/primitives/0/attributes/WEIGHTS_0: 1 vertices (the first vertex 1) have no weight on "
+              "any joint; the primitive is not skinned");
+    EXPECT_EQ(m.warnings[1],
+              "/meshes/0/primitives/0: skinned by skin 0 'legs' (/nodes/0) but has no skin influences to "
+              "pose it; drawn in its bind pose");
     EXPECT_EQ(scene.meshPart(firstMesh(scene)).skin, kNoSkin);
 }
 
@@ -165,7 +176,9 @@ TEST(SkinInfluences, aSkinWithMoreJointsThanADrawTakesLeavesTheMeshInBindPose) {
     Scene scene;
     const LoadedModel m = load(f, scene);
     ASSERT_EQ(m.warnings.size(), 1u);
-    EXPECT_EQ(m.warnings[0], "/nodes/0: skin 0 'many' has 65 joints, more than the 64 arcomp skins in one draw; drawn in its bind pose");
+    EXPECT_EQ(
+        m.warnings[0],
+        "/nodes/0: skin 0 'many' has 65 joints, more than the 64 arcomp skins in one draw; drawn in its bind pose");
     EXPECT_EQ(scene.meshPart(firstMesh(scene)).skin, kNoSkin);
 }
 
@@ -180,7 +193,8 @@ struct Chain {
     Chain() {
         const NodeId body = scene.addTransform(scene.root(), glm::translate(glm::mat4(1.0f), {2, 0, 0}), "body");
         hip = scene.addTransform(scene.root(), glm::translate(glm::mat4(1.0f), {0, -1, 0}), "hip");
-        knee = scene.addTransform(hip, glm::rotate(glm::translate(glm::mat4(1.0f), {0, 1, 0}), glm::radians(90.0f), {0, 0, 1}), "knee");
+        knee = scene.addTransform(
+            hip, glm::rotate(glm::translate(glm::mat4(1.0f), {0, 1, 0}), glm::radians(90.0f), {0, 0, 1}), "knee");
         Geometry g;
         g.positions = {{1, 1, 0}, {0, 0, 0}, {0, 1, 0}};
         g.indices = {0, 1, 2};
@@ -228,7 +242,8 @@ TEST(SkinJoints, aPosedVertexIsTheWeightedSumOfItsJointsAndIgnoresTheMeshNodesPl
     EXPECT_NEAR(world.y, 1.0f, 1e-5f);
     c.scene.setLocal(c.scene.parent(c.mesh), glm::translate(glm::mat4(1.0f), {7, 3, 0}));
     c.scene.update();
-    const glm::vec3 moved = glm::vec3(c.scene.world(c.mesh) * glm::vec4(skinPositions(g, c.scene.jointMatrices(c.skin))[0], 1.0f));
+    const glm::vec3 moved =
+        glm::vec3(c.scene.world(c.mesh) * glm::vec4(skinPositions(g, c.scene.jointMatrices(c.skin))[0], 1.0f));
     EXPECT_NEAR(moved.x, 0.0f, 1e-5f);
     EXPECT_NEAR(moved.y, 1.0f, 1e-5f);
 }

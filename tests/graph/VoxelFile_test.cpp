@@ -34,7 +34,7 @@ void putU64(std::vector<std::uint8_t>& b, std::size_t at, std::uint64_t v) {
     for (int i = 0; i < 8; ++i) b[at + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(v >> (8 * i));
 }
 
-} // namespace
+}  // namespace
 
 TEST(VoxelFile, roundTripsEveryField) {
     const VoxelGrid g = sample();
@@ -63,20 +63,52 @@ TEST(VoxelFile, rejectsEveryBrokenField) {
     const std::vector<std::uint8_t> good = encodeVoxels(sample());
     expectRejected({}, "no bytes");
     expectRejected(std::vector<std::uint8_t>(good.begin(), good.begin() + 39), "a short header");
-    auto b = good; b[0] = 'X'; expectRejected(b, "a wrong magic");
-    b = good; b[8] = 2; expectRejected(b, "version 2");
-    b = good; std::memset(&b[12], 0, 4); expectRejected(b, "resolution 0");
-    b = good; b[12] = 0x01; b[13] = 0x10; expectRejected(b, "resolution 4097");
-    b = good; std::memset(&b[28], 0xff, 4); expectRejected(b, "a NaN voxel size");
-    b = good; std::memset(&b[28], 0, 4); expectRejected(b, "a zero voxel size");
-    b = good; b[19] = 0x7f; b[18] = 0x80; b[17] = 0; b[16] = 0; expectRejected(b, "an infinite origin");
-    b = good; putU64(b, 32, ~std::uint64_t{0}); expectRejected(b, "a count of 2^64 - 1");
-    b = good; putU64(b, 32, 5); expectRejected(b, "a count beyond the records");
-    b = good; putU64(b, 32, 3); expectRejected(b, "trailing bytes");
-    b = good; b.pop_back(); expectRejected(b, "a cut record");
-    b = good; b[40] = 4; expectRejected(b, "a coordinate outside the grid");
-    b = good; b[50] = 0; expectRejected(b, "a voxel out of order");
-    b = good; std::memcpy(&b[50], &b[40], 6); expectRejected(b, "a repeated voxel");
+    auto b = good;
+    b[0] = 'X';
+    expectRejected(b, "a wrong magic");
+    b = good;
+    b[8] = 2;
+    expectRejected(b, "version 2");
+    b = good;
+    std::memset(&b[12], 0, 4);
+    expectRejected(b, "resolution 0");
+    b = good;
+    b[12] = 0x01;
+    b[13] = 0x10;
+    expectRejected(b, "resolution 4097");
+    b = good;
+    std::memset(&b[28], 0xff, 4);
+    expectRejected(b, "a NaN voxel size");
+    b = good;
+    std::memset(&b[28], 0, 4);
+    expectRejected(b, "a zero voxel size");
+    b = good;
+    b[19] = 0x7f;
+    b[18] = 0x80;
+    b[17] = 0;
+    b[16] = 0;
+    expectRejected(b, "an infinite origin");
+    b = good;
+    putU64(b, 32, ~std::uint64_t{0});
+    expectRejected(b, "a count of 2^64 - 1");
+    b = good;
+    putU64(b, 32, 5);
+    expectRejected(b, "a count beyond the records");
+    b = good;
+    putU64(b, 32, 3);
+    expectRejected(b, "trailing bytes");
+    b = good;
+    b.pop_back();
+    expectRejected(b, "a cut record");
+    b = good;
+    b[40] = 4;
+    expectRejected(b, "a coordinate outside the grid");
+    b = good;
+    b[50] = 0;
+    expectRejected(b, "a voxel out of order");
+    b = good;
+    std::memcpy(&b[50], &b[40], 6);
+    expectRejected(b, "a repeated voxel");
 }
 
 TEST(VoxelFile, acceptsAnEmptyModel) {
@@ -106,8 +138,7 @@ TEST(VoxelFile, randomlyMutatedFilesDecodeValidOrThrowModelError) {
                     ASSERT_LT(g.linearIndex(i - 1), g.linearIndex(i));
                 }
             }
-        } catch (const ModelError&) {
-        }
+        } catch (const ModelError&) {}
     }
     EXPECT_GT(accepted, 0) << "colour-only edits must still decode";
 }

@@ -18,7 +18,7 @@ std::string describe(const ConfigError& e) {
     for (const ConfigIssue& i : e.issues) s += i.format() + "\n";
     return s;
 }
-} // namespace
+}  // namespace
 
 TEST(BudgetConfig, absentSectionLeavesTheControllerOff) {
     TempDir dir;
@@ -28,7 +28,8 @@ TEST(BudgetConfig, absentSectionLeavesTheControllerOff) {
 
 TEST(BudgetConfig, turnsTheControllerOnWithATargetAndACalibration) {
     TempDir dir;
-    dir.write("calib.yaml", "overhead_ms: 1\nlevels:\n  - {unlit: [0, 1], flat: [0, 1], gouraud: [0, 1], phong: [0, 1]}\n");
+    dir.write("calib.yaml",
+              "overhead_ms: 1\nlevels:\n  - {unlit: [0, 1], flat: [0, 1], gouraud: [0, 1], phong: [0, 1]}\n");
     const StationConfig cfg = loadStationConfig(dir.write("s.yaml", std::string(kScene) + R"(budget:
   enabled: true
   target_ms: 16.7
@@ -61,9 +62,9 @@ TEST(BudgetConfig, reportsEveryMistakeWithItsPlace) {
         FAIL() << "expected a ConfigError";
     } catch (const ConfigError& e) {
         const std::string all = describe(e);
-        EXPECT_NE(all.find("s.yaml:6:14"), std::string::npos) << all;           // target_ms out of range
+        EXPECT_NE(all.find("s.yaml:6:14"), std::string::npos) << all;  // target_ms out of range
         EXPECT_NE(all.find("budget.change: expected a list"), std::string::npos) << all;
-        EXPECT_NE(all.find("s.yaml:8:3"), std::string::npos) << all;            // unknown key
+        EXPECT_NE(all.find("s.yaml:8:3"), std::string::npos) << all;  // unknown key
         EXPECT_NE(all.find("budget.calibration: required when enabled"), std::string::npos) << all;
     }
 }

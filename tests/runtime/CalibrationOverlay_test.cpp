@@ -31,7 +31,8 @@ int alphaNear(const cv::Mat& rgba, glm::dvec2 pixel, int radius) {
     int most = 0;
     const int u = static_cast<int>(std::lround(pixel.x)), v = static_cast<int>(std::lround(pixel.y));
     for (int y = std::max(0, v - radius); y <= std::min(rgba.rows - 1, v + radius); ++y)
-        for (int x = std::max(0, u - radius); x <= std::min(rgba.cols - 1, u + radius); ++x) most = std::max<int>(most, rgba.at<cv::Vec4b>(y, x)[3]);
+        for (int x = std::max(0, u - radius); x <= std::min(rgba.cols - 1, u + radius); ++x)
+            most = std::max<int>(most, rgba.at<cv::Vec4b>(y, x)[3]);
     return most;
 }
 
@@ -41,11 +42,12 @@ void writeOnFailure(const cv::Mat& rgba, const std::string& name) {
     Image image{rgba.cols, rgba.rows, {}};
     image.rgba.reserve(rgba.total() * 4);
     for (auto it = rgba.begin<cv::Vec4b>(); it != rgba.end<cv::Vec4b>(); ++it)
-        for (int c = 0; c < 4; ++c) image.rgba.push_back(static_cast<std::uint8_t>(c == 3 ? 255 : (*it)[c] + 128 * (255 - (*it)[3]) / 255));
+        for (int c = 0; c < 4; ++c)
+            image.rgba.push_back(static_cast<std::uint8_t>(c == 3 ? 255 : (*it)[c] + 128 * (255 - (*it)[3]) / 255));
     writePng(std::string(ARCOMP_TEST_OUTPUT) + "/calibration-overlay-" + name + ".png", image);
 }
 
-} // namespace
+}  // namespace
 
 TEST(CalibrationOverlay, gridLinesCrossWhereTheCameraSeesWholeMetreFloorPoints) {
     const CalibratedCamera camera = cameraTilted(18.0);
@@ -57,14 +59,16 @@ TEST(CalibrationOverlay, gridLinesCrossWhereTheCameraSeesWholeMetreFloorPoints) 
     // (0, 0, 4.5) is 4.5 m in front of the point below the lens, low in the
     // picture, and on one line only (x = 0): that line runs on to z = 10,
     // behind the lens, and only that stretch may be left out, not the whole line.
-    for (const glm::dvec3 floor : {glm::dvec3(0, 0, 0), glm::dvec3(2, 0, -3), glm::dvec3(-3, 0, 4), glm::dvec3(0, 0, 4.5)}) {
+    for (const glm::dvec3 floor :
+         {glm::dvec3(0, 0, 0), glm::dvec3(2, 0, -3), glm::dvec3(-3, 0, 4), glm::dvec3(0, 0, 4.5)}) {
         const glm::dvec2 pixel = camera.project(floor);
         ASSERT_TRUE(pixel.x >= 0 && pixel.x < 640 && pixel.y >= 0 && pixel.y < 480) << floor.x << ", " << floor.z;
         EXPECT_GT(alphaNear(image, pixel, 1), 60) << "no grid at floor point " << floor.x << ", " << floor.z;
     }
     // Cell centres stay clear: the lines are where the metres are, not half a metre off.
     for (const glm::dvec3 floor : {glm::dvec3(1.5, 0, -2.5), glm::dvec3(-2.5, 0, 3.5)})
-        EXPECT_EQ(alphaNear(image, camera.project(floor), 2), 0) << "grid in the cell at " << floor.x << ", " << floor.z;
+        EXPECT_EQ(alphaNear(image, camera.project(floor), 2), 0)
+            << "grid in the cell at " << floor.x << ", " << floor.z;
     writeOnFailure(image, "grid");
 }
 
@@ -78,7 +82,8 @@ TEST(CalibrationOverlay, nothingIsDrawnAboveTheHorizon) {
         const double horizon = camera.intrinsics.cy - camera.intrinsics.fy * std::tan(glm::radians(tilt));
         int above = 0, below = 0;
         for (int y = 0; y < image.rows; ++y)
-            for (int x = 0; x < image.cols; ++x) (y < horizon - 1.0 ? above : below) += image.at<cv::Vec4b>(y, x)[3] > 0;
+            for (int x = 0; x < image.cols; ++x)
+                (y < horizon - 1.0 ? above : below) += image.at<cv::Vec4b>(y, x)[3] > 0;
         EXPECT_EQ(above, 0) << "tilt " << tilt << ": horizon at row " << horizon;
         EXPECT_GT(below, 1000) << "tilt " << tilt;
         writeOnFailure(image, "horizon");
@@ -109,7 +114,8 @@ TEST(CalibrationOverlay, aPersonIsMarkedAndLabelledAtTheirFootPixel) {
     const CalibratedCamera camera = cameraTilted(18.0);
     CalibrationOverlay empty, marked;
     empty.draw(camera, {640, 480}, {});
-    const StandingPerson person{.id = 3, .foot = {200.0f, 400.0f}, .metres = 7.4f, .depth = StandingPerson::Depth::Measured};
+    const StandingPerson person{
+        .id = 3, .foot = {200.0f, 400.0f}, .metres = 7.4f, .depth = StandingPerson::Depth::Measured};
     marked.draw(camera, {640, 480}, {&person, 1});
 
     // The marker's centre dot is opaque and green (measured) at the foot.
@@ -144,26 +150,32 @@ TEST(CalibrationOverlay, nearTheRightEdgeTheLabelIsOnTheMarkersLeft) {
     const CalibratedCamera camera = cameraTilted(18.0);
     CalibrationOverlay empty, marked;
     empty.draw(camera, {640, 480}, {});
-    const StandingPerson person{.id = 6, .foot = {620.0f, 400.0f}, .metres = 11.2f, .depth = StandingPerson::Depth::Measured};
+    const StandingPerson person{
+        .id = 6, .foot = {620.0f, 400.0f}, .metres = 11.2f, .depth = StandingPerson::Depth::Measured};
     marked.draw(camera, {640, 480}, {&person, 1});
     int leftOfMarker = 0;
     for (int y = 380; y < 420; ++y)
-        for (int x = 0; x < 640; ++x) leftOfMarker += x < 608 && marked.image().at<cv::Vec4b>(y, x) != empty.image().at<cv::Vec4b>(y, x);
+        for (int x = 0; x < 640; ++x)
+            leftOfMarker += x < 608 && marked.image().at<cv::Vec4b>(y, x) != empty.image().at<cv::Vec4b>(y, x);
     EXPECT_GT(leftOfMarker, 100);
     writeOnFailure(marked.image(), "right-edge");
 }
 
 TEST(CalibrationOverlay, labelSaysWhereTheDistanceCameFrom) {
-    EXPECT_EQ(standingLabel({.id = 3, .foot = {}, .metres = 7.43f, .depth = StandingPerson::Depth::Measured}), "#3 7.4 m");
-    EXPECT_EQ(standingLabel({.id = 12, .foot = {}, .metres = 3.0f, .depth = StandingPerson::Depth::Kept}), "#12 3.0 m (kept)");
-    EXPECT_EQ(standingLabel({.id = 1, .foot = {}, .metres = 5.0f, .depth = StandingPerson::Depth::Plane}), "#1 5.0 m (plane)");
+    EXPECT_EQ(standingLabel({.id = 3, .foot = {}, .metres = 7.43f, .depth = StandingPerson::Depth::Measured}),
+              "#3 7.4 m");
+    EXPECT_EQ(standingLabel({.id = 12, .foot = {}, .metres = 3.0f, .depth = StandingPerson::Depth::Kept}),
+              "#12 3.0 m (kept)");
+    EXPECT_EQ(standingLabel({.id = 1, .foot = {}, .metres = 5.0f, .depth = StandingPerson::Depth::Plane}),
+              "#1 5.0 m (plane)");
 }
 
 TEST(CalibrationOverlay, imageIsPremultiplied) {
     const CalibratedCamera camera = cameraTilted(18.0);
-    const StandingPerson people[] = {{.id = 1, .foot = {320.0f, 300.0f}, .metres = 9.0f, .depth = StandingPerson::Depth::Measured},
-                                     {.id = 2, .foot = {330.0f, 310.0f}, .metres = 8.0f, .depth = StandingPerson::Depth::Kept},
-                                     {.id = 4, .foot = {630.0f, 470.0f}, .metres = 5.0f, .depth = StandingPerson::Depth::Plane}};
+    const StandingPerson people[] = {
+        {.id = 1, .foot = {320.0f, 300.0f}, .metres = 9.0f, .depth = StandingPerson::Depth::Measured},
+        {.id = 2, .foot = {330.0f, 310.0f}, .metres = 8.0f, .depth = StandingPerson::Depth::Kept},
+        {.id = 4, .foot = {630.0f, 470.0f}, .metres = 5.0f, .depth = StandingPerson::Depth::Plane}};
     CalibrationOverlay overlay;
     overlay.draw(camera, {640, 480}, people);
     const cv::Mat& rgba = overlay.image();

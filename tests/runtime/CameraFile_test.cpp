@@ -3,8 +3,8 @@
 #include "../support/TempDir.hpp"
 #include "runtime/config/ConfigError.hpp"
 
-#include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
 
 #include <fstream>
 #include <iterator>
@@ -14,7 +14,11 @@ namespace arcomp {
 TEST(CameraFile, aWrittenCameraReadsBackTheSame) {
     test::TempDir dir;
     CalibratedCamera c;
-    c.intrinsics = {.imageSize = {1280, 720}, .fx = 1001.25, .fy = 999.5, .cx = 640.75, .cy = 355.125,
+    c.intrinsics = {.imageSize = {1280, 720},
+                    .fx = 1001.25,
+                    .fy = 999.5,
+                    .cx = 640.75,
+                    .cy = 355.125,
                     .distortion = {-0.21, 0.05, 0.001, -0.0005, 0.0}};
     c.rotation = glm::dmat3(glm::rotate(glm::dmat4(1.0), 0.4, glm::dvec3(1.0, 0.2, -0.3)));
     c.translation = {0.25, 1.5, 7.75};
@@ -41,7 +45,11 @@ TEST(CameraFile, intrinsicsAloneStandTheCameraAtTheOrigin) {
 
 TEST(CameraFile, aLensFileHoldsNoPoseAndReadsBackAsTheLens) {
     test::TempDir dir;
-    const CameraIntrinsics lens{.imageSize = {640, 480}, .fx = 612.5, .fy = 598.25, .cx = 322.5, .cy = 236.75,
+    const CameraIntrinsics lens{.imageSize = {640, 480},
+                                .fx = 612.5,
+                                .fy = 598.25,
+                                .cx = 322.5,
+                                .cy = 236.75,
                                 .distortion = {-0.08, 0.01, 0.0, 0.0, 0.0}};
     writeLensFile(dir.path() / "lens.yaml", lens, "chessboard, 12 views");
     std::ifstream in(dir.path() / "lens.yaml");
@@ -71,10 +79,12 @@ TEST(CameraFile, aMatrixThatIsNoRotationOrAHalfPoseIsRefusedWithItsPlace) {
             EXPECT_NE(std::string(e.what()).find("camera.yaml:"), std::string::npos) << e.what();
         }
     };
-    refused(lens + "rotation: [1, 0.5, 0, 0, 1, 0, 0, 0, 1]\ntranslation: [0, 1, 0]\n", "not a rotation matrix");  // a shear
-    refused(lens + "rotation: [-1, 0, 0, 0, 1, 0, 0, 0, 1]\ntranslation: [0, 1, 0]\n", "not a rotation matrix");  // a mirror
+    refused(lens + "rotation: [1, 0.5, 0, 0, 1, 0, 0, 0, 1]\ntranslation: [0, 1, 0]\n",
+            "not a rotation matrix");  // a shear
+    refused(lens + "rotation: [-1, 0, 0, 0, 1, 0, 0, 0, 1]\ntranslation: [0, 1, 0]\n",
+            "not a rotation matrix");  // a mirror
     refused(lens + "rotation: [1, 0, 0, 0, 1, 0, 0, 0, 1]\n", "give both");
     refused("image_size: [640, 480]\nfy: 500\ncx: 319.5\ncy: 239.5\n", "fx");
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -41,7 +41,7 @@ Frame capturedAt(std::chrono::steady_clock::time_point t) {
     return f;
 }
 
-} // namespace
+}  // namespace
 
 // Live: the capture time of the frame shown, since the station's clock
 // start; unchanged while the camera has nothing new, and never backwards
@@ -69,7 +69,8 @@ TEST(CaptureStage, liveFrameSecondsAreTheShownFramesCaptureTime) {
 // Replay: the video's own timestamps, the same as seconds().
 TEST(CaptureStage, replayFrameSecondsAreTheVideoTimestamps) {
     CaptureStage capture(StationInput::fromReplay(
-        std::make_unique<TestPatternSource>(TestPatternOptions{.width = 32, .height = 24, .fps = 20.0, .paced = false}), 20.0));
+        std::make_unique<TestPatternSource>(TestPatternOptions{.width = 32, .height = 24, .fps = 20.0, .paced = false}),
+        20.0));
     for (int i = 0; i < 5; ++i) {
         ASSERT_TRUE(capture.next());
         EXPECT_DOUBLE_EQ(capture.frameSeconds(), capture.seconds());

@@ -26,7 +26,7 @@ std::string issuesOf(const std::filesystem::path& file) {
     return {};
 }
 
-} // namespace
+}  // namespace
 
 TEST(CompositingConfig, absentSectionsMeanNoVideoNoMatteNoOutput) {
     TempDir dir;
@@ -101,8 +101,8 @@ output:
   video_fourcc: MPEG4
 )");
     const std::string issues = issuesOf(file);
-    EXPECT_NE(issues.find("s.yaml:5:"), std::string::npos) << issues;           // source: webcam
-    EXPECT_NE(issues.find("video.path"), std::string::npos) << issues;          // file needs a path
+    EXPECT_NE(issues.find("s.yaml:5:"), std::string::npos) << issues;   // source: webcam
+    EXPECT_NE(issues.find("video.path"), std::string::npos) << issues;  // file needs a path
     EXPECT_NE(issues.find("matte.background.scale"), std::string::npos) << issues;
     EXPECT_NE(issues.find("matte.background.colour"), std::string::npos) << issues;  // unknown key
     EXPECT_NE(issues.find("compositor.person_plane_m"), std::string::npos) << issues;

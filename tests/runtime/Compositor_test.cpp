@@ -14,7 +14,8 @@ using namespace arcomp::gl;
 namespace {
 
 cv::Vec4b at(const Image& img, int x, int y) {
-    const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(x)) * 4;
+    const std::size_t i =
+        (static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(x)) * 4;
     return {img.rgba[i], img.rgba[i + 1], img.rgba[i + 2], img.rgba[i + 3]};
 }
 
@@ -76,9 +77,9 @@ TEST_P(CompositorOnEachApi, eachPersonIsCutOnlyByHoldoutsNearerThanThem) {
     Compositor c(size);
     cv::Mat frame(size.y, size.x, CV_8UC3, cv::Scalar(90, 90, 90));
     cv::Mat person(size.y, size.x, CV_8UC4, cv::Scalar(0, 0, 0, 0));
-    person(cv::Rect(0, 0, 40, 96)).setTo(cv::Scalar(0, 0, 200, 255));    // near, left
-    person(cv::Rect(80, 0, 48, 96)).setTo(cv::Scalar(0, 200, 0, 255));   // far, right
-    person(cv::Rect(50, 90, 4, 4)).setTo(cv::Scalar(200, 0, 0, 255));    // untracked, on the plane
+    person(cv::Rect(0, 0, 40, 96)).setTo(cv::Scalar(0, 0, 200, 255));   // near, left
+    person(cv::Rect(80, 0, 48, 96)).setTo(cv::Scalar(0, 200, 0, 255));  // far, right
+    person(cv::Rect(50, 90, 4, 4)).setTo(cv::Scalar(200, 0, 0, 255));   // untracked, on the plane
     PersonDepths depths = onePlane(20.0f);
     depths.slotScale = 2;
     depths.slots = cv::Mat(48, 64, CV_8UC1, cv::Scalar(0));
@@ -91,7 +92,7 @@ TEST_P(CompositorOnEachApi, eachPersonIsCutOnlyByHoldoutsNearerThanThem) {
     c.begin(frame, {});
     paint(size, {0, 0, 128, 48}, glm::vec4(0, 0, 1, 1));  // blue CG across the top
     c.beginHoldout();
-    holdOut(size, {0, 0, 128, 48}, 6.0f);  // 6 m away: behind the left person, in front of the right one
+    holdOut(size, {0, 0, 128, 48}, 6.0f);    // 6 m away: behind the left person, in front of the right one
     holdOut(size, {0, 48, 128, 48}, 15.0f);  // the bottom: 15 m, behind both, in front of the plane
     c.endHoldout();
     c.person(person, depths, kProjection);
@@ -217,4 +218,4 @@ TEST(Compositor, videoRowsKeepTheirOrder) {
     EXPECT_EQ(at(out, 4, 5), cv::Vec4b(0, 0, 0, 255));
 }
 
-} // namespace
+}  // namespace

@@ -3,11 +3,11 @@
 // sum) and how a station config names one.
 
 #include "graph/core/BadInput.hpp"
+#include "runtime/config/StationConfig.hpp"
 #include "runtime/render/Environment.hpp"
 #include "runtime/render/ImageBasedLight.hpp"
 #include "runtime/station/ImageFile.hpp"
 #include "runtime/station/Station.hpp"
-#include "runtime/config/StationConfig.hpp"
 
 #include "../support/TempDir.hpp"
 
@@ -20,9 +20,7 @@ using arcomp::test::TempDir;
 
 namespace {
 
-Environment uniform(const glm::vec3& radiance) {
-    return {64, 32, std::vector<glm::vec3>(64 * 32, radiance)};
-}
+Environment uniform(const glm::vec3& radiance) { return {64, 32, std::vector<glm::vec3>(64 * 32, radiance)}; }
 
 std::string messageOf(const std::function<void()>& f) {
     try {
@@ -33,7 +31,7 @@ std::string messageOf(const std::function<void()>& f) {
     return {};
 }
 
-} // namespace
+}  // namespace
 
 TEST(Environment, directionsAndCoordinatesRoundTripInThreeJsLayout) {
     EXPECT_NEAR(equirectangularUv({0, 1, 0}).y, 0.0f, 1e-6f) << "row 0 is up";
@@ -64,7 +62,8 @@ TEST(Environment, radianceHdrRoundTripsWithinRgbePrecision) {
     ASSERT_EQ(back.width, 64);
     ASSERT_EQ(back.height, 32);
     for (std::size_t i = 0; i < env.radiance.size(); ++i)
-        for (int c = 0; c < 3; ++c) EXPECT_NEAR(back.radiance[i][c], env.radiance[i][c], env.radiance[i][c] / 64.0f + 1e-3f);
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(back.radiance[i][c], env.radiance[i][c], env.radiance[i][c] / 64.0f + 1e-3f);
 }
 
 TEST(Environment, pngIsDecodedFromSrgb) {
@@ -102,7 +101,8 @@ TEST(ImageBasedLight, uniformEnvironmentGivesItsRadianceAsDiffuse) {
     }
     ASSERT_EQ(light.specular.size(), 4u);
     EXPECT_EQ(light.specular[3].width, 4);
-    for (const Environment& level : light.specular) EXPECT_NEAR(level.at(level.width / 2, level.height / 2).g, 1.0f, 0.02f);
+    for (const Environment& level : light.specular)
+        EXPECT_NEAR(level.at(level.width / 2, level.height / 2).g, 1.0f, 0.02f);
 }
 
 // Light from above only: a normal facing up sees it all, one facing down
@@ -143,7 +143,9 @@ TEST(StationConfig, environmentIsNeutralOrAFileBesideTheConfig) {
     TempDir dir;
     const auto neutral = dir.write("a.yaml", "scene:\n  objects:\n    - shape: box\nrender:\n  environment: neutral\n");
     EXPECT_TRUE(loadStationConfig(neutral).render.environment.empty());
-    const auto file = dir.write("b.yaml", "scene:\n  objects:\n    - shape: box\nrender:\n  environment: hdr/hall.hdr\n  environment_intensity: 0.5\n");
+    const auto file = dir.write(
+        "b.yaml",
+        "scene:\n  objects:\n    - shape: box\nrender:\n  environment: hdr/hall.hdr\n  environment_intensity: 0.5\n");
     const StationConfig cfg = loadStationConfig(file);
     EXPECT_EQ(cfg.render.environment, (dir.path() / "hdr/hall.hdr").lexically_normal());
     EXPECT_EQ(cfg.render.environmentIntensity, 0.5f);

@@ -83,4 +83,4 @@ TEST_P(FrameReadbackOnEachApi, autoReadsSynchronouslyOnASoftwareRasterizerOnly) 
 INSTANTIATE_TEST_SUITE_P(Apis, FrameReadbackOnEachApi, ::testing::Values(GlRequest::Gl33, GlRequest::Es3),
                          [](const auto& info) { return info.param == GlRequest::Gl33 ? "gl33" : "es3"; });
 
-} // namespace
+}  // namespace

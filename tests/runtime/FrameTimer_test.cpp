@@ -29,7 +29,7 @@ bool esHasTimerExtension() {
 
 class FrameTimerOnEachApi : public ::testing::TestWithParam<GlRequest> {};
 
-} // namespace
+}  // namespace
 
 TEST_P(FrameTimerOnEachApi, usesQueriesOnlyWhereTheDriverHasThemAndTimesTheWork) {
     auto context = HeadlessContext::create(GetParam());

@@ -16,7 +16,7 @@ std::string errorOf(std::string_view text) {
     return "no error";
 }
 
-} // namespace
+}  // namespace
 
 TEST(GazeSource, fixedGazeIsNormalised) {
     FixedGaze g({0, 1, 0}, {0, 0, -5});
@@ -39,8 +39,11 @@ TEST(GazeSource, headPoseLooksAlongItsMinusZ) {
 }
 
 TEST(GazeSource, trackerSamplesArePlacedInWorld) {
-    TrackerGaze tracker([] { return std::optional<GazeSample>(GazeSample{0.0, {0, 0, 0}, {0, 0, -1}}); },
-                        glm::translate(glm::mat4(1.0f), {0, 1.5f, 0}));
+    TrackerGaze tracker(
+        [] {
+            return std::optional<GazeSample>(GazeSample{0.0, {0, 0, 0}, {0, 0, -1}});
+        },
+        glm::translate(glm::mat4(1.0f), {0, 1.5f, 0}));
     const auto s = tracker.sample(1.0);
     ASSERT_TRUE(s);
     EXPECT_EQ(s->eye, glm::vec3(0, 1.5f, 0));
@@ -108,7 +111,6 @@ TEST(GazeSource, mutatedTracksParseOrThrowGazeTrackError) {
                     ASSERT_GT(samples[i].time, samples[i - 1].time);
                 }
             }
-        } catch (const GazeTrackError&) {
-        }
+        } catch (const GazeTrackError&) {}
     }
 }

@@ -14,8 +14,7 @@ using namespace arcomp;
 namespace {
 
 bool isProgram(GLuint name) {
-    while (gl::glGetError() != GL_NO_ERROR) {
-    }
+    while (gl::glGetError() != GL_NO_ERROR) {}
     GLint status = 0;
     gl::glGetProgramiv(name, GL_DELETE_STATUS, &status);
     return gl::glGetError() == GL_NO_ERROR;
@@ -23,7 +22,7 @@ bool isProgram(GLuint name) {
 
 class GlHandleOnEachApi : public ::testing::TestWithParam<GlRequest> {};
 
-} // namespace
+}  // namespace
 
 TEST_P(GlHandleOnEachApi, deletesItsObjectWhenItGoesOrIsResetOrAssignedOver) {
     auto context = HeadlessContext::create(GetParam());

@@ -2,8 +2,8 @@
 // stalls the GPU: a stage reads what it took in the previous frame, and 0
 // when the previous frame skipped it.
 
-#include "runtime/gl/GpuStageTimes.hpp"
 #include "runtime/gl/GlContext.hpp"
+#include "runtime/gl/GpuStageTimes.hpp"
 #include "runtime/gl/RenderTarget.hpp"
 
 #include <gtest/gtest.h>
@@ -57,4 +57,4 @@ TEST_P(GpuStageTimesOnEachApi, aStageReadsThePreviousFramesTimeAndZeroWhenThatFr
 INSTANTIATE_TEST_SUITE_P(Apis, GpuStageTimesOnEachApi, ::testing::Values(GlRequest::Gl33, GlRequest::Es3),
                          [](const auto& info) { return info.param == GlRequest::Gl33 ? "gl33" : "es3"; });
 
-} // namespace
+}  // namespace

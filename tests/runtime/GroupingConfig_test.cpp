@@ -1,10 +1,10 @@
 // The station config's grouping section and the grouped scene it builds.
 
-#include "graph/scenes/ForestExperiment.hpp"
 #include "graph/core/SelectPass.hpp"
+#include "graph/scenes/ForestExperiment.hpp"
 #include "runtime/config/ConfigError.hpp"
-#include "runtime/station/SceneFile.hpp"
 #include "runtime/config/StationConfig.hpp"
+#include "runtime/station/SceneFile.hpp"
 
 #include "../support/TempDir.hpp"
 
@@ -21,7 +21,7 @@ const char* const kScene = R"(scene:
       size: [100, 100, 100]
 )";
 
-} // namespace
+}  // namespace
 
 TEST(GroupingConfig, absentSectionGroupsNothing) {
     TempDir dir;

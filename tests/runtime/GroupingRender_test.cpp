@@ -3,11 +3,11 @@
 
 #include "graph/scenes/ForestExperiment.hpp"
 #include "runtime/gl/GlContext.hpp"
-#include "tools/bench/report/ImageDifference.hpp"
-#include "runtime/station/ImageFile.hpp"
-#include "runtime/render/ImpostorBaker.hpp"
 #include "runtime/gl/RenderTarget.hpp"
+#include "runtime/render/ImpostorBaker.hpp"
 #include "runtime/render/Renderer.hpp"
+#include "runtime/station/ImageFile.hpp"
+#include "tools/bench/report/ImageDifference.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,7 +20,8 @@ struct Shot {
     std::size_t triangles;
 };
 
-Shot render(ForestExperiment& f, Renderer& renderer, ForestMode mode, GroupingProxy proxy, const glm::vec4& background) {
+Shot render(ForestExperiment& f, Renderer& renderer, ForestMode mode, GroupingProxy proxy,
+            const glm::vec4& background) {
     RenderTarget target(f.view.viewport);
     target.bind();
     const DrawList& list = f.select(mode, 0.1f, proxy);
@@ -29,7 +30,9 @@ Shot render(ForestExperiment& f, Renderer& renderer, ForestMode mode, GroupingPr
 }
 
 const std::uint8_t* pixel(const Image& img, glm::ivec2 p) {
-    return &img.rgba[(static_cast<std::size_t>(p.y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(p.x)) * 4];
+    return &img.rgba[(static_cast<std::size_t>(p.y) * static_cast<std::size_t>(img.width) +
+                      static_cast<std::size_t>(p.x)) *
+                     4];
 }
 
 // Where the forest's centre lands on screen.
@@ -43,7 +46,7 @@ void keepOnFailure(const char* name, const Image& img) {
     if (::testing::Test::HasFailure()) writePng(std::string(ARCOMP_TEST_OUTPUT) + "/" + name + ".png", img);
 }
 
-} // namespace
+}  // namespace
 
 TEST(GroupingRender, boxProxyIsBlendedOverTheBackground) {
     auto ctx = HeadlessContext::create(GlRequest::Auto);
@@ -67,7 +70,9 @@ TEST(GroupingRender, boxProxyIsBlendedOverTheBackground) {
 TEST(GroupingRender, impostorLooksCloserToTheFullForestThanNothing) {
     auto ctx = HeadlessContext::create(GlRequest::Auto);
     ForestExperiment f(ForestColouring::Green, {}, {320, 180});
-    EXPECT_GT(bakeImpostors(f.world.scene, f.forest.grouping, f.world.grouping, {.pixelsPerUnit = 0.3f, .eye = f.view.eye}), 0u);
+    EXPECT_GT(
+        bakeImpostors(f.world.scene, f.forest.grouping, f.world.grouping, {.pixelsPerUnit = 0.3f, .eye = f.view.eye}),
+        0u);
     Renderer renderer;
     const glm::vec4 sky{0.6f, 0.7f, 0.8f, 1.0f};
     const Shot full = render(f, renderer, ForestMode::Full, GroupingProxy::Box, sky);

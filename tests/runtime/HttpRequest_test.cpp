@@ -52,8 +52,7 @@ TEST_P(HttpRequestRefuses, withTheReason) {
 INSTANTIATE_TEST_SUITE_P(
     Garbage, HttpRequestRefuses,
     ::testing::Values(BadHead{"\x16\x03\x01\x02\x00\x01\x00\r\n\r\n"sv, "request line"},
-                      BadHead{"GET\r\n\r\n", "request line"},
-                      BadHead{"G(T /status HTTP/1.1\r\n\r\n", "method"},
+                      BadHead{"GET\r\n\r\n", "request line"}, BadHead{"G(T /status HTTP/1.1\r\n\r\n", "method"},
                       BadHead{"GET status HTTP/1.1\r\n\r\n", "target"},
                       BadHead{"GET /st\x01tus HTTP/1.1\r\n\r\n", "target"},
                       BadHead{"GET /status HTTP/2\r\n\r\n", "version"},
@@ -63,4 +62,4 @@ INSTANTIATE_TEST_SUITE_P(
                       BadHead{"GET /status HTTP/1.1\r\nAuthorization: Bearer a\r\nAuthorization: Bearer b\r\n\r\n",
                               "more than one Authorization"}));
 
-} // namespace arcomp
+}  // namespace arcomp

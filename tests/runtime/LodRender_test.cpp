@@ -2,13 +2,13 @@
 // gaze on the leftmost; each level has its own colour, so the written image
 // shows where the levels fall off, and the pixels are checked against k1.
 
+#include "graph/core/SelectPass.hpp"
 #include "graph/lod/GazeAcuity.hpp"
 #include "graph/lod/Lod.hpp"
-#include "graph/core/SelectPass.hpp"
 #include "runtime/gl/GlContext.hpp"
-#include "runtime/station/ImageFile.hpp"
 #include "runtime/gl/RenderTarget.hpp"
 #include "runtime/render/Renderer.hpp"
+#include "runtime/station/ImageFile.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

@@ -3,11 +3,11 @@
 
 #include "graph/core/SelectPass.hpp"
 #include "runtime/config/ConfigError.hpp"
+#include "runtime/config/StationConfig.hpp"
 #include "runtime/gl/GlContext.hpp"
 #include "runtime/station/ReplayInput.hpp"
 #include "runtime/station/SceneFile.hpp"
 #include "runtime/station/Station.hpp"
-#include "runtime/config/StationConfig.hpp"
 #include "video/sources/TestPatternSource.hpp"
 
 #include "../support/ConfigIssues.hpp"
@@ -17,11 +17,11 @@
 #include <gtest/gtest.h>
 
 using namespace arcomp;
-using arcomp::test::GltfFile;
-using arcomp::test::TempDir;
 using arcomp::test::configIssues;
 using arcomp::test::describe;
+using arcomp::test::GltfFile;
 using arcomp::test::hasIssue;
+using arcomp::test::TempDir;
 
 namespace {
 
@@ -47,13 +47,13 @@ std::string objectYaml(const std::string& keys) {
            "camera:\n  eye: [0, 0, 0]\n  target: [0, 0, -1]\n";
 }
 
-} // namespace
+}  // namespace
 
 TEST(ObjectAnimationConfig, readsAnimationLoopAndSpeed) {
     TempDir dir;
     dir.write("slide.gltf", slidingTriangle());
-    const StationConfig cfg =
-        loadStationConfig(dir.write("s.yaml", objectYaml("      animation: grow\n      loop: false\n      speed: 2.5\n")));
+    const StationConfig cfg = loadStationConfig(
+        dir.write("s.yaml", objectYaml("      animation: grow\n      loop: false\n      speed: 2.5\n")));
     const ObjectConfig& o = cfg.objects.at(0);
     EXPECT_EQ(o.animation, "grow");
     EXPECT_FALSE(o.animationLoop);
@@ -95,7 +95,8 @@ TEST(ObjectAnimationConfig, anUnknownAnimationSkipsTheObjectNamingWhatTheModelHa
     ASSERT_EQ(warnings.size(), 1u);
     const std::string& w = warnings[0];
     EXPECT_NE(w.find("s.yaml:3: object 'walker' skipped"), std::string::npos) << w;
-    EXPECT_NE(w.find("slide.gltf' has no animation 'jump'; its animations: 0 'slide', 1 'grow'"), std::string::npos) << w;
+    EXPECT_NE(w.find("slide.gltf' has no animation 'jump'; its animations: 0 'slide', 1 'grow'"), std::string::npos)
+        << w;
     EXPECT_TRUE(world.animations.empty());
     EXPECT_EQ(world.scene.geometries().size(), 0u) << "nothing of the model may be placed";
     // An index past the end is refused the same way.
@@ -122,8 +123,9 @@ TEST(ObjectAnimationConfig, theNamedOrIndexedClipIsBoundWithItsOptions) {
     dir.write("slide.gltf", slidingTriangle());
     World world;
     std::vector<std::string> warnings;
-    buildScene(loadStationConfig(dir.write("s.yaml", objectYaml("      animation: 1\n      speed: 0.5\n      loop: false\n"))),
-               world, warnings);
+    buildScene(
+        loadStationConfig(dir.write("s.yaml", objectYaml("      animation: 1\n      speed: 0.5\n      loop: false\n"))),
+        world, warnings);
     EXPECT_TRUE(warnings.empty());
     ASSERT_EQ(world.animations.size(), 1u);
     const ObjectAnimation& a = world.animations[0];
@@ -150,7 +152,8 @@ TEST(ObjectAnimationConfig, theNamedOrIndexedClipIsBoundWithItsOptions) {
 TEST(ObjectAnimationConfig, anAnimatedObjectInAGroupingNodeHasItsBoxRefreshed) {
     TempDir dir;
     dir.write("slide.gltf", slidingTriangle());
-    StationConfig cfg = loadStationConfig(dir.write("s.yaml", objectYaml("      animation: grow\n      loop: false\n")));
+    StationConfig cfg =
+        loadStationConfig(dir.write("s.yaml", objectYaml("      animation: grow\n      loop: false\n")));
     ObjectConfig box;
     box.name = "box";
     box.shape = "box";
@@ -195,8 +198,9 @@ StationConfig slidingStation(const std::filesystem::path& model, bool animated) 
 
 // Every frame of a 30 fps pattern replay, composited, read back.
 std::vector<Image> replay(const StationConfig& cfg, int frames) {
-    Station station(cfg, StationInput::fromReplay(
-                             std::make_unique<TestPatternSource>(TestPatternOptions{.width = 160, .height = 120, .paced = false}), 30.0));
+    Station station(cfg, StationInput::fromReplay(std::make_unique<TestPatternSource>(
+                                                      TestPatternOptions{.width = 160, .height = 120, .paced = false}),
+                                                  30.0));
     std::vector<Image> out;
     for (int i = 0; i < frames; ++i) {
         EXPECT_TRUE(station.frame());
@@ -205,7 +209,7 @@ std::vector<Image> replay(const StationConfig& cfg, int frames) {
     return out;
 }
 
-} // namespace
+}  // namespace
 
 // Frame i is at video time i/30 s. The slide starts at the pose the file
 // gives the node, so frame 0 matches the same model unanimated; later frames

@@ -2,9 +2,9 @@
 // call later under its own number, and finish() writes the last one; the
 // matte's PNG is written at once either way.
 
-#include "runtime/station/OutputStage.hpp"
 #include "runtime/gl/GlContext.hpp"
 #include "runtime/station/ImageFile.hpp"
+#include "runtime/station/OutputStage.hpp"
 #include "tests/support/TempDir.hpp"
 
 #include <gtest/gtest.h>
@@ -65,4 +65,4 @@ INSTANTIATE_TEST_SUITE_P(Readbacks, OutputStageByReadback,
                              return info.param == FrameReadback::Mode::Asynchronous ? "asynchronous" : "synchronous";
                          });
 
-} // namespace
+}  // namespace

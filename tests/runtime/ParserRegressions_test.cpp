@@ -5,9 +5,9 @@
 #include "runtime/config/CalibrationFile.hpp"
 #include "runtime/config/CameraFile.hpp"
 #include "runtime/config/ConfigError.hpp"
-#include "runtime/station/GazeSource.hpp"
-#include "runtime/operator/HttpRequest.hpp"
 #include "runtime/config/StationConfig.hpp"
+#include "runtime/operator/HttpRequest.hpp"
+#include "runtime/station/GazeSource.hpp"
 #include "tests/support/ParserRegressions.hpp"
 
 #include <gtest/gtest.h>

@@ -5,10 +5,10 @@
 
 #include "graph/core/SelectPass.hpp"
 #include "runtime/gl/GlContext.hpp"
-#include "runtime/render/ImageBasedLight.hpp"
-#include "runtime/station/ImageFile.hpp"
 #include "runtime/gl/RenderTarget.hpp"
+#include "runtime/render/ImageBasedLight.hpp"
 #include "runtime/render/Renderer.hpp"
+#include "runtime/station/ImageFile.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -29,7 +29,8 @@ struct Pixel {
 };
 
 Pixel at(const Image& img, int x, int y) {
-    const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(x)) * 4;
+    const std::size_t i =
+        (static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(x)) * 4;
     return {img.rgba[i], img.rgba[i + 1], img.rgba[i + 2], img.rgba[i + 3]};
 }
 
@@ -106,7 +107,8 @@ void addAt(Scene& scene, const glm::vec3& position, Geometry g, Material m) {
 
 void saveOnFailure(const Image& img, const std::string& name) {
     if (::testing::Test::HasFailure())
-        writePng(std::string(ARCOMP_TEST_OUTPUT) + "/" + name + (g_api == GlRequest::Es3 ? "-es3" : "-gl33") + ".png", img);
+        writePng(std::string(ARCOMP_TEST_OUTPUT) + "/" + name + (g_api == GlRequest::Es3 ? "-es3" : "-gl33") + ".png",
+                 img);
 }
 
 const Sampler kNearest{.magFilter = TextureFilter::Nearest, .minFilter = TextureFilter::Nearest};
@@ -127,7 +129,7 @@ protected:
 
 constexpr Shading kLevels[] = {Shading::Unlit, Shading::Flat, Shading::Gouraud, Shading::Phong};
 
-} // namespace
+}  // namespace
 
 // The third-party car: black base colours, the colours in emission. A lit
 // material shows its emission at every level; a KHR_materials_unlit one
@@ -138,7 +140,8 @@ TEST_P(PbrShading, blackBaseWithEmissionDrawsTheEmissiveColourUnlessUnlit) {
         for (bool unlit : {false, true}) {
             const Image img = render(
                 [&](Scene& s) {
-                    addAt(s, {}, makeSquare(), {.name = "test", .baseColor = {0, 0, 0, 1}, .emissive = emissive, .unlit = unlit});
+                    addAt(s, {}, makeSquare(),
+                          {.name = "test", .baseColor = {0, 0, 0, 1}, .emissive = emissive, .unlit = unlit});
                 },
                 {.shading = level, .settings = {.lightIntensity = 0.0f, .environmentIntensity = 0.0f}});
             const Pixel p = at(img, 48, 48);
@@ -157,10 +160,10 @@ TEST_P(PbrShading, emissionTimesStrengthAndTextureShowsAtEveryLevel) {
         const Image img = render(
             [&](Scene& s) {
                 // Emissive texture: the left half white, the right half black.
-                const int image = static_cast<int>(s.addImage(makeImage(2, 1, [](int x, int) {
-                    return x == 0 ? glm::u8vec4(255) : glm::u8vec4(0, 0, 0, 255);
-                })));
-                Material m{.name = "test", .baseColor = {0, 0, 0, 1}, .emissive = {0, 0.25f, 0}, .emissiveStrength = 4.0f};
+                const int image = static_cast<int>(s.addImage(
+                    makeImage(2, 1, [](int x, int) { return x == 0 ? glm::u8vec4(255) : glm::u8vec4(0, 0, 0, 255); })));
+                Material m{
+                    .name = "test", .baseColor = {0, 0, 0, 1}, .emissive = {0, 0.25f, 0}, .emissiveStrength = 4.0f};
                 m.emissiveTexture = slot(image, kNearest);
                 addAt(s, {}, makeSquare(), m);
             },
@@ -180,9 +183,11 @@ TEST_P(PbrShading, highlightPeakFallsAndSpreadsAsRoughnessRises) {
     for (float roughness : {0.25f, 0.45f, 0.7f}) {
         const Image img = render(
             [&](Scene& s) {
-                addAt(s, {}, makeUvSphere(1.0f, 64, 32), {.name = "test", .baseColor = {0, 0, 0, 1}, .metallic = 0.0f, .roughness = roughness});
+                addAt(s, {}, makeUvSphere(1.0f, 64, 32),
+                      {.name = "test", .baseColor = {0, 0, 0, 1}, .metallic = 0.0f, .roughness = roughness});
             },
-            {.settings = {.lightDirection = glm::normalize(glm::vec3(0.3f, 0.4f, 1.0f)), .lightIntensity = 1.0f,
+            {.settings = {.lightDirection = glm::normalize(glm::vec3(0.3f, 0.4f, 1.0f)),
+                          .lightIntensity = 1.0f,
                           .environmentIntensity = 0.0f}});
         int peak = 0;
         for (int y = 0; y < kSize.y; ++y)
@@ -204,7 +209,10 @@ TEST_P(PbrShading, highlightPeakFallsAndSpreadsAsRoughnessRises) {
 TEST_P(PbrShading, metalReflectionsTakeTheBaseColourDielectricOnesStayWhite) {
     auto highlight = [](const glm::vec4& base, float metallic) {
         const Image img = render(
-            [&](Scene& s) { addAt(s, {}, makeUvSphere(1.0f, 64, 32), {.name = "test", .baseColor = base, .metallic = metallic, .roughness = 0.5f}); },
+            [&](Scene& s) {
+                addAt(s, {}, makeUvSphere(1.0f, 64, 32),
+                      {.name = "test", .baseColor = base, .metallic = metallic, .roughness = 0.5f});
+            },
             {.settings = {.lightIntensity = 0.4f, .environmentIntensity = 0.2f}});
         Pixel best{0, 0, 0, 0};
         for (int y = 0; y < kSize.y; ++y)
@@ -215,7 +223,8 @@ TEST_P(PbrShading, metalReflectionsTakeTheBaseColourDielectricOnesStayWhite) {
     const Pixel metal = highlight({1.0f, 0.4f, 0.1f, 1}, 1.0f), plastic = highlight({0, 0, 0, 1}, 0.0f);
     EXPECT_LT(metal.b, metal.r * 6 / 10) << "metal highlight " << metal.r << "," << metal.g << "," << metal.b;
     EXPECT_GT(plastic.r, 20) << "the dielectric reflects something";
-    EXPECT_NEAR(plastic.b, plastic.r, plastic.r / 10 + 1) << "plastic highlight " << plastic.r << "," << plastic.g << "," << plastic.b;
+    EXPECT_NEAR(plastic.b, plastic.r, plastic.r / 10 + 1)
+        << "plastic highlight " << plastic.r << "," << plastic.g << "," << plastic.b;
 }
 
 // A white furnace: under an environment of the same radiance everywhere,
@@ -224,11 +233,15 @@ TEST_P(PbrShading, metalReflectionsTakeTheBaseColourDielectricOnesStayWhite) {
 // A rough metal drawn with single scattering alone would keep about a
 // third of it head-on and less at the rim.
 TEST_P(PbrShading, aWhiteSurfaceInAWhiteFurnaceReflectsAllItsLightAtAnyRoughness) {
-    const ImageBasedLight furnace = prefilterEnvironment(Environment{64, 32, std::vector<glm::vec3>(64 * 32, glm::vec3(0.5f))}, 32, 5);
+    const ImageBasedLight furnace =
+        prefilterEnvironment(Environment{64, 32, std::vector<glm::vec3>(64 * 32, glm::vec3(0.5f))}, 32, 5);
     for (const float metallic : {1.0f, 0.0f})
         for (const float roughness : {0.3f, 0.6f, 1.0f}) {
             const Image img = render(
-                [&](Scene& s) { addAt(s, {}, makeUvSphere(1.0f, 64, 32), {.name = "test", .baseColor = {1, 1, 1, 1}, .metallic = metallic, .roughness = roughness}); },
+                [&](Scene& s) {
+                    addAt(s, {}, makeUvSphere(1.0f, 64, 32),
+                          {.name = "test", .baseColor = {1, 1, 1, 1}, .metallic = metallic, .roughness = roughness});
+                },
                 {.settings = {.lightIntensity = 0.0f, .environmentIntensity = 1.0f}, .environment = &furnace});
             int darkest = 255, brightest = 0;
             for (int y = 0; y < kSize.y; ++y)
@@ -263,7 +276,8 @@ Image grazingSquare(bool withMap, bool withTangents) {
             }
             addAt(s, {}, std::move(g), m);
         },
-        {.settings = {.lightDirection = glm::normalize(glm::vec3(1.0f, 0.0f, 0.25f)), .lightIntensity = 3.0f,
+        {.settings = {.lightDirection = glm::normalize(glm::vec3(1.0f, 0.0f, 0.25f)),
+                      .lightIntensity = 3.0f,
                       .environmentIntensity = 0.0f}});
 }
 
@@ -278,7 +292,7 @@ int brightnessRange(const Image& img) {
     return hi - lo;
 }
 
-} // namespace
+}  // namespace
 
 TEST_P(PbrShading, normalMapShowsItsPatternUnderAGrazingLight) {
     const Image plain = grazingSquare(false, true);
@@ -297,9 +311,8 @@ TEST_P(PbrShading, occlusionDarkensTheAmbientOnly) {
         return render(
             [&](Scene& s) {
                 // Occlusion texture (R): left half fully occluded, right half open.
-                const int image = static_cast<int>(s.addImage(makeImage(2, 1, [](int x, int) {
-                    return x == 0 ? glm::u8vec4(0, 0, 0, 255) : glm::u8vec4(255);
-                })));
+                const int image = static_cast<int>(s.addImage(
+                    makeImage(2, 1, [](int x, int) { return x == 0 ? glm::u8vec4(0, 0, 0, 255) : glm::u8vec4(255); })));
                 Material m{.name = "test", .baseColor = {0.8f, 0.8f, 0.8f, 1}, .roughness = 0.9f};
                 m.occlusionTexture = slot(image, kNearest);
                 addAt(s, {}, makeSquare(), m);
@@ -325,7 +338,8 @@ TEST_P(PbrShading, maskCutoffKeepsTheTexelsAboveIt) {
                 const int image = static_cast<int>(s.addImage(makeImage(16, 1, [](int x, int) {
                     return glm::u8vec4(255, 255, 255, static_cast<std::uint8_t>((x * 16 + 8)));
                 })));
-                Material m{.name = "test", .baseColor = {1, 1, 1, 1}, .alphaMode = AlphaMode::Mask, .alphaCutoff = cutoff};
+                Material m{
+                    .name = "test", .baseColor = {1, 1, 1, 1}, .alphaMode = AlphaMode::Mask, .alphaCutoff = cutoff};
                 m.baseColorTexture = slot(image, kNearest);
                 addAt(s, {}, makeSquare(), m);
             },
@@ -346,7 +360,8 @@ TEST_P(PbrShading, blendedSquareMixesWithTheOpaqueOneBehind) {
     const Image img = render(
         [&](Scene& s) {
             addAt(s, {0, 0, -0.5f}, makeSquare(), {.name = "test", .baseColor = {1, 0, 0, 1}});
-            addAt(s, {0, 0, 0.5f}, makeSquare(), {.name = "test", .baseColor = {0, 0, 1, 0.5f}, .alphaMode = AlphaMode::Blend});
+            addAt(s, {0, 0, 0.5f}, makeSquare(),
+                  {.name = "test", .baseColor = {0, 0, 1, 0.5f}, .alphaMode = AlphaMode::Blend});
         },
         {.shading = Shading::Unlit});
     const Pixel p = at(img, 48, 48);
@@ -360,10 +375,12 @@ TEST_P(PbrShading, blendedSquareMixesWithTheOpaqueOneBehind) {
 namespace {
 
 Image checker(int cells) {
-    return makeImage(cells, cells, [](int x, int y) { return (x + y) % 2 ? glm::u8vec4(255) : glm::u8vec4(0, 0, 0, 255); });
+    return makeImage(cells, cells,
+                     [](int x, int y) { return (x + y) % 2 ? glm::u8vec4(255) : glm::u8vec4(0, 0, 0, 255); });
 }
 
-Image texturedSquare(const Image& texture, const Sampler& sampler, TextureTransform transform = {}, float uvScale = 1.0f) {
+Image texturedSquare(const Image& texture, const Sampler& sampler, TextureTransform transform = {},
+                     float uvScale = 1.0f) {
     return render(
         [&](Scene& s) {
             Material m{.name = "test", .baseColor = {1, 1, 1, 1}};
@@ -383,8 +400,7 @@ double fractionDiffering(const Image& a, const Image& b) {
     return static_cast<double>(differ) / static_cast<double>(inside);
 }
 
-
-} // namespace
+}  // namespace
 
 TEST_P(PbrShading, textureTransformMovesTheCheckerByItsOffset) {
     const Image plain = texturedSquare(checker(8), kNearest);
@@ -403,7 +419,8 @@ TEST_P(PbrShading, nearestSamplingKeepsEdgesSharpLinearBlursThem) {
         return static_cast<double>(n) / (44.0 * 44.0);
     };
     const Image nearest = texturedSquare(checker(2), kNearest);
-    const Image linear = texturedSquare(checker(2), {.magFilter = TextureFilter::Linear, .minFilter = TextureFilter::Linear});
+    const Image linear =
+        texturedSquare(checker(2), {.magFilter = TextureFilter::Linear, .minFilter = TextureFilter::Linear});
     EXPECT_LT(midTones(nearest), 0.02);
     EXPECT_GT(midTones(linear), 0.3);
 }
@@ -432,7 +449,8 @@ TEST_P(PbrShading, aMinifiedColourTextureAveragesInLinearLight) {
 
 TEST_P(PbrShading, clampRepeatsTheEdgeTexelRepeatWrapsAround) {
     // Red | green, with u running 0..2 across the square.
-    const Image redGreen = makeImage(2, 1, [](int x, int) { return x == 0 ? glm::u8vec4(255, 0, 0, 255) : glm::u8vec4(0, 255, 0, 255); });
+    const Image redGreen =
+        makeImage(2, 1, [](int x, int) { return x == 0 ? glm::u8vec4(255, 0, 0, 255) : glm::u8vec4(0, 255, 0, 255); });
     Sampler repeat = kNearest, clamp = kNearest;
     clamp.wrapS = TextureWrap::ClampToEdge;
     const Image repeated = texturedSquare(redGreen, repeat, {}, 2.0f);
@@ -486,9 +504,15 @@ TEST_P(PbrShading, singleSidedBacksAreCulledDoubleSidedOnesLitWithTheNormalFlipp
     auto back = [&](Shading level, bool doubleSided, const glm::vec3& light) {
         return render(
             [&](Scene& s) {
-                addAt(s, {}, makeSquare(), {.name = "test", .baseColor = {0.8f, 0.8f, 0.8f, 1}, .roughness = 1.0f, .doubleSided = doubleSided});
+                addAt(s, {}, makeSquare(),
+                      {.name = "test",
+                       .baseColor = {0.8f, 0.8f, 0.8f, 1},
+                       .roughness = 1.0f,
+                       .doubleSided = doubleSided});
             },
-            {.shading = level, .settings = {.lightDirection = light, .lightIntensity = 2.0f, .environmentIntensity = 0.0f}, .view = behind});
+            {.shading = level,
+             .settings = {.lightDirection = light, .lightIntensity = 2.0f, .environmentIntensity = 0.0f},
+             .view = behind});
     };
     for (Shading level : {Shading::Flat, Shading::Gouraud, Shading::Phong}) {
         EXPECT_EQ(covered(back(level, false, {0, 0, -1})), 0u) << toString(level);
@@ -496,14 +520,19 @@ TEST_P(PbrShading, singleSidedBacksAreCulledDoubleSidedOnesLitWithTheNormalFlipp
         const Image litFromFront = back(level, true, {0, 0, 1});
         EXPECT_EQ(covered(litFromViewerSide), 48u * 48u) << toString(level);
         EXPECT_GT(brightness(at(litFromViewerSide, 48, 48)), 150) << toString(level);
-        EXPECT_LT(brightness(at(litFromFront, 48, 48)), 10) << toString(level) << ": the back's normal points away from a light in front";
+        EXPECT_LT(brightness(at(litFromFront, 48, 48)), 10)
+            << toString(level) << ": the back's normal points away from a light in front";
     }
 }
 
 TEST_P(PbrShading, unlitLevelIgnoresTheLightTopLevelFollowsTheEnvironment) {
     auto sphere = [](Shading level, const RenderSettings& settings, const ImageBasedLight* environment) {
-        return render([&](Scene& s) { addAt(s, {}, makeUvSphere(1.0f, 48, 24), {.name = "test", .baseColor = {0.9f, 0.9f, 0.9f, 1}, .roughness = 0.5f}); },
-                      {.shading = level, .settings = settings, .environment = environment});
+        return render(
+            [&](Scene& s) {
+                addAt(s, {}, makeUvSphere(1.0f, 48, 24),
+                      {.name = "test", .baseColor = {0.9f, 0.9f, 0.9f, 1}, .roughness = 0.5f});
+            },
+            {.shading = level, .settings = settings, .environment = environment});
     };
     const Image dim = sphere(Shading::Unlit, {.lightIntensity = 0.2f, .environmentIntensity = 0.1f}, nullptr);
     const Image bright = sphere(Shading::Unlit, {.lightIntensity = 5.0f, .environmentIntensity = 3.0f}, nullptr);
@@ -533,7 +562,10 @@ TEST_P(PbrShading, aMirrorSphereReflectsTheEnvironmentTheRightWayRound) {
                     glm::vec3(bright(equirectangularDirection({(x + 0.5f) / 64.0f, (y + 0.5f) / 32.0f})) ? 1.0f : 0.0f);
         const ImageBasedLight light = prefilterEnvironment(env, 64, 5);
         return render(
-            [&](Scene& s) { addAt(s, {}, makeUvSphere(1.0f, 64, 32), {.name = "mirror", .baseColor = {1, 1, 1, 1}, .metallic = 1.0f, .roughness = 0.0f}); },
+            [&](Scene& s) {
+                addAt(s, {}, makeUvSphere(1.0f, 64, 32),
+                      {.name = "mirror", .baseColor = {1, 1, 1, 1}, .metallic = 1.0f, .roughness = 0.0f});
+            },
             {.settings = {.lightIntensity = 0.0f}, .environment = &light});
     };
     const Image behindCamera = mirror([](const glm::vec3& d) { return d.z > 0.0f; });
@@ -549,7 +581,8 @@ TEST_P(PbrShading, aMirrorSphereReflectsTheEnvironmentTheRightWayRound) {
 TEST(PbrShadingApis, desktopAndEsAgreeOnTheFullModel) {
     auto scene = [](Scene& s) {
         Geometry g = makeUvSphere(1.0f, 48, 24);
-        addAt(s, {}, std::move(g), {.name = "test", .baseColor = {0.9f, 0.5f, 0.2f, 1}, .metallic = 0.5f, .roughness = 0.4f});
+        addAt(s, {}, std::move(g),
+              {.name = "test", .baseColor = {0.9f, 0.5f, 0.2f, 1}, .metallic = 0.5f, .roughness = 0.4f});
     };
     const Image gl = render(scene, {.api = GlRequest::Gl33});
     const Image es = render(scene, {.api = GlRequest::Es3});

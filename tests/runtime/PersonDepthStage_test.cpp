@@ -17,7 +17,8 @@ namespace {
 CalibratedCamera camera(glm::ivec2 size) {
     CalibratedCamera c;
     const double s = size.x / 640.0;
-    c.intrinsics = {.imageSize = size, .fx = 560.0 * s, .fy = 556.0 * s, .cx = 331.0 * s, .cy = 228.5 * s, .distortion = {}};
+    c.intrinsics = {
+        .imageSize = size, .fx = 560.0 * s, .fy = 556.0 * s, .cx = 331.0 * s, .cy = 228.5 * s, .distortion = {}};
     const double tilt = glm::radians(18.0);
     const glm::dvec3 forward(0.0, -std::sin(tilt), -std::cos(tilt)), right(1.0, 0.0, 0.0);
     c.rotation = glm::transpose(glm::dmat3(right, glm::cross(forward, right), forward));
@@ -34,7 +35,7 @@ cv::Mat matteWith(glm::ivec2 size, int left, int right, int top, int bottom) {
 
 double depthAt(const CalibratedCamera& c, glm::dvec2 pixel) { return c.depthOf(*c.floorPointAt(pixel)); }
 
-} // namespace
+}  // namespace
 
 TEST(PersonDepthStage, aPersonSeenWithTheirFeetIsMeasuredAtTheirFootPixel) {
     const CalibratedCamera c = camera({640, 480});

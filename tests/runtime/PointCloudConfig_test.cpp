@@ -1,8 +1,8 @@
 // The station config's point_clouds section and the cloud nodes it adds.
 
 #include "runtime/config/ConfigError.hpp"
-#include "runtime/station/SceneFile.hpp"
 #include "runtime/config/StationConfig.hpp"
+#include "runtime/station/SceneFile.hpp"
 
 #include "../support/TempDir.hpp"
 
@@ -20,7 +20,7 @@ const char* const kScene = R"(scene:
     - shape: box
 )";
 
-} // namespace
+}  // namespace
 
 TEST(PointCloudConfig, absentSectionAddsNoClouds) {
     TempDir dir;

@@ -4,8 +4,8 @@
 
 #include "graph/core/SelectPass.hpp"
 #include "runtime/gl/GlContext.hpp"
-#include "runtime/render/PointCloudLayer.hpp"
 #include "runtime/gl/RenderTarget.hpp"
+#include "runtime/render/PointCloudLayer.hpp"
 #include "runtime/render/Renderer.hpp"
 #include "runtime/station/SceneFile.hpp"
 
@@ -22,7 +22,8 @@ struct Renders {
 };
 
 glm::ivec4 at(const Image& img, glm::ivec2 p) {
-    const std::size_t i = (static_cast<std::size_t>(p.y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(p.x)) * 4;
+    const std::size_t i =
+        (static_cast<std::size_t>(p.y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(p.x)) * 4;
     return {img.rgba[i], img.rgba[i + 1], img.rgba[i + 2], img.rgba[i + 3]};
 }
 
@@ -42,7 +43,8 @@ std::vector<glm::ivec2> pixelsAround(const View& view, glm::vec3 center, float r
 class TranslucentTrees : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
-        file_ = std::make_unique<SceneFile>(loadSceneFile(std::string(ARCOMP_SOURCE_DIR) + "/configs/translucent-trees.yaml"));
+        file_ = std::make_unique<SceneFile>(
+            loadSceneFile(std::string(ARCOMP_SOURCE_DIR) + "/configs/translucent-trees.yaml"));
         file_->world.scene.update();
         const View view = *file_->camera;
         auto ctx = HeadlessContext::create(GlRequest::Auto);
@@ -72,7 +74,7 @@ protected:
     static inline std::size_t clouds_ = 0;
 };
 
-} // namespace
+}  // namespace
 
 TEST_F(TranslucentTrees, configAddsBothCloudsAndTheLayerDrawsThem) {
     EXPECT_TRUE(file_->warnings.empty());
@@ -93,7 +95,8 @@ TEST_F(TranslucentTrees, boxInFrontHidesTheTrunk) {
 TEST_F(TranslucentTrees, ballBehindTheCrownShowsThroughTheLeaves) {
     std::size_t blended = 0;
     for (glm::ivec2 p : pixelsAround(*file_->camera, {0.1f, 1.75f, -1.4f}, 0.3f)) {
-        const glm::ivec4 cloud = at(renders_->cloudsOnly, p), ball = at(renders_->cgOnly, p), both = at(renders_->both, p);
+        const glm::ivec4 cloud = at(renders_->cloudsOnly, p), ball = at(renders_->cgOnly, p),
+                         both = at(renders_->both, p);
         if (cloud.a < 20 || cloud.a > 235) continue;  // translucent layer pixels only
         ++blended;
         // Not the ball alone, not the cloud alone: the cloud over the ball.

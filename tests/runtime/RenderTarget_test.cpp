@@ -1,8 +1,8 @@
 // A render target reads back as an image with its rows top to bottom, into
 // a fresh image or into one kept from an earlier frame of another size.
 
-#include "runtime/gl/RenderTarget.hpp"
 #include "runtime/gl/GlContext.hpp"
+#include "runtime/gl/RenderTarget.hpp"
 
 #include <gtest/gtest.h>
 
@@ -28,8 +28,9 @@ void paintTopBlueBottomRed(const RenderTarget& target, int topRows) {
 }
 
 std::uint8_t channel(const Image& img, int x, int y, int c) {
-    return img.rgba[(static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(x)) * 4 +
-                    static_cast<std::size_t>(c)];
+    return img
+        .rgba[(static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(x)) * 4 +
+              static_cast<std::size_t>(c)];
 }
 
 TEST_P(RenderTargetOnEachApi, readsRowsTopToBottom) {
@@ -82,4 +83,4 @@ TEST(RenderTarget, rejectsImpossibleSizes) {
 INSTANTIATE_TEST_SUITE_P(Apis, RenderTargetOnEachApi, ::testing::Values(GlRequest::Gl33, GlRequest::Es3),
                          [](const auto& info) { return info.param == GlRequest::Gl33 ? "gl33" : "es3"; });
 
-} // namespace
+}  // namespace

@@ -3,9 +3,9 @@
 
 #include "graph/core/SelectPass.hpp"
 #include "runtime/gl/GlContext.hpp"
-#include "runtime/station/ImageFile.hpp"
 #include "runtime/gl/RenderTarget.hpp"
 #include "runtime/render/Renderer.hpp"
+#include "runtime/station/ImageFile.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -21,7 +21,8 @@ struct Pixel {
 };
 
 Pixel at(const Image& img, int x, int y) {
-    const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(x)) * 4;
+    const std::size_t i =
+        (static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(x)) * 4;
     return {img.rgba[i], img.rgba[i + 1], img.rgba[i + 2], img.rgba[i + 3]};
 }
 
@@ -48,7 +49,8 @@ Image renderTestScene(GlRequest request, Shading shading, glm::ivec2 size = {320
     Material redMaterial{.name = "red", .baseColor = {1, 0, 0, 1}};
     Material greenMaterial{.name = "green", .baseColor = {0, 1, 0, 1}};
     if (whiteTexture) {
-        const auto white = static_cast<int>(scene.addImage({.width = 2, .height = 2, .rgba = std::vector<std::uint8_t>(16, 255)}));
+        const auto white =
+            static_cast<int>(scene.addImage({.width = 2, .height = 2, .rgba = std::vector<std::uint8_t>(16, 255)}));
         redMaterial.baseColorTexture.image = greenMaterial.baseColorTexture.image = white;
     }
     const auto red = scene.addMaterial(redMaterial);
@@ -75,7 +77,7 @@ void saveOnFailure(const Image& img, const std::string& name) {
 
 class RendererOnEachApi : public ::testing::TestWithParam<GlRequest> {};
 
-} // namespace
+}  // namespace
 
 TEST_P(RendererOnEachApi, drawsObjectsWhereTheyStandInTheirColours) {
     const Image img = renderTestScene(GetParam(), Shading::Phong);
@@ -118,9 +120,11 @@ INSTANTIATE_TEST_SUITE_P(Apis, RendererOnEachApi, ::testing::Values(GlRequest::G
 TEST_P(RendererOnEachApi, aMaterialWithoutTexturesDrawsAsOneWithAWhiteTexture) {
     for (int s = 0; s < kShadingCount; ++s) {
         const auto shading = static_cast<Shading>(s);
-        const Image plain = renderTestScene(GetParam(), shading), white = renderTestScene(GetParam(), shading, {320, 240}, true);
+        const Image plain = renderTestScene(GetParam(), shading),
+                    white = renderTestScene(GetParam(), shading, {320, 240}, true);
         EXPECT_GT(coverage(plain), 0.1);
-        EXPECT_TRUE(plain.rgba == white.rgba) << toString(shading) << ": mean difference " << meanDifference(plain, white);
+        EXPECT_TRUE(plain.rgba == white.rgba)
+            << toString(shading) << ": mean difference " << meanDifference(plain, white);
     }
 }
 

@@ -32,5 +32,5 @@ TEST(ResidentHeap, AFreedFrameBufferStaysInTheProcess) {
 }
 #endif
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

@@ -49,7 +49,7 @@ std::string errorOf(const ShaderProgram& p, const char* name) {
 
 class ShaderProgramOnEachApi : public ::testing::TestWithParam<GlRequest> {};
 
-} // namespace
+}  // namespace
 
 TEST_P(ShaderProgramOnEachApi, aUniformThisVariantDoesNotReadIsMinusOneAndNotRequirable) {
     auto context = HeadlessContext::create(GetParam());

@@ -64,8 +64,8 @@ Shadowed castOnGrey(const glm::vec3& light, float strength, const std::vector<gl
     compositor.begin(cv::Mat(size.y, size.x, CV_8UC3, cv::Scalar(200, 200, 200)), {});
     Renderer renderer;
     ShadowCatcher shadows(size, tiles);
-    shadows.cast(scene, list, out.view, {.enabled = true, .light = glm::normalize(light), .strength = strength}, renderer,
-                 compositor.output());
+    shadows.cast(scene, list, out.view, {.enabled = true, .light = glm::normalize(light), .strength = strength},
+                 renderer, compositor.output());
     out.pixels = shadows.pixelsCovered();
     out.image = compositor.output().read();
     out.grey.create(size.y, size.x, CV_8UC1);
@@ -184,4 +184,4 @@ TEST(ShadowCatcher, theMaskIsDrawnAgainOnlyWhenAnObjectMoves) {
     EXPECT_GT(moved, first + 5.0);  // a metre to the right is about 14 pixels here
 }
 
-} // namespace
+}  // namespace

@@ -5,10 +5,10 @@
 #include "graph/core/SelectPass.hpp"
 #include "graph/io/ModelLoader.hpp"
 #include "runtime/gl/GlContext.hpp"
-#include "runtime/station/HoldoutBake.hpp"
-#include "runtime/station/ImageFile.hpp"
 #include "runtime/gl/RenderTarget.hpp"
 #include "runtime/render/Renderer.hpp"
+#include "runtime/station/HoldoutBake.hpp"
+#include "runtime/station/ImageFile.hpp"
 
 #include "../support/GltfFile.hpp"
 #include "../support/TempDir.hpp"
@@ -36,7 +36,8 @@ std::string slidingSkinnedTriangle() {
     const int times = f.add({0, 1}, "SCALAR");
     const int slide = f.add({0, 0, 0, 2, 0, 0}, "VEC3");
     f.animations = R"([{"name": "slide", "samplers": [{"input": )" + std::to_string(times) + R"(, "output": )" +
-                   std::to_string(slide) + R"(}], "channels": [{"sampler": 0, "target": {"node": 1, "path": "translation"}}]}])";
+                   std::to_string(slide) +
+                   R"(}], "channels": [{"sampler": 0, "target": {"node": 1, "path": "translation"}}]}])";
     return f.json();
 }
 
@@ -58,9 +59,11 @@ class SkinnedHoldout : public ::testing::TestWithParam<GlRequest> {};
 TEST_P(SkinnedHoldout, theHoldoutCoversWhatThePosedCgCovers) {
     TempDir dir;
     World world;
-    const LoadedModel model = loadModel(dir.write("slide.gltf", slidingSkinnedTriangle()), world.scene, world.scene.root());
+    const LoadedModel model =
+        loadModel(dir.write("slide.gltf", slidingSkinnedTriangle()), world.scene, world.scene.root());
     ASSERT_TRUE(model.warnings.empty()) << model.warnings.front();
-    world.animations.push_back({.player = AnimationPlayer(model.animations.at(0), {.loop = false}), .node = model.root});
+    world.animations.push_back(
+        {.player = AnimationPlayer(model.animations.at(0), {.loop = false}), .node = model.root});
     world.scene.update();
     const View view = View::lookAt({1.5f, 0.5f, 4.0f}, {1.5f, 0.5f, 0.0f}, {0, 1, 0}, 60.0f, kSize);
     bakeHoldouts(world, view, CompositorConfig{}, {}, {});
@@ -76,7 +79,8 @@ TEST_P(SkinnedHoldout, theHoldoutCoversWhatThePosedCgCovers) {
         if (holdout) {
             DrawList cut;
             for (const HoldoutItem& h : list.holdouts)
-                if (auto item = world.holdouts.itemFor(world.scene, list.items[h.cgItem], view)) cut.items.push_back(*item);
+                if (auto item = world.holdouts.itemFor(world.scene, list.items[h.cgItem], view))
+                    cut.items.push_back(*item);
             list = cut;
         }
         target.bind();
@@ -86,8 +90,10 @@ TEST_P(SkinnedHoldout, theHoldoutCoversWhatThePosedCgCovers) {
     const Image cgStart = drawAt(0.0, false), holdoutStart = drawAt(0.0, true);
     const Image cgEnd = drawAt(1.0, false), holdoutEnd = drawAt(1.0, true);
     EXPECT_GT(coverage(cgStart), 50u);
-    EXPECT_EQ(covered(holdoutStart), covered(cgStart)) << "at rest: " << coverage(holdoutStart) << " vs " << coverage(cgStart);
-    EXPECT_EQ(covered(holdoutEnd), covered(cgEnd)) << "slid by the bone: " << coverage(holdoutEnd) << " vs " << coverage(cgEnd);
+    EXPECT_EQ(covered(holdoutStart), covered(cgStart))
+        << "at rest: " << coverage(holdoutStart) << " vs " << coverage(cgStart);
+    EXPECT_EQ(covered(holdoutEnd), covered(cgEnd))
+        << "slid by the bone: " << coverage(holdoutEnd) << " vs " << coverage(cgEnd);
     EXPECT_NE(covered(cgEnd), covered(cgStart)) << "the bone did not move the triangle";
     if (HasFailure()) {
         const std::string api = GetParam() == GlRequest::Es3 ? "-es3" : "-gl33";
@@ -99,4 +105,4 @@ TEST_P(SkinnedHoldout, theHoldoutCoversWhatThePosedCgCovers) {
 INSTANTIATE_TEST_SUITE_P(Apis, SkinnedHoldout, ::testing::Values(GlRequest::Gl33, GlRequest::Es3),
                          [](const auto& info) { return info.param == GlRequest::Gl33 ? "gl33" : "es3"; });
 
-} // namespace
+}  // namespace

@@ -4,9 +4,9 @@
 
 #include "graph/core/SelectPass.hpp"
 #include "runtime/gl/GlContext.hpp"
-#include "runtime/station/ImageFile.hpp"
 #include "runtime/gl/RenderTarget.hpp"
 #include "runtime/render/Renderer.hpp"
+#include "runtime/station/ImageFile.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -71,10 +71,12 @@ TEST_P(SkinnedShading, aSquareTurnedByItsJointIsLitAsOneTurnedByItsNode) {
         const std::size_t centre = (static_cast<std::size_t>(kSize.y / 2) * kSize.x + kSize.x / 2) * 4;
         ASSERT_GT(rigid.rgba[centre + 3], 0) << "the turned square faces the camera";
         int worst = 0;
-        for (std::size_t i = 0; i < rigid.rgba.size(); ++i) worst = std::max(worst, std::abs(int(rigid.rgba[i]) - int(skinned.rgba[i])));
+        for (std::size_t i = 0; i < rigid.rgba.size(); ++i)
+            worst = std::max(worst, std::abs(int(rigid.rgba[i]) - int(skinned.rgba[i])));
         EXPECT_LE(worst, 2) << "shading level " << static_cast<int>(shading);
         if (HasFailure()) {
-            const std::string name = std::string(ARCOMP_TEST_OUTPUT) + "/skinned-shading-" + std::to_string(static_cast<int>(shading)) +
+            const std::string name = std::string(ARCOMP_TEST_OUTPUT) + "/skinned-shading-" +
+                                     std::to_string(static_cast<int>(shading)) +
                                      (GetParam() == GlRequest::Es3 ? "-es3" : "-gl33");
             writePng(name + "-rigid.png", rigid);
             writePng(name + "-skinned.png", skinned);
@@ -86,4 +88,4 @@ TEST_P(SkinnedShading, aSquareTurnedByItsJointIsLitAsOneTurnedByItsNode) {
 INSTANTIATE_TEST_SUITE_P(Apis, SkinnedShading, ::testing::Values(GlRequest::Gl33, GlRequest::Es3),
                          [](const auto& info) { return info.param == GlRequest::Gl33 ? "gl33" : "es3"; });
 
-} // namespace
+}  // namespace

@@ -102,7 +102,7 @@ void expectFlat(const Growth& g) {
     EXPECT_LE(g.rssBytesPerFrame, kRssLimitBytesPerFrame);
 }
 
-} // namespace
+}  // namespace
 
 TEST(SoakGuard, patternStationHoldsNoMoreMemoryFrameAfterFrame) {
     expectFlat(soak(loadStationConfig(fs::path(ARCOMP_SOURCE_DIR) / "tests/runtime/soak-pattern.yaml")));

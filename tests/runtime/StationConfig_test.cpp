@@ -9,14 +9,12 @@
 #include <gtest/gtest.h>
 
 using namespace arcomp;
-using arcomp::test::TempDir;
 using arcomp::test::configIssues;
 using arcomp::test::describe;
 using arcomp::test::hasIssue;
+using arcomp::test::TempDir;
 
-namespace {
-
-} // namespace
+namespace {}  // namespace
 
 TEST(StationConfig, readsAValidConfigWithRelativePaths) {
     TempDir dir;
@@ -63,10 +61,10 @@ render:
   shading: shiny
 )");
     const auto issues = configIssues(file);
-    EXPECT_TRUE(hasIssue(issues, 3, "does not exist", 14)) << describe(issues);          // missing file
-    EXPECT_TRUE(hasIssue(issues, 4, "unknown key", 7)) << describe(issues);              // unknown key
+    EXPECT_TRUE(hasIssue(issues, 3, "does not exist", 14)) << describe(issues);                // missing file
+    EXPECT_TRUE(hasIssue(issues, 4, "unknown key", 7)) << describe(issues);                    // unknown key
     EXPECT_TRUE(hasIssue(issues, 6, "expected a list of 3 numbers", 13)) << describe(issues);  // wrong type
-    EXPECT_TRUE(hasIssue(issues, 10, "out of range", 13)) << describe(issues);           // bad number
+    EXPECT_TRUE(hasIssue(issues, 10, "out of range", 13)) << describe(issues);                 // bad number
     EXPECT_TRUE(hasIssue(issues, 12, "is not one of unlit, flat, gouraud, phong", 12)) << describe(issues);
     EXPECT_EQ(issues.size(), 5u) << describe(issues);
 }

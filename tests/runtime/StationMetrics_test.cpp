@@ -6,10 +6,10 @@ namespace arcomp {
 
 TEST(StationMetrics, histogramBucketsAreCumulativeAndCountEveryFrame) {
     StationMetrics metrics;
-    metrics.recordFrame(4.0);    // <= 5 ms
-    metrics.recordFrame(15.0);   // <= 16.7 ms
-    metrics.recordFrame(400.0);  // <= 1 s
-    metrics.recordFrame(2500.0); // only +Inf
+    metrics.recordFrame(4.0);     // <= 5 ms
+    metrics.recordFrame(15.0);    // <= 16.7 ms
+    metrics.recordFrame(400.0);   // <= 1 s
+    metrics.recordFrame(2500.0);  // only +Inf
     const std::string text = metrics.prometheusText();
     EXPECT_NE(text.find("arcomp_frame_time_seconds_bucket{le=\"0.005\"} 1\n"), std::string::npos) << text;
     EXPECT_NE(text.find("arcomp_frame_time_seconds_bucket{le=\"0.0167\"} 2\n"), std::string::npos) << text;
@@ -58,4 +58,4 @@ TEST(StationMetrics, statusJsonSurvivesBytesThatAreNotUtf8) {
     EXPECT_EQ(json.back(), '}');
 }
 
-} // namespace arcomp
+}  // namespace arcomp

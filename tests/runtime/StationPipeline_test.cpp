@@ -4,10 +4,10 @@
 // ahead throws from its own frame(), and a hand-over passes on the frame
 // read ahead.
 
-#include "runtime/station/Station.hpp"
 #include "runtime/gl/GlContext.hpp"
-#include "video/sources/FrameGrabber.hpp"
+#include "runtime/station/Station.hpp"
 #include "video/pixels/VideoError.hpp"
+#include "video/sources/FrameGrabber.hpp"
 
 #include <gtest/gtest.h>
 
@@ -29,7 +29,8 @@ class NumberedFrames : public FrameGrabber {
 public:
     explicit NumberedFrames(int count) : count_(count) {}
     GrabResult grab() override {
-        if (next_ == count_) return {std::nullopt, {SourceStatus::Ended, "end after " + std::to_string(count_) + " frames"}};
+        if (next_ == count_)
+            return {std::nullopt, {SourceStatus::Ended, "end after " + std::to_string(count_) + " frames"}};
         Frame f{cv::Mat(48, 64, CV_8UC3, cv::Scalar::all(20 * next_))};
         f.timestamp = std::chrono::milliseconds(100 * next_ / 3);
         f.sequence = static_cast<std::uint64_t>(next_++);
@@ -65,7 +66,7 @@ private:
 // take rounding).
 int shownFrame(const Station& station) { return (station.compositedFrame().read().rgba[0] + 10) / 20; }
 
-} // namespace
+}  // namespace
 
 // frame() returns only once the next frame's capture and matte are done, so
 // a plate or person layer shared with the frame read ahead would hold that
@@ -120,8 +121,7 @@ TEST(Station, everyFrameIsReadAheadOnTheSameThreadForTheStationsLife) {
     cfg.file = "numbered.yaml";
     std::vector<pid_t> readers;
     Station station(cfg, StationInput::fromReplay(std::make_unique<NotedFrames>(30, readers), 30.0));
-    while (station.frame()) {
-    }
+    while (station.frame()) {}
     ASSERT_EQ(readers.size(), 31u) << "30 frames, then the read that finds the end";
     EXPECT_EQ(readers[0], ::gettid()) << "the first frame is read as the station starts";
     const std::set<pid_t> ahead(readers.begin() + 1, readers.end());

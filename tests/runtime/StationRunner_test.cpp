@@ -3,9 +3,9 @@
 // that another program holds, and reloading the config at a frame boundary
 // (good and bad configs).
 
-#include "runtime/gl/GlContext.hpp"
 #include "runtime/app/ShutdownSignals.hpp"
 #include "runtime/app/StationRunner.hpp"
+#include "runtime/gl/GlContext.hpp"
 #include "runtime/operator/StatusServer.hpp"
 #include "tests/support/TempDir.hpp"
 
@@ -23,7 +23,8 @@ class FailingCamera : public FrameGrabber {
 public:
     explicit FailingCamera(int frames) : left_(frames) {}
     GrabResult grab() override {
-        if (left_-- > 0) return {Frame{cv::Mat(120, 160, CV_8UC3, cv::Scalar(90, 90, 90))}, {SourceStatus::Streaming, ""}};
+        if (left_-- > 0)
+            return {Frame{cv::Mat(120, 160, CV_8UC3, cv::Scalar(90, 90, 90))}, {SourceStatus::Streaming, ""}};
         return {std::nullopt, {SourceStatus::Error, "/dev/video0: ENODEV while streaming"}};
     }
     std::string name() const override { return "front"; }
@@ -47,13 +48,14 @@ StationConfig withStatus(const fs::path& file) {
     return cfg;
 }
 
-} // namespace
+}  // namespace
 
 TEST(StationRunner, cameraFaultShowsInStatusAndMetrics) {
     auto ctx = HeadlessContext::create(GlRequest::Auto);
     test::TempDir dir;
-    StationRunner runner(withStatus(dir.write("station.yaml", kStation)), nullptr,
-                         [](const StationConfig&) { return StationInput::fromReplay(std::make_unique<FailingCamera>(3), 30.0); });
+    StationRunner runner(withStatus(dir.write("station.yaml", kStation)), nullptr, [](const StationConfig&) {
+        return StationInput::fromReplay(std::make_unique<FailingCamera>(3), 30.0);
+    });
     ASSERT_GT(runner.statusPort(), 0);
     httplib::Client client("127.0.0.1", runner.statusPort());
 
@@ -82,8 +84,9 @@ TEST(StationRunner, aStatusPortAlreadyInUseIsReportedAndFramesGoOnWithoutTheEndp
     StatusServer squatter(otherMetrics, {.bind = "127.0.0.1", .port = 0});
     StationConfig cfg = withStatus(dir.write("station.yaml", kStation));
     cfg.operation.status.port = squatter.port();
-    StationRunner runner(std::move(cfg), nullptr,
-                         [](const StationConfig&) { return StationInput::fromReplay(std::make_unique<FailingCamera>(4), 30.0); });
+    StationRunner runner(std::move(cfg), nullptr, [](const StationConfig&) {
+        return StationInput::fromReplay(std::make_unique<FailingCamera>(4), 30.0);
+    });
     EXPECT_EQ(runner.statusPort(), -1);
     while (runner.step()) {}
     EXPECT_EQ(runner.frames(), 4u);
@@ -104,7 +107,8 @@ TEST(StationRunner, reloadSwapsTheSceneAtAFrameBoundaryAndKeepsTheInput) {
     const auto centre = [&] {
         const Image image = runner.station().compositedFrame().read();
         const std::size_t i = (static_cast<std::size_t>(image.height / 2) * static_cast<std::size_t>(image.width) +
-                               static_cast<std::size_t>(image.width / 2)) * 4;
+                               static_cast<std::size_t>(image.width / 2)) *
+                              4;
         return glm::ivec3(image.rgba[i], image.rgba[i + 1], image.rgba[i + 2]);
     };
     const glm::ivec3 red = centre();
@@ -169,8 +173,9 @@ TEST(StationRunner, aModelTurnedToGarbageAtReloadIsSkippedAndReportedAndFramesGo
       color: [0.9, 0.1, 0.1, 1]
 camera: {eye: [0, 0, 0], target: [0, 0, -1]}
 )");
-    StationRunner runner(loadStationConfig(file), nullptr,
-                         [](const StationConfig&) { return StationInput::fromReplay(std::make_unique<FailingCamera>(100), 30.0); });
+    StationRunner runner(loadStationConfig(file), nullptr, [](const StationConfig&) {
+        return StationInput::fromReplay(std::make_unique<FailingCamera>(100), 30.0);
+    });
     ASSERT_TRUE(runner.step());
     EXPECT_GT(runner.station().stats().cgTriangles, 0u);
 
@@ -188,10 +193,14 @@ TEST(StationRunner, anOutputThatCannotBeWrittenIsCountedAndReportedWhileFramesGo
     test::TempDir dir;
     StationConfig cfg = loadStationConfig(dir.write("station.yaml", kStation));
     cfg.compositing.output.pngDir = dir.write("blocked", "a file where the output folder should be");
-    StationRunner runner(cfg, nullptr, [](const StationConfig&) { return StationInput::fromReplay(std::make_unique<FailingCamera>(5), 30.0); });
+    StationRunner runner(cfg, nullptr, [](const StationConfig&) {
+        return StationInput::fromReplay(std::make_unique<FailingCamera>(5), 30.0);
+    });
     while (runner.step()) {}
     EXPECT_EQ(runner.frames(), 5u);
     EXPECT_EQ(runner.outputFailures(), 5u);
-    EXPECT_NE(runner.station().lastOutputError().find("blocked"), std::string::npos) << runner.station().lastOutputError();
-    EXPECT_NE(runner.metrics().statusJson().find("output: cannot write"), std::string::npos) << runner.metrics().statusJson();
+    EXPECT_NE(runner.station().lastOutputError().find("blocked"), std::string::npos)
+        << runner.station().lastOutputError();
+    EXPECT_NE(runner.metrics().statusJson().find("output: cannot write"), std::string::npos)
+        << runner.metrics().statusJson();
 }

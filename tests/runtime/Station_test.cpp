@@ -46,7 +46,8 @@ cv::Mat bgrOf(const Image& img) {
 
 // The config's objects drawn by a plain Renderer: all of them shaded (the
 // reference CG), or one alone as a coverage mask.
-Image renderObjects(const StationConfig& cfg, const std::vector<std::size_t>& which, const View& view, Shading shading) {
+Image renderObjects(const StationConfig& cfg, const std::vector<std::size_t>& which, const View& view,
+                    Shading shading) {
     StationConfig some = cfg;
     some.objects.clear();
     for (std::size_t i : which) some.objects.push_back(cfg.objects[i]);
@@ -60,7 +61,8 @@ Image renderObjects(const StationConfig& cfg, const std::vector<std::size_t>& wh
     RenderTarget target(view.viewport);
     target.bind();
     Renderer renderer;
-    renderer.draw(scene, list, view, {.clearColor = glm::vec4(0.0f), .lightDirection = cfg.compositing.compositor.shadow.light});
+    renderer.draw(scene, list, view,
+                  {.clearColor = glm::vec4(0.0f), .lightDirection = cfg.compositing.compositor.shadow.light});
     return target.read();
 }
 
@@ -174,7 +176,8 @@ TEST(Station, vtestWalkersAreCutOnlyByObjectsNearerThanThemselves) {
         }
     }
     std::cout << "frames with a walker in front of / behind:";
-    for (const ObjectConfig& c : cfg.objects) std::cout << " " << c.name << " " << inFront[c.name] << "/" << behind[c.name];
+    for (const ObjectConfig& c : cfg.objects)
+        std::cout << " " << c.name << " " << inFront[c.name] << "/" << behind[c.name];
     std::cout << "\n";
     EXPECT_GE(checked, 20u);
     EXPECT_GT(shadowed, 150u * 1000u);  // the objects' shadows, every frame
@@ -220,7 +223,8 @@ StationConfig occluderConfig(HoldoutMesh holdout) {
 
 StationInput pattern(glm::ivec2 size) {
     return StationInput::fromReplay(
-        std::make_unique<TestPatternSource>(TestPatternOptions{.width = size.x, .height = size.y, .paced = false}), 30.0);
+        std::make_unique<TestPatternSource>(TestPatternOptions{.width = size.x, .height = size.y, .paced = false}),
+        30.0);
 }
 
 cv::Mat holdoutMask(Station& s) { return coverageOf(s.readHoldout()).clone(); }
@@ -297,7 +301,8 @@ std::vector<char> bytesOf(const fs::path& p) {
 
 TEST(Station, replayTwiceGivesIdenticalImages) {
     test::TempDir dir;
-    const std::string base = std::string(ARCOMP_BINARY) + " replay " + ARCOMP_SOURCE_DIR + "/configs/demo-replay.yaml --frames 12 --out ";
+    const std::string base =
+        std::string(ARCOMP_BINARY) + " replay " + ARCOMP_SOURCE_DIR + "/configs/demo-replay.yaml --frames 12 --out ";
     ASSERT_EQ(std::system((base + (dir.path() / "a").string() + " >/dev/null 2>&1").c_str()), 0);
     ASSERT_EQ(std::system((base + (dir.path() / "b").string() + " >/dev/null 2>&1").c_str()), 0);
     int compared = 0;
@@ -310,7 +315,7 @@ TEST(Station, replayTwiceGivesIdenticalImages) {
     EXPECT_EQ(compared, 12);
 }
 
-} // namespace
+}  // namespace
 
 // Config movers move their object by video time (deterministic in replay),
 // and an object with generated LOD draws a coarser level when small on screen.
@@ -402,7 +407,8 @@ TEST(Station, aRestartLoadsWhatItBakedFromTheCache) {
     cfg.objects.push_back(far);
     const auto files = [&](const char* extension) {
         std::size_t n = 0;
-        for (const fs::directory_entry& e : fs::directory_iterator(dir.path() / "cache")) n += e.path().extension() == extension;
+        for (const fs::directory_entry& e : fs::directory_iterator(dir.path() / "cache"))
+            n += e.path().extension() == extension;
         return n;
     };
     Station first(cfg, pattern({320, 240}));
@@ -422,7 +428,8 @@ TEST(Station, aRestartLoadsWhatItBakedFromTheCache) {
     EXPECT_EQ(second.lodBake().loaded, 1u);
     EXPECT_EQ(second.lodBake().baked, 0u);
     EXPECT_EQ(cv::countNonZero(holdoutMask(first) != holdoutMask(second)), 0);
-    EXPECT_EQ(cv::norm(bgrOf(first.compositedFrame().read()), bgrOf(second.compositedFrame().read()), cv::NORM_INF), 0.0);
+    EXPECT_EQ(cv::norm(bgrOf(first.compositedFrame().read()), bgrOf(second.compositedFrame().read()), cv::NORM_INF),
+              0.0);
 
     // Another region is another bake: the stale files are baked again. So
     // are levels of other ratios.
@@ -470,7 +477,6 @@ camera:
     EXPECT_NEAR(m.m01 / m.m00, (full.y + 0.5) / 2.0 - 0.5, 0.5);
 }
 
-
 namespace {
 
 // A studio-green floor scene with two people painted as flat cards standing
@@ -501,7 +507,7 @@ cv::Rect personCard(const CalibratedCamera& c, const glm::dvec3& floor) {
                     cv::Point(static_cast<int>(feet.x + halfWidth), static_cast<int>(feet.y) + 1));
 }
 
-} // namespace
+}  // namespace
 
 // With a calibrated camera each person stands at their own depth, from
 // where their feet meet the floor: a box between a near and a far person
@@ -551,8 +557,8 @@ camera:
         const std::size_t i = (static_cast<std::size_t>(p.y) * 640 + static_cast<std::size_t>(p.x)) * 4;
         return cv::Vec3b(out.rgba[i], out.rgba[i + 1], out.rgba[i + 2]);
     };
-    EXPECT_EQ(rgb(boxNear), cv::Vec3b(230, 0, 0));   // the near person over the box
-    const cv::Vec3b cut = rgb(boxFar);                // the box over the far person: blue, not magenta
+    EXPECT_EQ(rgb(boxNear), cv::Vec3b(230, 0, 0));  // the near person over the box
+    const cv::Vec3b cut = rgb(boxFar);              // the box over the far person: blue, not magenta
     EXPECT_GT(cut[2], cut[0]) << cut;
     EXPECT_LT(cut[0], 150) << cut;
 }
@@ -576,7 +582,8 @@ TEST(Station, anUnreadableEnvironmentAtStartIsAWarningAndTheNeutralOneLights) {
     const Image withBad = frameWith(bad, badWarnings);
     const Image withNeutral = frameWith({}, neutralWarnings);
     const auto mentions = [](const std::vector<std::string>& lines, const std::string& part) {
-        return std::any_of(lines.begin(), lines.end(), [&](const std::string& l) { return l.find(part) != std::string::npos; });
+        return std::any_of(lines.begin(), lines.end(),
+                           [&](const std::string& l) { return l.find(part) != std::string::npos; });
     };
     EXPECT_TRUE(mentions(badWarnings, "broken.hdr"));
     EXPECT_TRUE(mentions(badWarnings, "neutral environment"));

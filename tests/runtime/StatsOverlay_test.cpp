@@ -17,7 +17,7 @@ int warningPixels(const cv::Mat& rgba) {
     return n;
 }
 
-} // namespace
+}  // namespace
 
 TEST(StatsOverlay, framesOverTheTargetAreDrawnInTheWarningColour) {
     const CameraLine camera{"front", {SourceStatus::Streaming, ""}, 0};
@@ -37,7 +37,8 @@ TEST(StatsOverlay, lostCameraLineTurnsToTheWarningColour) {
     // Antialiased text: count pixels whose colour leans to the warning red.
     auto reddish = [](const cv::Mat& rgba) {
         int n = 0;
-        for (auto it = rgba.begin<cv::Vec4b>(); it != rgba.end<cv::Vec4b>(); ++it) n += (*it)[0] > 120 && (*it)[1] < 60 + (*it)[0] / 4;
+        for (auto it = rgba.begin<cv::Vec4b>(); it != rgba.end<cv::Vec4b>(); ++it)
+            n += (*it)[0] > 120 && (*it)[1] < 60 + (*it)[0] / 4;
         return n;
     };
     EXPECT_EQ(reddish(streaming.image()), 0);
@@ -49,7 +50,8 @@ TEST(StatsOverlay, imageIsPremultiplied) {
     FrameStats stats;
     stats.budget = BudgetStats{.targetMs = 16.7, .predictedMs = 15.0, .measuredMs = 17.0, .quality = 0.8};
     DrawList drawn;
-    drawn.items.push_back(DrawItem{.node = 0, .part = {}, .viewDistance = 1, .screenArea = 1, .level = 1, .shading = Shading::Flat});
+    drawn.items.push_back(
+        DrawItem{.node = 0, .part = {}, .viewDistance = 1, .screenArea = 1, .level = 1, .shading = Shading::Flat});
     overlay.add(stats, drawn, {"front", {SourceStatus::Stalled, "no frame for 2 s"}, 3}, 20.0, 16.7);
     const cv::Mat& rgba = overlay.image();
     ASSERT_EQ(rgba.type(), CV_8UC4);

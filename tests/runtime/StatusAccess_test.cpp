@@ -18,7 +18,8 @@ TEST(StatusAccess, loopbackIsAll127ButNotEveryInterface) {
 
 TEST(StatusAccess, theTokenIsTheFilesFirstLineTrimmed) {
     test::TempDir dir;
-    EXPECT_EQ(readBearerToken(dir.write("token", "  0123456789abcdef0123\n# second line ignored\n")), "0123456789abcdef0123");
+    EXPECT_EQ(readBearerToken(dir.write("token", "  0123456789abcdef0123\n# second line ignored\n")),
+              "0123456789abcdef0123");
 }
 
 TEST(StatusAccess, aMissingEmptyShortOrSpacedTokenIsRefusedNamingTheFile) {
@@ -51,4 +52,4 @@ TEST(StatusAccess, onlyTheWholeTokenAfterBearerMatches) {
     EXPECT_FALSE(bearerTokenMatches("Bearer ", token));
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -45,7 +45,8 @@ TEST(StatusServer, aBusyPortIsAnErrorThatNamesTheAddress) {
         StatusServer second(metrics, {.bind = "127.0.0.1", .port = first.port()});
         FAIL() << "a second server bound the same port";
     } catch (const std::runtime_error& e) {
-        EXPECT_NE(std::string(e.what()).find("127.0.0.1:" + std::to_string(first.port())), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("127.0.0.1:" + std::to_string(first.port())), std::string::npos)
+            << e.what();
     }
 }
 
@@ -62,7 +63,7 @@ bool closedByServer(const FileDescriptor& socket, std::chrono::milliseconds wait
 
 constexpr std::chrono::milliseconds kPatience{5000};  // generous: a loaded CI machine
 
-} // namespace
+}  // namespace
 
 TEST(StatusServer, aTokenFileMakesEveryRequestShowTheToken) {
     test::TempDir dir;
@@ -75,14 +76,14 @@ TEST(StatusServer, aTokenFileMakesEveryRequestShowTheToken) {
     EXPECT_NE(none.head.find("WWW-Authenticate: Bearer"), std::string::npos) << none.head;
     EXPECT_EQ(none.body.find("arcomp_"), std::string::npos) << none.body;
 
-    const HttpProbeReply wrong =
-        httpGet(server.port(), "/status", {.extraHeaders = "Authorization: Bearer " + token + "x\r\n", .timeout = kPatience});
+    const HttpProbeReply wrong = httpGet(
+        server.port(), "/status", {.extraHeaders = "Authorization: Bearer " + token + "x\r\n", .timeout = kPatience});
     EXPECT_EQ(wrong.status, 401) << wrong.error;
     // Unknown paths are not revealed either.
     EXPECT_EQ(httpGet(server.port(), "/nothing", {.timeout = kPatience}).status, 401);
 
-    const HttpProbeReply right =
-        httpGet(server.port(), "/metrics", {.extraHeaders = "Authorization: Bearer " + token + "\r\n", .timeout = kPatience});
+    const HttpProbeReply right = httpGet(
+        server.port(), "/metrics", {.extraHeaders = "Authorization: Bearer " + token + "\r\n", .timeout = kPatience});
     EXPECT_EQ(right.status, 200) << right.error;
     EXPECT_NE(right.body.find("arcomp_frame_time_seconds"), std::string::npos) << right.body;
     EXPECT_EQ(server.counters().unauthorized, 3u);
@@ -101,7 +102,8 @@ TEST(StatusServer, beyondLoopbackWithoutATokenFileItDoesNotStart) {
 
 TEST(StatusServer, idleConnectionsBeyondTheBoundsMakeRoomForAScrape) {
     StationMetrics metrics;
-    StatusServer server(metrics, {.port = 0, .limits = {.maxConnections = 8, .maxPerClient = 4, .requestTimeout = kPatience}});
+    StatusServer server(metrics,
+                        {.port = 0, .limits = {.maxConnections = 8, .maxPerClient = 4, .requestTimeout = kPatience}});
     // 40 idle connections from four addresses, 10 each: far past both bounds.
     std::vector<FileDescriptor> idle;
     for (int i = 0; i < 40; ++i) idle.push_back(connectLoopback(server.port(), "127.0.0." + std::to_string(2 + i % 4)));
@@ -126,7 +128,8 @@ TEST(StatusServer, idleConnectionsBeyondTheBoundsMakeRoomForAScrape) {
 
 TEST(StatusServer, aClientOverItsShareLosesItsOwnIdlestConnectionNotAnothers) {
     StationMetrics metrics;
-    StatusServer server(metrics, {.port = 0, .limits = {.maxConnections = 8, .maxPerClient = 2, .requestTimeout = kPatience}});
+    StatusServer server(metrics,
+                        {.port = 0, .limits = {.maxConnections = 8, .maxPerClient = 2, .requestTimeout = kPatience}});
     const FileDescriptor first = connectLoopback(server.port(), "127.0.0.2");
     const FileDescriptor other = connectLoopback(server.port(), "127.0.0.3");
     // A request on each in turn: the server has accepted a connection once it has answered on it.
@@ -207,4 +210,4 @@ TEST(StatusServer, garbageGetsA400AndOtherMethodsA405) {
     EXPECT_EQ(std::string(reply).substr(0, 12), "HTTP/1.1 400");
 }
 
-} // namespace arcomp
+}  // namespace arcomp

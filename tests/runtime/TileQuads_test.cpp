@@ -75,4 +75,4 @@ TEST(TileQuads, noOccupiedTileGivesNoQuad) {
     EXPECT_TRUE(quads.empty());
 }
 
-} // namespace
+}  // namespace

@@ -2,8 +2,8 @@
 // tests/CMakeLists.txt through xvfb-run) drawn by the same renderer.
 
 #include "graph/core/SelectPass.hpp"
-#include "runtime/render/Renderer.hpp"
 #include "runtime/gl/WindowContext.hpp"
+#include "runtime/render/Renderer.hpp"
 
 #include <gtest/gtest.h>
 
@@ -18,7 +18,8 @@ TEST(WindowContext, sameRendererDrawsIntoAWindowOnEachApi) {
         EXPECT_EQ(window->api(), request == GlRequest::Gl33 ? GlApiKind::Gl33 : GlApiKind::Es3);
         World world;
         Scene& scene = world.scene;
-        scene.addMesh(scene.root(), {scene.addGeometry(makeBox({2, 2, 2})), scene.addMaterial({.name = "red", .baseColor = {1, 0, 0, 1}})});
+        scene.addMesh(scene.root(), {scene.addGeometry(makeBox({2, 2, 2})),
+                                     scene.addMaterial({.name = "red", .baseColor = {1, 0, 0, 1}})});
         scene.update();
         const glm::ivec2 size = window->framebufferSize();
         ASSERT_GT(size.x, 0);

@@ -39,7 +39,7 @@ TEST(WorkerThread, finishWaitsForTheJobAndRethrowsWhatItThrewOnce) {
     worker.wait();  // waits, keeps the outcome
     EXPECT_TRUE(worker.busy());
     EXPECT_THROW(worker.finish(), std::runtime_error);
-    EXPECT_NO_THROW(worker.finish());  // nothing in hand any more
+    EXPECT_NO_THROW(worker.finish());   // nothing in hand any more
     worker.start([&] { result = 7; });  // the thread goes on after a job threw
     worker.finish();
     EXPECT_EQ(result, 7);

@@ -14,4 +14,4 @@ camera:
   target: [0, 0, -1]
 )";
 
-} // namespace arcomp::test
+}  // namespace arcomp::test

@@ -16,9 +16,9 @@
 #include <unistd.h>
 
 #include <array>
-#include <functional>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -71,7 +71,8 @@ inline ChildResult runForked(const std::function<int()>& body, ChildLimits limit
     ChildResult r;
     std::array<char, 4096> buffer;
     ssize_t n;
-    while ((n = ::read(fds[0], buffer.data(), buffer.size())) > 0) r.output.append(buffer.data(), static_cast<std::size_t>(n));
+    while ((n = ::read(fds[0], buffer.data(), buffer.size())) > 0)
+        r.output.append(buffer.data(), static_cast<std::size_t>(n));
     ::close(fds[0]);
     int status = 0;
     ::waitpid(pid, &status, 0);
@@ -93,4 +94,4 @@ inline ChildResult runChild(const std::vector<std::string>& argv, ChildLimits li
         limits);
 }
 
-} // namespace arcomp::test
+}  // namespace arcomp::test

@@ -28,7 +28,8 @@ inline std::vector<ConfigIssue> configIssues(const std::filesystem::path& file) 
 inline bool hasIssue(const std::vector<ConfigIssue>& issues, int line, const std::string& part,
                      std::optional<int> column = std::nullopt) {
     for (const ConfigIssue& i : issues)
-        if (i.line == line && (!column || i.column == *column) && i.message.find(part) != std::string::npos) return true;
+        if (i.line == line && (!column || i.column == *column) && i.message.find(part) != std::string::npos)
+            return true;
     return false;
 }
 
@@ -38,4 +39,4 @@ inline std::string describe(const std::vector<ConfigIssue>& issues) {
     return s;
 }
 
-} // namespace arcomp::test
+}  // namespace arcomp::test

@@ -50,10 +50,11 @@ struct GltfFile {
         w.nodes = GltfWriter::Json::parse(nodes);
         w.animations = GltfWriter::Json::parse(animations);
         w.skins = GltfWriter::Json::parse(skins);
-        GltfWriter::add(w.meshes, R"({"primitives": [{"attributes": {"POSITION": 0)" + attributes + R"(}, "indices": 1}]})");
+        GltfWriter::add(w.meshes,
+                        R"({"primitives": [{"attributes": {"POSITION": 0)" + attributes + R"(}, "indices": 1}]})");
         w.sceneNodes = {0};
         return w.text();
     }
 };
 
-} // namespace arcomp::test
+}  // namespace arcomp::test

@@ -17,7 +17,8 @@ namespace arcomp::test {
 
 // Calls `use` on every input kept under tests/fuzz-regressions/<target>/;
 // a folder with none fails the test.
-inline void eachRegressionInput(const std::string& target, const std::function<void(const std::filesystem::path&)>& use) {
+inline void eachRegressionInput(const std::string& target,
+                                const std::function<void(const std::filesystem::path&)>& use) {
     const std::filesystem::path dir = std::filesystem::path(ARCOMP_SOURCE_DIR) / "tests/fuzz-regressions" / target;
     int inputs = 0;
     if (std::filesystem::exists(dir))
@@ -41,4 +42,4 @@ void eachLoadsOrIsRefused(const std::string& target, const std::function<void(co
     });
 }
 
-} // namespace arcomp::test
+}  // namespace arcomp::test

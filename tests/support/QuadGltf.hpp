@@ -75,4 +75,4 @@ struct QuadGltf {
     }
 };
 
-} // namespace arcomp::test
+}  // namespace arcomp::test

@@ -33,4 +33,4 @@ private:
 
 inline std::filesystem::path sharedData() { return ARCOMP_SHARED_DATA; }
 
-} // namespace arcomp::test
+}  // namespace arcomp::test

@@ -14,8 +14,8 @@ TEST(ArBench, reportsLayeringCalibrationAndCostAndWritesTheStrip) {
     const auto r = arcomp::test::benchCommand("ar --frames 130 --out " + out.string(), false);
     ASSERT_EQ(r.code, 0) << r.out;
     const YAML::Node json = YAML::Load(arcomp::test::lastLine(r.out));
-    for (const char* key : {"frames", "wrong_layering_pct", "wrong_layering_pct_own_matte", "wrong_layering_pct_single_plane",
-                            "calibration", "added_ms_768x576"})
+    for (const char* key : {"frames", "wrong_layering_pct", "wrong_layering_pct_own_matte",
+                            "wrong_layering_pct_single_plane", "calibration", "added_ms_768x576"})
         EXPECT_TRUE(json[key].IsDefined()) << key << " is missing from " << r.out;
     for (const char* key : {"focal_err_pct", "principal_err_px", "rms_px", "height_err_pct", "tilt_err_deg"})
         EXPECT_TRUE(json["calibration"][key].IsDefined()) << key << " is missing from " << r.out;

@@ -32,7 +32,8 @@ struct Tally {
         ++tried;
         if (r.crashed() || r.code > 2) {
             ++crashed;
-            crashes.push_back(input + " (" + (r.exited ? "exit " + std::to_string(r.code) : "signal " + std::to_string(r.signal)) +
+            crashes.push_back(input + " (" +
+                              (r.exited ? "exit " + std::to_string(r.code) : "signal " + std::to_string(r.signal)) +
                               "):\n" + r.output.substr(r.output.size() > 3000 ? r.output.size() - 3000 : 0));
         } else if (r.code == 0) {
             ++accepted;
@@ -85,7 +86,9 @@ std::vector<std::pair<std::string, std::string>> brokenConfigs() {
         {"empty", ""},
         {"only-a-comment", "# nothing\n"},
         {"unclosed-flow", "scene: {objects: [\n"},
-        {"binary-junk", std::string("\x7f" "ELF\x02\x01\x01\0\0\0\xff\xfe", 12)},
+        {"binary-junk", std::string("\x7f"
+                                    "ELF\x02\x01\x01\0\0\0\xff\xfe",
+                                    12)},
         {"top-level-list", "- a\n- b\n"},
         {"top-level-scalar", "42\n"},
         {"tab-indent", "scene:\n\tobjects: []\n"},
@@ -109,7 +112,8 @@ std::vector<std::pair<std::string, std::string>> brokenConfigs() {
         {"grouping-bad", "grouping: {forest: 12}\n"},
         {"status-port-text", "operator: {status: {port: http}}\n"},
         {"alias-loop-ish", "a: &x [*x]\n"},
-        {"anchors-fan-out", "a: &a [1,1,1,1,1,1,1,1]\nb: &b [*a,*a,*a,*a,*a,*a,*a,*a]\nc: &c [*b,*b,*b,*b,*b,*b,*b,*b]\nd: [*c,*c,*c,*c]\n"},
+        {"anchors-fan-out", "a: &a [1,1,1,1,1,1,1,1]\nb: &b [*a,*a,*a,*a,*a,*a,*a,*a]\nc: &c "
+                            "[*b,*b,*b,*b,*b,*b,*b,*b]\nd: [*c,*c,*c,*c]\n"},
         {"deep-flow-nesting", "scene: " + deep + "\n"},
         {"deep-map-nesting", "scene: " + deepMap + "\n"},
         {"invalid-utf8", "scene:\n  objects:\n    - name: \"\xc3\x28\xa0\xa1\"\n      shape: box\n"},
@@ -118,7 +122,7 @@ std::vector<std::pair<std::string, std::string>> brokenConfigs() {
     };
 }
 
-} // namespace
+}  // namespace
 
 TEST(BadInputTally, noInputCrashesTheCli) {
     std::vector<std::pair<std::string, Tally>> rows;
@@ -158,7 +162,7 @@ TEST(BadInputTally, noInputCrashesTheCli) {
             fs::resize_file(copy, cut);
             damaged.push_back(copy);
         }
-        {   // Noise over the middle of the first 60 frames' bytes, and a file of noise.
+        {  // Noise over the middle of the first 60 frames' bytes, and a file of noise.
             const fs::path noisy = dir.path() / "vtest-noise-middle.avi";
             fs::copy_file(data + "vtest.avi", noisy);
             fs::resize_file(noisy, 500000);

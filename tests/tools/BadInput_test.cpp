@@ -29,7 +29,7 @@ BadInput caughtAsBadInput(const std::function<void()>& fail) {
     return BadInput("", "", "nothing caught");
 }
 
-} // namespace
+}  // namespace
 
 TEST(BadInput, readsSourceWhereReasonAndLeavesOutEmptyParts) {
     EXPECT_STREQ(BadInput("clips/a.avi", "frame 287 of 795", "decoder returned no image").what(),
@@ -62,7 +62,8 @@ TEST(BadInput, configErrorReadsAsItsFirstIssueAndListsThemAll) {
     EXPECT_EQ(e.source, "station.yaml");
     EXPECT_EQ(e.where, "line 12, column 5");
     EXPECT_EQ(e.reason, "expected a number (and 1 more)");
-    EXPECT_STREQ(e.what(), "2 errors in config\n  station.yaml:12:5: expected a number\n  station.yaml:14:3: unknown key 'x'");
+    EXPECT_STREQ(e.what(),
+                 "2 errors in config\n  station.yaml:12:5: expected a number\n  station.yaml:14:3: unknown key 'x'");
 
     const BadInput wholeFile = caughtAsBadInput([] { throw ConfigError({{"calib.yaml", 0, 0, "cannot be read"}}); });
     EXPECT_EQ(wholeFile.source, "calib.yaml");

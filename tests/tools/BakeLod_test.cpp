@@ -6,10 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/Shell.hpp"
 #include <cstdio>
 #include <filesystem>
 #include <string>
-#include "tests/support/Shell.hpp"
 
 namespace {
 
@@ -18,9 +18,7 @@ using arcomp::test::lastLine;
 // Only stdout: the JSON or summary the command prints.
 arcomp::test::ShellResult run(const std::string& args) { return arcomp::test::arcompCommand(args, false); }
 
-
-
-} // namespace
+}  // namespace
 
 TEST(BakeLod, bunnyLevelsWithinTenPercentAndFileReadsBack) {
     const std::string bunny = std::string(ARCOMP_SHARED_DATA) + "/meshes/bunny.obj";

@@ -28,7 +28,7 @@ fs::path writeOctahedron(const fs::path& folder) {
     return file;
 }
 
-} // namespace
+}  // namespace
 
 TEST(BakeSilhouette, writesAFileTheReaderAccepts) {
     const fs::path folder = fs::path(ARCOMP_TEST_OUTPUT) / "bake_silhouette";
@@ -46,7 +46,10 @@ TEST(BakeSilhouette, writesAFileTheReaderAccepts) {
 TEST(BakeSilhouette, badRegionsAreBadInput) {
     const fs::path folder = fs::path(ARCOMP_TEST_OUTPUT) / "bake_silhouette";
     const fs::path model = writeOctahedron(folder);
-    EXPECT_EQ(runArcomp("bake silhouette " + model.string() + " --regions 1,2,3 --out " + (folder / "x.sil").string()), 2);
-    EXPECT_EQ(runArcomp("bake silhouette " + model.string() + " --regions around:0 --out " + (folder / "x.sil").string()), 2);
-    EXPECT_EQ(runArcomp("bake silhouette " + (folder / "missing.obj").string() + " --out " + (folder / "x.sil").string()), 2);
+    EXPECT_EQ(runArcomp("bake silhouette " + model.string() + " --regions 1,2,3 --out " + (folder / "x.sil").string()),
+              2);
+    EXPECT_EQ(
+        runArcomp("bake silhouette " + model.string() + " --regions around:0 --out " + (folder / "x.sil").string()), 2);
+    EXPECT_EQ(
+        runArcomp("bake silhouette " + (folder / "missing.obj").string() + " --out " + (folder / "x.sil").string()), 2);
 }

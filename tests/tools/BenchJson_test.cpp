@@ -26,7 +26,7 @@ double parsed(const std::string& number) {
     return x;
 }
 
-} // namespace
+}  // namespace
 
 TEST(BenchJson, stringsWithQuotesBackslashesAndControlCharactersParseBackUnchanged) {
     const std::string nasty = "out/\"quoted\" dir\\sub\n\ttab\x01\x1f end \xc3\xa9";
@@ -85,8 +85,13 @@ TEST(BenchJson, fixedDecimalsRoundAsPrintfDoes) {
 
 TEST(BenchJson, integersBoolsAndNullAreWrittenExactly) {
     BenchJson j;
-    j.field("frames", 300).field("offset", -7).field("triangles", std::size_t{27864})
-        .field("drops", std::numeric_limits<std::uint64_t>::max()).field("ok", true).field("met", false).null("vtest");
+    j.field("frames", 300)
+        .field("offset", -7)
+        .field("triangles", std::size_t{27864})
+        .field("drops", std::numeric_limits<std::uint64_t>::max())
+        .field("ok", true)
+        .field("met", false)
+        .null("vtest");
     EXPECT_EQ(j.str(), "{\"frames\":300,\"offset\":-7,\"triangles\":27864,\"drops\":18446744073709551615,"
                        "\"ok\":true,\"met\":false,\"vtest\":null}");
 }
@@ -122,13 +127,13 @@ TEST(BenchJson, strCanBeAskedTwice) {
 
 TEST(BenchJson, misuseIsALogicError) {
     BenchJson j;
-    EXPECT_THROW(j.value(1), std::logic_error);           // an element in an object
-    EXPECT_THROW(j.end(), std::logic_error);              // the outer object closes in str()
+    EXPECT_THROW(j.value(1), std::logic_error);  // an element in an object
+    EXPECT_THROW(j.end(), std::logic_error);     // the outer object closes in str()
     j.beginArray("list");
-    EXPECT_THROW(j.field("key", 1), std::logic_error);    // a key in an array
-    EXPECT_THROW((void)j.str(), std::logic_error);        // the array still open
+    EXPECT_THROW(j.field("key", 1), std::logic_error);  // a key in an array
+    EXPECT_THROW((void)j.str(), std::logic_error);      // the array still open
     j.end();
     EXPECT_EQ(j.str(), "{\"list\":[]}");
 }
 
-} // namespace arcomp
+}  // namespace arcomp

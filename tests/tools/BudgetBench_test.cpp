@@ -3,12 +3,12 @@
 // is checked against its target here (speed belongs in the benchmark).
 #include <gtest/gtest.h>
 
+#include "tests/support/Shell.hpp"
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include "tests/support/Shell.hpp"
 
 namespace {
 
@@ -39,13 +39,13 @@ std::size_t lines(const std::filesystem::path& file) {
     return n;
 }
 
-} // namespace
+}  // namespace
 
 TEST(BudgetBench, tinyFlightWritesJsonWithTheIssuesFieldsAndCsvAndPlots) {
     const std::filesystem::path out = std::filesystem::path(ARCOMP_TEST_OUTPUT) / "bench-budget-tiny";
     std::filesystem::remove_all(out);
-    const auto r = run("budget --frames 8 --size 160x90 --mountains 6 --scene-frames 4 --target-ms 5 --out " +
-                         out.string());
+    const auto r =
+        run("budget --frames 8 --size 160x90 --mountains 6 --scene-frames 4 --target-ms 5 --out " + out.string());
     ASSERT_EQ(r.code, 0) << r.out;
     const std::string json = lastLine(r.out);
     ASSERT_EQ(json.front(), '{') << json;
@@ -87,8 +87,9 @@ TEST(BudgetBench, badOptionsAreBadInput) {
 
 TEST(BudgetBench, cpuTimerIsTheOneTheRunUsesAndReports) {
     const std::filesystem::path out = std::filesystem::path(ARCOMP_TEST_OUTPUT) / "bench-budget-cpu";
-    const auto r = run("budget --timer cpu --frames 4 --size 160x90 --mountains 4 --scene-frames 2 --target-ms 5 --out " +
-                       out.string());
+    const auto r =
+        run("budget --timer cpu --frames 4 --size 160x90 --mountains 4 --scene-frames 2 --target-ms 5 --out " +
+            out.string());
     ASSERT_EQ(r.code, 0) << r.out;
     EXPECT_NE(lastLine(r.out).find("\"timer\":\"process_cpu_glfinish\""), std::string::npos) << r.out;
 }

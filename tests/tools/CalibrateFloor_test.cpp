@@ -7,8 +7,8 @@
 #include "tests/support/Shell.hpp"
 #include "tools/bench/scenes/SyntheticCamera.hpp"
 
-#include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 
 #include <cstdio>
@@ -52,11 +52,12 @@ const double kZ = kHeight / std::tan(kTilt * CV_PI / 180.0);
 cv::Mat floorPhoto(const std::vector<FloorMarkerSpec>& markers, double size = 0.5) {
     const double f = 0.5 * 480 / std::tan(25.0 * CV_PI / 180.0);
     const SyntheticCamera camera({.size = {640, 480}, .fx = f, .fy = f, .cx = 319.5, .cy = 239.5, .distortion = {}});
-    const cv::Mat floor = floorWithMarkers(cv::aruco::getPredefinedDictionary(cv::aruco::DICT_4X4_50), markers, size, 3.0, 400);
+    const cv::Mat floor =
+        floorWithMarkers(cv::aruco::getPredefinedDictionary(cv::aruco::DICT_4X4_50), markers, size, 3.0, 400);
     return camera.photograph(floor, 1.0 / 400, {-1.5, -1.5}, floorToCamera(kX, kHeight, kZ, kTilt));
 }
 
-} // namespace
+}  // namespace
 
 TEST(CalibrateFloor, sixFloorMarksGiveBackTheCameraThatSawThem) {
     TempDir dir;
@@ -104,14 +105,15 @@ TEST_P(CalibrateFloorRefuses, withExitTwoAndTheReason) {
 
 INSTANTIATE_TEST_SUITE_P(
     BadInput, CalibrateFloorRefuses,
-    ::testing::Values(
-        FloorInputCase{"tooFew", "100,400=0,0;500,400=3,0;300,200=1,6", "--fovy-deg 60", "3 given; the floor needs at least 4"},
-        FloorInputCase{"collinear", "100,400=0,0;200,380=1,1;300,360=2,2;400,340=3,3", "--fovy-deg 60", "on one line"},
-        FloorInputCase{"malformed", "100,400=0,0;500,400:3,0;300,200=1,6;320,300=1,3", "--fovy-deg 60",
-                       "item 2 (\"500,400:3,0\") is not u,v=x,z"},
-        FloorInputCase{"outsideTheImage", "100,400=0,0;900,400=3,0;300,200=1,6;320,300=1,3", "--fovy-deg 60",
-                       "outside the 640x480 image"},
-        FloorInputCase{"noLens", "100,400=0,0;500,400=3,0;300,200=1,6;320,300=1,3", "", "give the lens"}),
+    ::testing::Values(FloorInputCase{"tooFew", "100,400=0,0;500,400=3,0;300,200=1,6", "--fovy-deg 60",
+                                     "3 given; the floor needs at least 4"},
+                      FloorInputCase{"collinear", "100,400=0,0;200,380=1,1;300,360=2,2;400,340=3,3", "--fovy-deg 60",
+                                     "on one line"},
+                      FloorInputCase{"malformed", "100,400=0,0;500,400:3,0;300,200=1,6;320,300=1,3", "--fovy-deg 60",
+                                     "item 2 (\"500,400:3,0\") is not u,v=x,z"},
+                      FloorInputCase{"outsideTheImage", "100,400=0,0;900,400=3,0;300,200=1,6;320,300=1,3",
+                                     "--fovy-deg 60", "outside the 640x480 image"},
+                      FloorInputCase{"noLens", "100,400=0,0;500,400=3,0;300,200=1,6;320,300=1,3", "", "give the lens"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(CalibrateFloor, anImageThatIsNotOneIsRefused) {
@@ -145,7 +147,8 @@ TEST(CalibrateFloor, aMarkerTooSmallInThePictureToPlaceTheCameraWellIsWarnedAbou
     TempDir dir;
     const auto image = dir.path() / "plate.png";
     ASSERT_TRUE(cv::imwrite(image.string(), floorPhoto({{7, 0.0, 0.0}}, 0.2)));
-    const auto r = calibrate(image.string() + " --fovy-deg 50 --marker 7 --marker-size 0.2 --out " + (dir.path() / "c.yaml").string());
+    const auto r = calibrate(image.string() + " --fovy-deg 50 --marker 7 --marker-size 0.2 --out " +
+                             (dir.path() / "c.yaml").string());
     EXPECT_EQ(r.code, 0) << r.out;
     EXPECT_NE(r.out.find("warning: marker 7 spans only"), std::string::npos) << r.out;
 }
@@ -163,7 +166,8 @@ TEST_P(CalibrateFloorByMarkerRefuses, withExitTwoAndTheReason) {
     TempDir dir;
     const auto image = dir.path() / "plate.png";
     ASSERT_TRUE(cv::imwrite(image.string(), floorPhoto({{3, 0.0, 0.0}, {12, 1.0, 0.6}})));
-    const auto r = calibrate(image.string() + " --fovy-deg 50 " + GetParam().args + " --out " + (dir.path() / "camera.yaml").string());
+    const auto r = calibrate(image.string() + " --fovy-deg 50 " + GetParam().args + " --out " +
+                             (dir.path() / "camera.yaml").string());
     EXPECT_EQ(r.code, 2) << r.out;
     EXPECT_NE(r.out.find(std::string("arcomp calibrate floor: ") + GetParam().expected), std::string::npos) << r.out;
     EXPECT_FALSE(std::filesystem::exists(dir.path() / "camera.yaml"));
@@ -171,18 +175,19 @@ TEST_P(CalibrateFloorByMarkerRefuses, withExitTwoAndTheReason) {
 
 INSTANTIATE_TEST_SUITE_P(
     BadInput, CalibrateFloorByMarkerRefuses,
-    ::testing::Values(
-        MarkerInputCase{"notInView", "--marker 7 --marker-size 0.5",
-                        "--marker 7: not in the image; it shows DICT_4X4_50 markers 3, 12"},
-        MarkerInputCase{"notInTheDictionary", "--marker 60 --marker-size 0.5", "--marker 60: DICT_4X4_50 has IDs 0 to 49"},
-        MarkerInputCase{"otherDictionary", "--marker 3 --marker-size 0.5 --dictionary DICT_6X6_250",
-                        "--marker 3: not in the image; it shows no DICT_6X6_250 markers at all"},
-        MarkerInputCase{"unknownDictionary", "--marker 3 --marker-size 0.5 --dictionary DICT_9X9_7",
-                        "--dictionary DICT_9X9_7: not an OpenCV ArUco dictionary"},
-        MarkerInputCase{"noSize", "--marker 3", "--marker 3: give its --marker-size"},
-        MarkerInputCase{"markerAndPoints", "--marker 3 --marker-size 0.5 --points \"1,1=0,0;2,2=1,0;3,1=1,1;1,3=0,1\"",
-                        "give the floor marks by --points or by --marker, not both"},
-        MarkerInputCase{"neither", "", "give the floor marks: --points"}),
+    ::testing::Values(MarkerInputCase{"notInView", "--marker 7 --marker-size 0.5",
+                                      "--marker 7: not in the image; it shows DICT_4X4_50 markers 3, 12"},
+                      MarkerInputCase{"notInTheDictionary", "--marker 60 --marker-size 0.5",
+                                      "--marker 60: DICT_4X4_50 has IDs 0 to 49"},
+                      MarkerInputCase{"otherDictionary", "--marker 3 --marker-size 0.5 --dictionary DICT_6X6_250",
+                                      "--marker 3: not in the image; it shows no DICT_6X6_250 markers at all"},
+                      MarkerInputCase{"unknownDictionary", "--marker 3 --marker-size 0.5 --dictionary DICT_9X9_7",
+                                      "--dictionary DICT_9X9_7: not an OpenCV ArUco dictionary"},
+                      MarkerInputCase{"noSize", "--marker 3", "--marker 3: give its --marker-size"},
+                      MarkerInputCase{"markerAndPoints",
+                                      "--marker 3 --marker-size 0.5 --points \"1,1=0,0;2,2=1,0;3,1=1,1;1,3=0,1\"",
+                                      "give the floor marks by --points or by --marker, not both"},
+                      MarkerInputCase{"neither", "", "give the floor marks: --points"}),
     [](const auto& info) { return std::string(info.param.name); });
 
-} // namespace arcomp
+}  // namespace arcomp

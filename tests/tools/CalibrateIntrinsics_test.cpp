@@ -43,10 +43,10 @@ struct BoardPose {
 // Twelve views, each tilted up to 35 degrees a different way, the board
 // filling a tenth of the picture or more.
 const BoardPose kPoses[] = {
-    {0, 0, 0, {0, 0, 0.42}},        {25, 0, 5, {0.03, 0.015, 0.40}},    {-25, 0, -5, {-0.03, -0.015, 0.40}},
-    {0, 25, 10, {0, 0, 0.45}},      {0, -25, -10, {0.02, 0.01, 0.38}},  {20, 20, 0, {-0.02, -0.01, 0.42}},
-    {-20, 20, 15, {0, 0, 0.40}},    {20, -20, -15, {0.03, 0.015, 0.44}}, {-20, -20, 30, {-0.03, -0.015, 0.40}},
-    {35, 10, 0, {0, 0, 0.42}},      {10, -35, 90, {0.01, 0.005, 0.40}}, {-30, -15, -30, {0, 0, 0.38}},
+    {0, 0, 0, {0, 0, 0.42}},     {25, 0, 5, {0.03, 0.015, 0.40}},     {-25, 0, -5, {-0.03, -0.015, 0.40}},
+    {0, 25, 10, {0, 0, 0.45}},   {0, -25, -10, {0.02, 0.01, 0.38}},   {20, 20, 0, {-0.02, -0.01, 0.42}},
+    {-20, 20, 15, {0, 0, 0.40}}, {20, -20, -15, {0.03, 0.015, 0.44}}, {-20, -20, 30, {-0.03, -0.015, 0.40}},
+    {35, 10, 0, {0, 0, 0.42}},   {10, -35, 90, {0.01, 0.005, 0.40}},  {-30, -15, -30, {0, 0, 0.38}},
 };
 
 // The board's plane to the camera for a pose; `farther` moves the board
@@ -112,14 +112,14 @@ void expectTwelveViewsGaveTheLens(const test::ShellResult& r, const std::filesys
     expectTheLens(lens);
 }
 
-} // namespace
+}  // namespace
 
 TEST(CalibrateIntrinsics, chessboardPhotosInAFolderGiveBackTheLens) {
     TempDir dir;
     writeChessboardPhotos(dir.path() / "views", 12);
     const auto lens = dir.path() / "lens.yaml";
-    const auto r = calibrate((dir.path() / "views").string() + " --board chessboard --cols 9 --rows 6 --square 0.025 --out " +
-                             lens.string());
+    const auto r = calibrate((dir.path() / "views").string() +
+                             " --board chessboard --cols 9 --rows 6 --square 0.025 --out " + lens.string());
     expectTwelveViewsGaveTheLens(r, lens);
 }
 
@@ -138,8 +138,9 @@ TEST(CalibrateIntrinsics, charucoVideoGivesBackTheLensFromEvenlySpreadFrames) {
         }
     }
     const auto lens = dir.path() / "lens.yaml";
-    const auto r = calibrate(video.string() + " --board charuco --cols 9 --rows 6 --square 0.025 --marker-length 0.018 " +
-                             "--max-views 12 --out " + lens.string());
+    const auto r =
+        calibrate(video.string() + " --board charuco --cols 9 --rows 6 --square 0.025 --marker-length 0.018 " +
+                  "--max-views 12 --out " + lens.string());
     expectTwelveViewsGaveTheLens(r, lens);
 }
 
@@ -149,17 +150,17 @@ TEST(CalibrateIntrinsics, theLensFileIsWhatCalibrateFloorTakesAsItsIntrinsics) {
     TempDir dir;
     writeChessboardPhotos(dir.path() / "views", 12);
     const auto lens = dir.path() / "lens.yaml";
-    const auto r = calibrate((dir.path() / "views").string() + " --board chessboard --cols 9 --rows 6 --square 0.025 --out " +
-                             lens.string());
+    const auto r = calibrate((dir.path() / "views").string() +
+                             " --board chessboard --cols 9 --rows 6 --square 0.025 --out " + lens.string());
     ASSERT_EQ(r.code, 0) << r.out;
 
     // 2.5 m up at the floor's origin's x, 45 degrees down; a 0.5 m marker at the origin.
     const double height = 2.5, tilt = 45.0, z = height / std::tan(tilt * CV_PI / 180.0);
-    const cv::Mat floor = floorWithMarkers(cv::aruco::getPredefinedDictionary(cv::aruco::DICT_4X4_50), {{5, 0.0, 0.0}}, 0.5,
-                                                 3.0, 400);
+    const cv::Mat floor =
+        floorWithMarkers(cv::aruco::getPredefinedDictionary(cv::aruco::DICT_4X4_50), {{5, 0.0, 0.0}}, 0.5, 3.0, 400);
     const auto plate = dir.path() / "plate.png";
-    ASSERT_TRUE(cv::imwrite(plate.string(), camera().photograph(floor, 1.0 / 400, {-1.5, -1.5},
-                                                                floorToCamera(0.0, height, z, tilt))));
+    ASSERT_TRUE(cv::imwrite(plate.string(),
+                            camera().photograph(floor, 1.0 / 400, {-1.5, -1.5}, floorToCamera(0.0, height, z, tilt))));
     const auto out = dir.path() / "camera.yaml";
     const auto f = test::arcompCommand("calibrate floor " + plate.string() + " --intrinsics " + lens.string() +
                                        " --marker 5 --marker-size 0.5 --out " + out.string());
@@ -189,7 +190,8 @@ TEST_P(CalibrateIntrinsicsRefuses, withExitTwoAndTheReason) {
     case Pictures::Blank:
         std::filesystem::create_directories(views);
         for (int i = 0; i < 6; ++i)
-            cv::imwrite((views / ("blank" + std::to_string(i) + ".png")).string(), cv::Mat(480, 640, CV_8UC3, cv::Scalar::all(128)));
+            cv::imwrite((views / ("blank" + std::to_string(i) + ".png")).string(),
+                        cv::Mat(480, 640, CV_8UC3, cv::Scalar::all(128)));
         break;
     case Pictures::ThreeViews: writeChessboardPhotos(views, 3); break;
     case Pictures::FarBoard: writeChessboardPhotos(views, 6, 2.8); break;
@@ -204,8 +206,9 @@ TEST_P(CalibrateIntrinsicsRefuses, withExitTwoAndTheReason) {
 INSTANTIATE_TEST_SUITE_P(
     BadInput, CalibrateIntrinsicsRefuses,
     ::testing::Values(
-        IntrinsicsInputCase{"noBoardInAnyFrame", Pictures::Blank, "--board chessboard --cols 9 --rows 6 --square 0.025",
-                            "no chessboard of 9 x 6 squares (8 x 5 inner corners) found in any of its 6 frames searched"},
+        IntrinsicsInputCase{
+            "noBoardInAnyFrame", Pictures::Blank, "--board chessboard --cols 9 --rows 6 --square 0.025",
+            "no chessboard of 9 x 6 squares (8 x 5 inner corners) found in any of its 6 frames searched"},
         IntrinsicsInputCase{"tooFewViews", Pictures::ThreeViews, "--board chessboard --cols 9 --rows 6 --square 0.025",
                             "the board is usable in 3 views of the 3 frames searched; the lens needs at least 5"},
         IntrinsicsInputCase{"boardTooSmall", Pictures::FarBoard, "--board chessboard --cols 9 --rows 6 --square 0.025",
@@ -227,4 +230,4 @@ INSTANTIATE_TEST_SUITE_P(
                             "/views: no such file, folder or camera"}),
     [](const auto& info) { return std::string(info.param.name); });
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -5,24 +5,25 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/Shell.hpp"
 #include <array>
 #include <cstdio>
 #include <sys/wait.h>
-#include "tests/support/Shell.hpp"
 
 using arcomp::test::TempDir;
 
 namespace {
 
-arcomp::test::ShellResult check(const std::filesystem::path& config) { return arcomp::test::arcompCommand("check " + config.string()); }
+arcomp::test::ShellResult check(const std::filesystem::path& config) {
+    return arcomp::test::arcompCommand("check " + config.string());
+}
 
-
-
-} // namespace
+}  // namespace
 
 TEST(CheckCommand, acceptsEveryShippedConfig) {
     std::size_t configs = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(ARCOMP_SOURCE_DIR) / "configs")) {
+    for (const auto& entry :
+         std::filesystem::directory_iterator(std::filesystem::path(ARCOMP_SOURCE_DIR) / "configs")) {
         if (entry.path().extension() != ".yaml") continue;
         ++configs;
         const auto r = check(entry.path());
@@ -55,21 +56,24 @@ INSTANTIATE_TEST_SUITE_P(
                         "station.yaml:4:7: scene.objects[0].colour: unknown key; expected one of color,"},
         ConfigErrorCase{"wrongType", "scene:\n  objects:\n    - shape: box\n      position: forward\n",
                         "station.yaml:4:17: scene.objects[0].position"},
-        ConfigErrorCase{"missingFile", "scene:\n  objects:\n    - model: statue.glb\n",
-                        "statue.glb' does not exist"},
-        ConfigErrorCase{"missingEnvironment", "scene:\n  objects:\n    - shape: box\nrender:\n  environment: studio.hdr\n",
+        ConfigErrorCase{"missingFile", "scene:\n  objects:\n    - model: statue.glb\n", "statue.glb' does not exist"},
+        ConfigErrorCase{"missingEnvironment",
+                        "scene:\n  objects:\n    - shape: box\nrender:\n  environment: studio.hdr\n",
                         "studio.hdr: environment file does not exist"},
         ConfigErrorCase{"missingFilePlace", "scene:\n  objects:\n    - model: statue.glb\n",
                         "station.yaml:3:14: scene.objects[0].model: file '"},
         ConfigErrorCase{"numberOutOfRange", "scene:\n  objects:\n    - shape: box\nstatus:\n  port: 99999\n",
                         "station.yaml:5:9: status.port: 99999 is out of range; expected 1 to 65535"},
-        ConfigErrorCase{"statusBeyondLoopbackWithoutAToken", "status:\n  port: 9464\n  bind: 0.0.0.0\n",
-                        "station.yaml:2:3: status.bind: 0.0.0.0 is beyond loopback, so the endpoint needs status.token_file"},
-        ConfigErrorCase{"cameraCalibrationMissing", "scene:\n  objects:\n    - shape: box\ncamera:\n  calibration: cam.yaml\n",
+        ConfigErrorCase{
+            "statusBeyondLoopbackWithoutAToken", "status:\n  port: 9464\n  bind: 0.0.0.0\n",
+            "station.yaml:2:3: status.bind: 0.0.0.0 is beyond loopback, so the endpoint needs status.token_file"},
+        ConfigErrorCase{"cameraCalibrationMissing",
+                        "scene:\n  objects:\n    - shape: box\ncamera:\n  calibration: cam.yaml\n",
                         "camera.calibration: file '"},
-        ConfigErrorCase{"cameraCalibrationAndEye",
-                        "scene:\n  objects:\n    - shape: box\ncamera:\n  calibration: station.yaml\n  eye: [0, 1, 5]\n",
-                        "camera.eye: not used with camera.calibration"},
+        ConfigErrorCase{
+            "cameraCalibrationAndEye",
+            "scene:\n  objects:\n    - shape: box\ncamera:\n  calibration: station.yaml\n  eye: [0, 1, 5]\n",
+            "camera.eye: not used with camera.calibration"},
         ConfigErrorCase{"statusTokenFileMissing", "status:\n  port: 9464\n  bind: 0.0.0.0\n  token_file: token.txt\n",
                         "status.token_file: file '"}),
     [](const auto& info) { return std::string(info.param.name); });
@@ -77,11 +81,13 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(CheckCommand, aStatusEndpointBeyondLoopbackNeedsAUsableTokenFile) {
     TempDir dir;
     const auto config = dir.write(
-        "station.yaml", "scene:\n  objects:\n    - shape: box\nstatus:\n  port: 9464\n  bind: 0.0.0.0\n  token_file: token.txt\n");
+        "station.yaml",
+        "scene:\n  objects:\n    - shape: box\nstatus:\n  port: 9464\n  bind: 0.0.0.0\n  token_file: token.txt\n");
     dir.write("token.txt", "hunter2\n");
     auto r = check(config);
     EXPECT_EQ(r.code, 2) << r.out;
-    EXPECT_NE(r.out.find("status.token_file: " + (dir.path() / "token.txt").string() + ": line 1: the status token is 7 characters"),
+    EXPECT_NE(r.out.find("status.token_file: " + (dir.path() / "token.txt").string() +
+                         ": line 1: the status token is 7 characters"),
               std::string::npos)
         << r.out;
     dir.write("token.txt", "9f86d081884c7d659a2feaa0c55ad015\n");
@@ -93,8 +99,8 @@ TEST(CheckCommand, aStatusEndpointBeyondLoopbackNeedsAUsableTokenFile) {
 
 TEST(CheckCommand, everyErrorIsListedAtOnce) {
     TempDir dir;
-    const auto file = dir.write("station.yaml",
-                                "scene:\n  objects:\n    - shape: cone\nrender:\n  shading: glossy\nlog:\n  level: loud\n");
+    const auto file = dir.write(
+        "station.yaml", "scene:\n  objects:\n    - shape: cone\nrender:\n  shading: glossy\nlog:\n  level: loud\n");
     const auto r = check(file);
     EXPECT_EQ(r.code, 2) << r.out;
     EXPECT_NE(r.out.find("3 errors"), std::string::npos) << r.out;
@@ -109,10 +115,12 @@ TEST(CheckCommand, readsTheEnvironmentFileItNames) {
     TempDir dir;
     const auto written = arcomp::test::arcompCommand("environment --out " + (dir.path() / "neutral.hdr").string());
     ASSERT_EQ(written.code, 0) << written.out;
-    const auto good = check(dir.write("good.yaml", "scene:\n  objects:\n    - shape: box\nrender:\n  environment: neutral.hdr\n"));
+    const auto good =
+        check(dir.write("good.yaml", "scene:\n  objects:\n    - shape: box\nrender:\n  environment: neutral.hdr\n"));
     EXPECT_EQ(good.code, 0) << good.out;
     dir.write("notes.hdr", "these are notes, not light");
-    const auto bad = check(dir.write("bad.yaml", "scene:\n  objects:\n    - shape: box\nrender:\n  environment: notes.hdr\n"));
+    const auto bad =
+        check(dir.write("bad.yaml", "scene:\n  objects:\n    - shape: box\nrender:\n  environment: notes.hdr\n"));
     EXPECT_EQ(bad.code, 2) << bad.out;
     EXPECT_NE(bad.out.find("notes.hdr: cannot decode the environment"), std::string::npos) << bad.out;
 }

@@ -6,10 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/Shell.hpp"
 #include <array>
 #include <cstdio>
 #include <sys/wait.h>
-#include "tests/support/Shell.hpp"
 
 using arcomp::test::arcompCommand;
 using arcomp::test::benchCommand;
@@ -20,9 +20,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-
-
-
 fs::path bunny() { return arcomp::test::sharedData() / "meshes/bunny.obj"; }
 
 double coverage(const arcomp::Image& img) {
@@ -31,15 +28,16 @@ double coverage(const arcomp::Image& img) {
     return static_cast<double>(covered) / static_cast<double>(img.width * img.height);
 }
 
-} // namespace
+}  // namespace
 
 TEST(Cli, renderWritesTheBunnyAndShadingChangesTheImage) {
     if (!fs::exists(bunny())) GTEST_SKIP() << "shared test data is absent";
     TempDir dir;
-    const ShellResult phong = arcompCommand("render " + bunny().string() + " --out " + (dir.path() / "p.png").string() + " --size 640x480");
+    const ShellResult phong =
+        arcompCommand("render " + bunny().string() + " --out " + (dir.path() / "p.png").string() + " --size 640x480");
     ASSERT_EQ(phong.code, 0) << phong.out;
     const ShellResult flat = arcompCommand("render " + bunny().string() + " --out " + (dir.path() / "f.png").string() +
-                               " --size 640x480 --shading flat");
+                                           " --size 640x480 --shading flat");
     ASSERT_EQ(flat.code, 0) << flat.out;
     const arcomp::Image p = arcomp::readPng(dir.path() / "p.png");
     const arcomp::Image f = arcomp::readPng(dir.path() / "f.png");
@@ -53,8 +51,10 @@ TEST(Cli, renderWritesTheBunnyAndShadingChangesTheImage) {
 TEST(Cli, renderWithEsAndDesktopGlGivesMatchingImages) {
     if (!fs::exists(bunny())) GTEST_SKIP() << "shared test data is absent";
     TempDir dir;
-    ASSERT_EQ(arcompCommand("render " + bunny().string() + " --gl gl33 --out " + (dir.path() / "gl.png").string()).code, 0);
-    ASSERT_EQ(arcompCommand("render " + bunny().string() + " --gl es3 --out " + (dir.path() / "es.png").string()).code, 0);
+    ASSERT_EQ(arcompCommand("render " + bunny().string() + " --gl gl33 --out " + (dir.path() / "gl.png").string()).code,
+              0);
+    ASSERT_EQ(arcompCommand("render " + bunny().string() + " --gl es3 --out " + (dir.path() / "es.png").string()).code,
+              0);
     const arcomp::Image gl = arcomp::readPng(dir.path() / "gl.png");
     const arcomp::Image es = arcomp::readPng(dir.path() / "es.png");
     double diff = 0;
@@ -70,8 +70,8 @@ TEST(Cli, badInputExitsTwoWithTheReason) {
     const ShellResult garbage = arcompCommand("inspect " + dir.write("junk.gltf", "not json").string());
     EXPECT_EQ(garbage.code, 2);
     EXPECT_NE(garbage.out.find("junk.gltf"), std::string::npos) << garbage.out;
-    const ShellResult size = arcompCommand("render " + dir.write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").string() +
-                               " --out x.png --size 0x10");
+    const ShellResult size = arcompCommand(
+        "render " + dir.write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").string() + " --out x.png --size 0x10");
     EXPECT_EQ(size.code, 2);
     EXPECT_NE(size.out.find("--size '0x10'"), std::string::npos) << size.out;
     EXPECT_EQ(arcompCommand("render").code, 2);  // usage

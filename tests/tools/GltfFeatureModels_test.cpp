@@ -25,8 +25,8 @@ YAML::Node document(const std::string& name) { return YAML::Load(featureModelGlt
 TEST(GltfFeatureModels, everyFeatureOfTheIssueHasAModel) {
     std::set<std::string> names;
     for (const FeatureModel& m : featureModels()) EXPECT_TRUE(names.insert(m.name).second) << m.name << " twice";
-    for (const char* name : {"emissive", "emissive-unlit", "normal-map", "alpha-mask", "alpha-blend", "texture-transform",
-                             "metal-rough", "vertex-colors", "animated-node", "skinned-bend"})
+    for (const char* name : {"emissive", "emissive-unlit", "normal-map", "alpha-mask", "alpha-blend",
+                             "texture-transform", "metal-rough", "vertex-colors", "animated-node", "skinned-bend"})
         EXPECT_TRUE(names.count(name)) << name;
 }
 
@@ -90,7 +90,8 @@ TEST(GltfFeatureModels, materialsAreTheFeature) {
     EXPECT_FALSE(emissive[0].unlit);
 
     bool unlitLamp = false;
-    for (const Material& m : materials("emissive-unlit")) unlitLamp = unlitLamp || (m.unlit && m.baseColor == glm::vec4(0, 0, 0, 1));
+    for (const Material& m : materials("emissive-unlit"))
+        unlitLamp = unlitLamp || (m.unlit && m.baseColor == glm::vec4(0, 0, 0, 1));
     EXPECT_TRUE(unlitLamp);
 }
 
@@ -104,16 +105,19 @@ TEST(GltfFeatureModels, documentsCarryWhatTheLoaderDoesNotReadYet) {
     EXPECT_FALSE(normal["meshes"][0]["primitives"][0]["attributes"]["TANGENT"].IsDefined())
         << "tangents are left for the viewer to generate";
 
-    const YAML::Node transform = document("texture-transform")["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]
-                                                              ["extensions"]["KHR_texture_transform"];
-    EXPECT_EQ(transform["scale"][0].as<float>(), transform["scale"][1].as<float>()) << "three.js orders a non-uniform scale differently";
+    const YAML::Node transform =
+        document("texture-transform")["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]
+                                     ["KHR_texture_transform"];
+    EXPECT_EQ(transform["scale"][0].as<float>(), transform["scale"][1].as<float>())
+        << "three.js orders a non-uniform scale differently";
     EXPECT_NE(transform["rotation"].as<float>(), 0.0f);
 
     const YAML::Node sweep = document("metal-rough");
     ASSERT_EQ(sweep["materials"].size(), 10u);
     std::set<std::pair<float, float>> grid;
     for (const auto& m : sweep["materials"])
-        grid.insert({m["pbrMetallicRoughness"]["metallicFactor"].as<float>(), m["pbrMetallicRoughness"]["roughnessFactor"].as<float>()});
+        grid.insert({m["pbrMetallicRoughness"]["metallicFactor"].as<float>(),
+                     m["pbrMetallicRoughness"]["roughnessFactor"].as<float>()});
     EXPECT_EQ(grid.size(), 10u);
     EXPECT_TRUE(grid.count({1.0f, 0.0f}) && grid.count({0.0f, 1.0f}));
 
@@ -122,7 +126,8 @@ TEST(GltfFeatureModels, documentsCarryWhatTheLoaderDoesNotReadYet) {
     for (const char* name : {"animated-node", "skinned-bend"}) {
         const YAML::Node animation = document(name)["animations"][0];
         ASSERT_TRUE(animation.IsDefined()) << name;
-        for (const auto& sampler : animation["samplers"]) EXPECT_EQ(sampler["interpolation"].as<std::string>(), "LINEAR");
+        for (const auto& sampler : animation["samplers"])
+            EXPECT_EQ(sampler["interpolation"].as<std::string>(), "LINEAR");
     }
     const YAML::Node skinned = document("skinned-bend");
     EXPECT_EQ(skinned["skins"][0]["joints"].size(), 2u);
@@ -142,5 +147,5 @@ TEST(GltfFeatureModels, animatedModelsAreShownAtTimesWithinTheirClip) {
 
 TEST(GltfFeatureModels, unknownNameThrows) { EXPECT_THROW(featureModelGltf("teapot"), std::invalid_argument); }
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

@@ -18,9 +18,10 @@ using test::TempDir;
 
 TEST(GltfReferenceBench, withoutChromiumSkipsAndSucceeds) {
     TempDir dir;
-    const auto r = benchCommand("gltf-reference --out " + dir.path().string() +
-                                     " --models emissive,skinned-bend --chromium " + (dir.path() / "no-chromium").string(),
-                                 false);
+    const auto r =
+        benchCommand("gltf-reference --out " + dir.path().string() + " --models emissive,skinned-bend --chromium " +
+                         (dir.path() / "no-chromium").string(),
+                     false);
     ASSERT_EQ(r.code, 0) << r.out;
     const YAML::Node line = YAML::Load(lastLine(r.out));
     EXPECT_EQ(line["bench"].as<std::string>(), "gltf-reference");
@@ -40,5 +41,5 @@ TEST(GltfReferenceBench, unknownModelIsBadInput) {
     EXPECT_NE(r.out.find("vertex-colors"), std::string::npos) << "the error lists the models there are: " << r.out;
 }
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

@@ -21,7 +21,7 @@ std::string lineStarting(const std::string& text, const std::string& start) {
     return text.substr(at + 1, end == std::string::npos ? std::string::npos : end - at - 1);
 }
 
-} // namespace
+}  // namespace
 
 TEST(InspectMaterials, eachDrawnMaterialListsItsFeatures) {
     QuadGltf q;

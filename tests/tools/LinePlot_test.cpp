@@ -35,4 +35,4 @@ TEST(LinePlot, refusesSeriesOfUnequalLength) {
     EXPECT_THROW(plot.addSeries("bad", {0, 1}, {0}), std::invalid_argument);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -31,15 +31,17 @@ std::string animatedModel(bool skinned) {
         return R"({"input": )" + std::to_string(input) + R"(, "output": )" + std::to_string(output) +
                R"(, "interpolation": ")" + interpolation + "\"}";
     };
-    f.animations = R"([{"name": "wave", "samplers": [)" + s(twoSeconds, move, "LINEAR") + ", " + s(twoSeconds, grow, "STEP") +
+    f.animations = R"([{"name": "wave", "samplers": [)" + s(twoSeconds, move, "LINEAR") + ", " +
+                   s(twoSeconds, grow, "STEP") +
                    R"(], "channels": [{"sampler": 0, "target": {"node": 0, "path": "translation"}},
                                       {"sampler": 1, "target": {"node": 0, "path": "scale"}}]},
-                      {"name": "turn", "samplers": [)" + s(oneSecond, spin, "CUBICSPLINE") +
+                      {"name": "turn", "samplers": [)" +
+                   s(oneSecond, spin, "CUBICSPLINE") +
                    R"(], "channels": [{"sampler": 0, "target": {"node": 1, "path": "rotation"}}]}])";
     return f.json();
 }
 
-} // namespace
+}  // namespace
 
 TEST(ModelAnimationCommands, inspectListsAnimationsAndSkins) {
     TempDir dir;
@@ -48,8 +50,10 @@ TEST(ModelAnimationCommands, inspectListsAnimationsAndSkins) {
     EXPECT_NE(r.out.find("animation 0 'wave': 2 channels, 2 s, LINEAR, STEP\n"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("animation 1 'turn': 1 channel, 1 s, CUBICSPLINE\n"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("skin 'rig': 1 joints"), std::string::npos) << r.out;
-    EXPECT_NE(r.out.find("warning: /meshes/0/primitives/0: skinned by skin 0 'rig' (/nodes/0) but has no skin influences"),
-              std::string::npos) << r.out;
+    EXPECT_NE(
+        r.out.find("warning: /meshes/0/primitives/0: skinned by skin 0 'rig' (/nodes/0) but has no skin influences"),
+        std::string::npos)
+        << r.out;
 }
 
 TEST(ModelAnimationCommands, checkFailsOnAnAnimationTheModelLacks) {

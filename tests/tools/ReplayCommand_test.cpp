@@ -10,11 +10,11 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 
+#include "tests/support/BoxStation.hpp"
+#include "tests/support/Shell.hpp"
 #include <array>
 #include <cstdio>
 #include <sys/wait.h>
-#include "tests/support/Shell.hpp"
-#include "tests/support/BoxStation.hpp"
 
 using arcomp::test::TempDir;
 namespace fs = std::filesystem;
@@ -22,8 +22,6 @@ namespace fs = std::filesystem;
 namespace {
 
 arcomp::test::ShellResult replay(const std::string& args) { return arcomp::test::arcompCommand("replay " + args); }
-
-
 
 const char* const kScene = arcomp::test::kBoxStation;
 
@@ -33,7 +31,7 @@ std::size_t pngsIn(const fs::path& dir) {
     return n;
 }
 
-} // namespace
+}  // namespace
 
 TEST(ReplayCommand, wholeFileIsReplayedFrameForFrame) {
     TempDir dir;
@@ -81,8 +79,8 @@ TEST(ReplayCommand, videoOutputIsAFinishedPlayableFile) {
     TempDir dir;
     const auto cfg = dir.write("s.yaml", std::string(kScene) + "video:\n  source: pattern\n  size: [160, 120]\n");
     const fs::path movie = dir.path() / "movie.avi";
-    const auto r = replay(cfg.string() + " --frames 6 --out " + (dir.path() / "out").string() +
-                                   " --video-out " + movie.string());
+    const auto r =
+        replay(cfg.string() + " --frames 6 --out " + (dir.path() / "out").string() + " --video-out " + movie.string());
     ASSERT_EQ(r.code, 0) << r.out;
     arcomp::FileSource file({.path = movie.string()});
     EXPECT_EQ(file.info().width, 160);
@@ -93,10 +91,10 @@ TEST(ReplayCommand, videoOutputIsAFinishedPlayableFile) {
 
 TEST(ReplayCommand, matteIsWrittenForInspectionWhenAsked) {
     TempDir dir;
-    const auto cfg = dir.write("s.yaml", std::string(kScene) +
-                                             "video:\n  source: pattern\n  size: [160, 120]\n"
-                                             "matte:\n  kind: background\n  background:\n    method: clean_plate\n"
-                                             "output:\n  matte_dir: mattes\n");
+    const auto cfg =
+        dir.write("s.yaml", std::string(kScene) + "video:\n  source: pattern\n  size: [160, 120]\n"
+                                                  "matte:\n  kind: background\n  background:\n    method: clean_plate\n"
+                                                  "output:\n  matte_dir: mattes\n");
     const auto r = replay(cfg.string() + " --frames 4 --out " + (dir.path() / "out").string());
     ASSERT_EQ(r.code, 0) << r.out;
     EXPECT_EQ(pngsIn(dir.path() / "mattes"), 4u);
@@ -115,7 +113,8 @@ TEST(ReplayCommand, demoOnEs3MatchesGl33) {
     for (const char* api : {"gl33", "es3"}) {
         const auto r = replay(demo + " --gl " + api + " --frames 8 --out " + (dir.path() / api).string());
         ASSERT_EQ(r.code, 0) << r.out;
-        EXPECT_NE(r.out.find(std::string(", ") + api + ", "), std::string::npos) << "ran on the API asked for: " << r.out;
+        EXPECT_NE(r.out.find(std::string(", ") + api + ", "), std::string::npos)
+            << "ran on the API asked for: " << r.out;
     }
     for (int i = 0; i < 8; ++i) {
         char name[32];

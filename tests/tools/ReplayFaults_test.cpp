@@ -52,7 +52,7 @@ Written writtenIn(const fs::path& dir) {
     return w;
 }
 
-} // namespace
+}  // namespace
 
 // RLIMIT_FSIZE stands in for a full disk (a tmpfs needs root): small PNGs
 // still fit, large ones fail with EFBIG part-way through their write.

@@ -7,6 +7,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>
 
+#include "tests/support/Shell.hpp"
 #include <array>
 #include <chrono>
 #include <csignal>
@@ -15,7 +16,6 @@
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
-#include "tests/support/Shell.hpp"
 
 using arcomp::test::TempDir;
 namespace fs = std::filesystem;
@@ -24,8 +24,7 @@ namespace {
 
 const fs::path kDemo = fs::path(ARCOMP_SOURCE_DIR) / "configs/demo-replay.yaml";
 
-
-} // namespace
+}  // namespace
 
 TEST(RunCommand, showsTheCompositedStationInAWindowAndExitsAfterItsFrames) {
     if (arcomp::test::shell("command -v Xvfb").code != 0) GTEST_SKIP() << "Xvfb not installed";
@@ -33,16 +32,17 @@ TEST(RunCommand, showsTheCompositedStationInAWindowAndExitsAfterItsFrames) {
     const fs::path shot = dir.path() / "shot.png";
     // with-xvfb takes a free display once the server is ready, so concurrent
     // window tests do not race for one.
-    const auto [code, out] = arcomp::test::shell(std::string(ARCOMP_SOURCE_DIR) + "/scripts/with-xvfb " + std::string(ARCOMP_BINARY) +
-                                                 " run " + kDemo.string() + " --windowed --size 640x480 --frames 30 --overlay --screenshot " +
-                                                 shot.string());
+    const auto [code, out] = arcomp::test::shell(
+        std::string(ARCOMP_SOURCE_DIR) + "/scripts/with-xvfb " + std::string(ARCOMP_BINARY) + " run " + kDemo.string() +
+        " --windowed --size 640x480 --frames 30 --overlay --screenshot " + shot.string());
     ASSERT_EQ(code, 0) << out;
     const cv::Mat image = cv::imread(shot.string());
     ASSERT_FALSE(image.empty()) << out;
     EXPECT_EQ(image.size(), cv::Size(640, 480));
     // Not blank: a composited frame has many distinct colours.
     std::set<int> colours;
-    for (auto it = image.begin<cv::Vec3b>(); it != image.end<cv::Vec3b>(); ++it) colours.insert((*it)[0] << 16 | (*it)[1] << 8 | (*it)[2]);
+    for (auto it = image.begin<cv::Vec3b>(); it != image.end<cv::Vec3b>(); ++it)
+        colours.insert((*it)[0] << 16 | (*it)[1] << 8 | (*it)[2]);
     EXPECT_GT(colours.size(), 500u);
 }
 
@@ -53,12 +53,13 @@ TEST(RunCommand, sigtermDuringReplayLeavesAPlayableVideoToTheLastFrame) {
     ASSERT_GE(child, 0);
     if (child == 0) {
         // The pattern replay runs for 2000 frames unless stopped.
-        const std::string config = dir.write("station.yaml",
-                                             "scene:\n  objects:\n    - shape: box\n      position: [0, 0, -4]\n"
-                                             "camera: {eye: [0, 0, 0], target: [0, 0, -1]}\n"
-                                             "video: {source: pattern, size: [320, 240]}\n").string();
-        execl(ARCOMP_BINARY, ARCOMP_BINARY, "replay", config.c_str(), "--out", (dir.path() / "frames").c_str(), "--frames",
-              "2000", "--video-out", video.c_str(), static_cast<char*>(nullptr));
+        const std::string config =
+            dir.write("station.yaml", "scene:\n  objects:\n    - shape: box\n      position: [0, 0, -4]\n"
+                                      "camera: {eye: [0, 0, 0], target: [0, 0, -1]}\n"
+                                      "video: {source: pattern, size: [320, 240]}\n")
+                .string();
+        execl(ARCOMP_BINARY, ARCOMP_BINARY, "replay", config.c_str(), "--out", (dir.path() / "frames").c_str(),
+              "--frames", "2000", "--video-out", video.c_str(), static_cast<char*>(nullptr));
         _exit(127);
     }
     // Stop it once a few frames are written.

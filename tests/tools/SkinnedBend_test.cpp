@@ -8,9 +8,9 @@
 #include "graph/core/SelectPass.hpp"
 #include "graph/io/ModelLoader.hpp"
 #include "runtime/gl/GlContext.hpp"
-#include "runtime/station/ImageFile.hpp"
 #include "runtime/gl/RenderTarget.hpp"
 #include "runtime/render/Renderer.hpp"
+#include "runtime/station/ImageFile.hpp"
 
 #include "../support/TempDir.hpp"
 
@@ -69,7 +69,8 @@ Image draw(World& world, GlRequest api) {
 
 int channelDifference(const Image& a, const Image& b, std::size_t pixel) {
     int d = 0;
-    for (std::size_t c = 0; c < 4; ++c) d = std::max(d, std::abs(int(a.rgba[pixel * 4 + c]) - int(b.rgba[pixel * 4 + c])));
+    for (std::size_t c = 0; c < 4; ++c)
+        d = std::max(d, std::abs(int(a.rgba[pixel * 4 + c]) - int(b.rgba[pixel * 4 + c])));
     return d;
 }
 
@@ -83,7 +84,9 @@ class SkinnedBend : public ::testing::TestWithParam<GlRequest> {
 protected:
     void saveOnFailure(const Image& img, const std::string& name) const {
         if (HasFailure())
-            writePng(std::string(ARCOMP_TEST_OUTPUT) + "/skinned-bend-" + name + (GetParam() == GlRequest::Es3 ? "-es3" : "-gl33") + ".png", img);
+            writePng(std::string(ARCOMP_TEST_OUTPUT) + "/skinned-bend-" + name +
+                         (GetParam() == GlRequest::Es3 ? "-es3" : "-gl33") + ".png",
+                     img);
     }
 };
 
@@ -98,7 +101,8 @@ TEST_P(SkinnedBend, atTimeZeroItIsTheBindPoseAndAtOneSecondOnlyTheUpperHalfHasMo
         const Scene& s = skinned.world.scene;
         const MeshPart& part = s.meshPart(skinned.mesh);
         const NodeId place = rigid.scene.addTransform(rigid.scene.root(), s.world(skinned.mesh));
-        rigid.scene.addMesh(place, {rigid.scene.addGeometry(s.geometry(part.geometry)), rigid.scene.addMaterial(s.material(part.material))});
+        rigid.scene.addMesh(place, {rigid.scene.addGeometry(s.geometry(part.geometry)),
+                                    rigid.scene.addMaterial(s.material(part.material))});
         rigid.scene.update();
     }
     const Image bind = draw(rigid, GetParam());
@@ -155,11 +159,12 @@ TEST(SkinnedBendBound, theWorldBoundCoversThePosedMeshAtEverySampledTime) {
         for (const glm::vec3& p : skinPositions(g, scene.jointMatrices(part.skin))) {
             const glm::vec3 w = glm::vec3(scene.world(b.mesh) * glm::vec4(p, 1.0f));
             ASSERT_LE(glm::length(w - bound.center), bound.radius + 1e-4f) << "at t = " << t;
-            leavesBindBox |= glm::any(glm::lessThan(p, g.box.min - 1e-3f)) || glm::any(glm::greaterThan(p, g.box.max + 1e-3f));
+            leavesBindBox |=
+                glm::any(glm::lessThan(p, g.box.min - 1e-3f)) || glm::any(glm::greaterThan(p, g.box.max + 1e-3f));
         }
     }
     EXPECT_TRUE(leavesBindBox) << "the bend never leaves the bind pose's box: this test shows nothing";
 }
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

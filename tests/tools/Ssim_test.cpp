@@ -95,5 +95,5 @@ TEST(Ssim, mismatchedImagesThrow) {
     EXPECT_THROW(ssim(tiny, tiny), std::invalid_argument);
 }
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

@@ -34,7 +34,8 @@ TEST(Stats, percentileInterpolatesBetweenTheClosestRanks) {
     EXPECT_DOUBLE_EQ(percentile(v, 95), 95.0);
     EXPECT_DOUBLE_EQ(percentile(std::vector<double>{0.0, 10.0}, 95), 9.5);
     EXPECT_DOUBLE_EQ(percentile(std::vector<double>{1.0, 2.0, 3.0, 4.0, 5.0}, 25), 2.0);
-    EXPECT_DOUBLE_EQ(percentile(std::vector<double>{1.0, 2.0, 3.0, 4.0}, 50), median(std::vector<double>{1.0, 2.0, 3.0, 4.0}));
+    EXPECT_DOUBLE_EQ(percentile(std::vector<double>{1.0, 2.0, 3.0, 4.0}, 50),
+                     median(std::vector<double>{1.0, 2.0, 3.0, 4.0}));
 }
 
 TEST(Stats, noSamplesHaveNoMedianAndBenchJsonWritesNull) {
@@ -53,4 +54,4 @@ TEST(Stats, percentileOutsideZeroToHundredIsRefused) {
     EXPECT_THROW(percentile(v, std::nan("")), std::invalid_argument);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

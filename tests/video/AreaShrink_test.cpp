@@ -22,12 +22,12 @@ void expectSameAsOpenCv(const cv::Mat& frame, double scale) {
         << frame.cols << "x" << frame.rows << " at " << scale;
 }
 
-} // namespace
+}  // namespace
 
 TEST(AreaShrink, quarterScaleMatchesOpenCvOnRandomFrames) {
     cv::RNG rng(4);
-    for (const cv::Size size : {cv::Size(1920, 1080), cv::Size(4, 4), cv::Size(8, 12), cv::Size(20, 8), cv::Size(44, 16),
-                                cv::Size(100, 28)}) {
+    for (const cv::Size size : {cv::Size(1920, 1080), cv::Size(4, 4), cv::Size(8, 12), cv::Size(20, 8),
+                                cv::Size(44, 16), cv::Size(100, 28)}) {
         cv::Mat frame(size, CV_8UC3);
         rng.fill(frame, cv::RNG::UNIFORM, 0, 256);
         expectSameAsOpenCv(frame, 0.25);
@@ -41,14 +41,16 @@ TEST(AreaShrink, halfWayMeansRoundToEvenAsOpenCvDoes) {
     for (int by = 0; by < 4; ++by)
         for (int bx = 0; bx < 16; ++bx)
             for (int c = 0; c < 3; ++c)
-                frame.at<cv::Vec3b>(4 * by + c, 4 * bx + by)[c] = static_cast<std::uint8_t>(16 * ((bx + by + c) % 16) + 8);
+                frame.at<cv::Vec3b>(4 * by + c, 4 * bx + by)[c] =
+                    static_cast<std::uint8_t>(16 * ((bx + by + c) % 16) + 8);
     cv::Mat small;
     shrinkByArea(frame, 0.25, small);
     for (int by = 0; by < 4; ++by)
         for (int bx = 0; bx < 16; ++bx)
             for (int c = 0; c < 3; ++c) {
                 const int q = (bx + by + c) % 16;
-                EXPECT_EQ(small.at<cv::Vec3b>(by, bx)[c], q + (q & 1)) << "block " << bx << ", " << by << " channel " << c;
+                EXPECT_EQ(small.at<cv::Vec3b>(by, bx)[c], q + (q & 1))
+                    << "block " << bx << ", " << by << " channel " << c;
             }
     expectSameAsOpenCv(frame, 0.25);
 }

@@ -98,5 +98,5 @@ TEST(BackgroundMatte, outputIsPremultiplied) {
         }
 }
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

@@ -17,7 +17,7 @@ fs::path writeConfig(const fs::path& file, const std::string& video) {
     return file;
 }
 
-} // namespace
+}  // namespace
 
 TEST(CapturePlateCommand, writesTheMeanOfTheSourcesFrames) {
     if (!fs::exists(ARCOMP_BINARY)) GTEST_SKIP() << "arcomp not built";

@@ -9,7 +9,8 @@ using namespace arcomp;
 
 TEST(CaptureThread, slowConsumerSeesNewestFramesAndCountsDrops) {
     CaptureThread src("pattern", [] {
-        return std::make_unique<TestPatternSource>(TestPatternOptions{.width = 32, .height = 32, .fps = 1000, .paced = false});
+        return std::make_unique<TestPatternSource>(
+            TestPatternOptions{.width = 32, .height = 32, .fps = 1000, .paced = false});
     });
     src.open();
     std::uint64_t lastSeq = 0;
@@ -26,6 +27,5 @@ TEST(CaptureThread, slowConsumerSeesNewestFramesAndCountsDrops) {
     }
     src.close();
     EXPECT_EQ(got, 3);
-    EXPECT_GT(src.drops(), 0u); // the producer outran the consumer: stale frames dropped, not queued
+    EXPECT_GT(src.drops(), 0u);  // the producer outran the consumer: stale frames dropped, not queued
 }
-

@@ -79,5 +79,5 @@ TEST(CdnetSequence, opensBusStation) {
     EXPECT_EQ(seq.roi.size(), cv::Size(360, 240));
 }
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

@@ -94,5 +94,5 @@ TEST(ChromaKeyMatte, alphaRampIsSmoothBetweenSimilarityAndSmoothness) {
     EXPECT_EQ(chromaKeyAlpha(0.25f, 0.1f, 0.1f), 1.0f);
 }
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

@@ -1,8 +1,8 @@
 #include "video/matte/ConsensusMatte.hpp"
 
-#include "video/matte/BackgroundMatte.hpp"
-#include "tools/bench/scenes/CdnetSequence.hpp"
 #include "tools/bench/report/MatteScore.hpp"
+#include "tools/bench/scenes/CdnetSequence.hpp"
+#include "video/matte/BackgroundMatte.hpp"
 
 #include "video/pixels/VideoError.hpp"
 
@@ -269,5 +269,5 @@ TEST(ConsensusMatte, badSettingsAndAMissingPlateAreRefused) {
     }
 }
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

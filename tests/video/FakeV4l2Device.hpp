@@ -6,9 +6,9 @@
 // by-id link.
 
 #include "video/pixels/PixelFormat.hpp"
+#include "video/pixels/YuvConversion.hpp"
 #include "video/sources/TestPatternSource.hpp"
 #include "video/sources/V4l2Device.hpp"
-#include "video/pixels/YuvConversion.hpp"
 
 #include <opencv2/imgcodecs.hpp>
 
@@ -33,9 +33,9 @@ public:
     std::string node = "/dev/video0";
     bool present = true;
     std::vector<std::uint32_t> offered{V4L2_PIX_FMT_YUYV, V4L2_PIX_FMT_MJPEG};
-    int nativeWidth = 640, nativeHeight = 480; // S_FMT snaps every request to this size
+    int nativeWidth = 640, nativeHeight = 480;  // S_FMT snaps every request to this size
     YuvEncoding encoding{YuvMatrix::Bt601, YuvRange::Limited};
-    std::deque<FakeEvent> script; // empty: every poll delivers a frame
+    std::deque<FakeEvent> script;  // empty: every poll delivers a frame
     std::uint32_t negotiated = 0;
     int opens = 0, closes = 0, maps = 0, unmaps = 0;
     bool streaming = false;
@@ -128,12 +128,13 @@ public:
             auto* f = static_cast<v4l2_format*>(arg);
             bool known = false;
             for (std::uint32_t o : offered) known |= o == f->fmt.pix.pixelformat;
-            if (!known) f->fmt.pix.pixelformat = offered.front(); // drivers substitute, as the spec allows
+            if (!known) f->fmt.pix.pixelformat = offered.front();  // drivers substitute, as the spec allows
             negotiated = f->fmt.pix.pixelformat;
             f->fmt.pix.width = static_cast<std::uint32_t>(nativeWidth);
             f->fmt.pix.height = static_cast<std::uint32_t>(nativeHeight);
-            f->fmt.pix.bytesperline = negotiated == V4L2_PIX_FMT_YUYV ? nativeWidth * 2
-                                      : negotiated == V4L2_PIX_FMT_NV12 ? nativeWidth : 0;
+            f->fmt.pix.bytesperline = negotiated == V4L2_PIX_FMT_YUYV   ? nativeWidth * 2
+                                      : negotiated == V4L2_PIX_FMT_NV12 ? nativeWidth
+                                                                        : 0;
             return 0;
         }
         case VIDIOC_S_PARM: return 0;
@@ -163,7 +164,7 @@ public:
         return TestPatternSource({.width = nativeWidth, .height = nativeHeight, .fps = 30, .paced = false}).render(k);
     }
 
-    static constexpr std::size_t kStride = 4 << 20; // room for any fake frame
+    static constexpr std::size_t kStride = 4 << 20;  // room for any fake frame
 
 private:
     static int fail(int e) {
@@ -187,9 +188,12 @@ private:
         std::vector<std::uint8_t>& mem = buffers_[index];
         const cv::Mat img = scene(produced_);
         std::vector<std::uint8_t> bytes;
-        if (negotiated == V4L2_PIX_FMT_YUYV) bytes = bgrToYuyv(img, encoding);
-        else if (negotiated == V4L2_PIX_FMT_NV12) bytes = bgrToNv12(img, encoding);
-        else cv::imencode(".jpg", img, bytes, {cv::IMWRITE_JPEG_QUALITY, 95});
+        if (negotiated == V4L2_PIX_FMT_YUYV)
+            bytes = bgrToYuyv(img, encoding);
+        else if (negotiated == V4L2_PIX_FMT_NV12)
+            bytes = bgrToNv12(img, encoding);
+        else
+            cv::imencode(".jpg", img, bytes, {cv::IMWRITE_JPEG_QUALITY, 95});
         std::memcpy(mem.data(), bytes.data(), bytes.size());
         b.index = index;
         b.bytesused = static_cast<std::uint32_t>(bytes.size());
@@ -205,4 +209,4 @@ private:
     std::uint64_t produced_ = 0;
 };
 
-} // namespace arcomp::test
+}  // namespace arcomp::test

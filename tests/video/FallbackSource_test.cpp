@@ -26,7 +26,7 @@ Frame frameOf(std::uint64_t seq, std::uint8_t grey) {
     return {cv::Mat(8, 8, CV_8UC3, cv::Scalar::all(grey)), {}, std::chrono::steady_clock::now(), seq, PixelFormat::Bgr};
 }
 
-} // namespace
+}  // namespace
 
 TEST(FallbackSource, showsStillImageWhileLostAndSwitchesBack) {
     auto owned = std::make_unique<ScriptedSource>();
@@ -42,7 +42,7 @@ TEST(FallbackSource, showsStillImageWhileLostAndSwitchesBack) {
     EXPECT_EQ(still->image.at<cv::Vec3b>(0, 0)[0], 77);
     EXPECT_TRUE(src.showingFallback());
     EXPECT_NE(src.lastSwitchReason().find("/dev/video0 unplugged"), std::string::npos) << src.lastSwitchReason();
-    EXPECT_FALSE(src.newest()); // the still is handed over once
+    EXPECT_FALSE(src.newest());  // the still is handed over once
 
     cam->current = {SourceStatus::Streaming, {}};
     cam->next = frameOf(1, 20);
@@ -94,4 +94,3 @@ TEST(OpenSource, missingFileWithPatternFallbackShowsPattern) {
     EXPECT_NE(src->state().reason.find("does not exist"), std::string::npos) << src->state().reason;
     EXPECT_TRUE(dynamic_cast<FallbackSource&>(*src).showingFallback());
 }
-

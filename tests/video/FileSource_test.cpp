@@ -1,5 +1,5 @@
-#include "video/sources/FileSource.hpp"
 #include "video/pixels/VideoError.hpp"
+#include "video/sources/FileSource.hpp"
 
 #include "tests/support/TempDir.hpp"
 
@@ -18,7 +18,7 @@ namespace {
 const std::string kData = "/usr/share/doc/opencv-doc/examples/data/";
 const std::string kVtest = kData + "vtest.avi";
 
-#define REQUIRE_OPENCV_DOC()                                                          \
+#define REQUIRE_OPENCV_DOC()                                                                                           \
     if (!fs::exists(kVtest)) GTEST_SKIP() << kVtest << " absent (Debian opencv-doc)"
 
 fs::path truncatedCopy(const fs::path& folder, std::uintmax_t bytes) {
@@ -39,7 +39,7 @@ std::string errorOf(const std::function<void()>& f) {
     return {};
 }
 
-} // namespace
+}  // namespace
 
 TEST(FileSource, readsVtestInfoAndFirstFrame) {
     REQUIRE_OPENCV_DOC();
@@ -65,7 +65,7 @@ TEST(FileSource, pullModeIsBitIdenticalAcrossRunsAndSeeksAreFrameExact) {
     for (int i = 0; i < 12; ++i) firstRun.push_back(a.next()->image);
     FileSource b({.path = kVtest});
     for (int i = 0; i < 12; ++i) EXPECT_EQ(cv::norm(b.next()->image, firstRun[i], cv::NORM_INF), 0.0) << "frame " << i;
-    EXPECT_GT(cv::norm(firstRun[0], firstRun[11], cv::NORM_L1), 0.0); // people move: frames differ
+    EXPECT_GT(cv::norm(firstRun[0], firstRun[11], cv::NORM_L1), 0.0);  // people move: frames differ
     a.seek(7);
     std::optional<Frame> seven = a.next();
     ASSERT_TRUE(seven);
@@ -142,7 +142,7 @@ TEST(FileSource, truncatedFileStopsWithFileAndFrameNamed) {
     } catch (const VideoError& e) {
         msg = e.what();
     }
-    EXPECT_GT(good, 100); // everything before the cut was delivered
+    EXPECT_GT(good, 100);  // everything before the cut was delivered
     EXPECT_LT(good, 795);
     EXPECT_NE(msg.find(cut.string()), std::string::npos) << msg;
     EXPECT_NE(msg.find("frame " + std::to_string(good) + " of 795"), std::string::npos) << msg;
@@ -170,13 +170,12 @@ TEST(FileSource, damagedMiddleIsSkippedAndLaterFramesStillCome) {
     {
         std::fstream f(bad, std::ios::in | std::ios::out | std::ios::binary);
         f.seekp(3'000'000);
-        cv::RNG rng(7); // fixed seed: the same damage every run
+        cv::RNG rng(7);  // fixed seed: the same damage every run
         for (int i = 0; i < 300'000; ++i) f.put(static_cast<char>(rng.uniform(0, 256)));
     }
     FileSource stop({.path = bad.string()});
     EXPECT_FALSE(errorOf([&] {
-                     while (stop.next()) {
-                     }
+                     while (stop.next()) {}
                  }).empty());
     FileSource skip({.path = bad.string(), .onDamage = OnDamage::Skip});
     std::uint64_t lastSequence = 0;

@@ -1,21 +1,19 @@
 // Runs the built `arcomp inspect-video`; skips when the executable has not been built.
 #include <gtest/gtest.h>
 
+#include "tests/support/Shell.hpp"
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <string>
-#include "tests/support/Shell.hpp"
 
 namespace {
-
-
 
 arcomp::test::ShellResult run(const std::string& args) { return arcomp::test::arcompCommand("inspect-video " + args); }
 
 const std::string kVtest = "/usr/share/doc/opencv-doc/examples/data/vtest.avi";
 
-} // namespace
+}  // namespace
 
 TEST(InspectVideoCommand, listsCodecSizeRateAndFrameCountOfAFile) {
     if (!std::filesystem::exists(ARCOMP_BINARY)) GTEST_SKIP() << "arcomp not built";

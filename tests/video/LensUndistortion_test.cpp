@@ -31,9 +31,10 @@ TEST(LensUndistortion, aDotMovesFromWhereTheLensPutItToWhereThePinholeWould) {
 }
 
 TEST(LensUndistortion, aFrameOfAnotherSizeIsAnError) {
-    LensUndistortion lens(cv::Matx33d(500, 0, 320, 0, 500, 240, 0, 0, 1), cv::Vec<double, 5>(-0.1, 0, 0, 0, 0), {640, 480});
+    LensUndistortion lens(cv::Matx33d(500, 0, 320, 0, 500, 240, 0, 0, 1), cv::Vec<double, 5>(-0.1, 0, 0, 0, 0),
+                          {640, 480});
     cv::Mat small(240, 320, CV_8UC3, cv::Scalar::all(0));
     EXPECT_THROW(lens.apply(small), std::invalid_argument);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -14,5 +14,5 @@ TEST(LibcameraSource, reportsDisconnectedWhenNoCameraIsListed) {
     EXPECT_FALSE(r.frame);
     EXPECT_EQ(r.state.status, SourceStatus::Disconnected);
     EXPECT_NE(r.state.reason.find("no camera"), std::string::npos) << r.state.reason;
-    EXPECT_EQ(cam.grab().state.status, SourceStatus::Disconnected); // and keeps looking, without crashing
+    EXPECT_EQ(cam.grab().state.status, SourceStatus::Disconnected);  // and keeps looking, without crashing
 }

@@ -40,7 +40,8 @@ TEST(MaskFolderMatte, eachFrameTakesItsOwnMaskInOrder) {
 
 TEST(MaskFolderMatte, aMaskOfAnotherSizeIsRefusedWithBothSizes) {
     test::TempDir dir;
-    ASSERT_TRUE(cv::imwrite(MaskFolderMatte::maskFile(dir.path(), 0).string(), cv::Mat(4, 6, CV_8UC1, cv::Scalar(255))));
+    ASSERT_TRUE(
+        cv::imwrite(MaskFolderMatte::maskFile(dir.path(), 0).string(), cv::Mat(4, 6, CV_8UC1, cv::Scalar(255))));
     MaskFolderMatte matte({.folder = dir.path()});
     cv::Mat person;
     try {

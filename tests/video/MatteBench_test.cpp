@@ -42,7 +42,7 @@ fs::path writeSequence(const arcomp::test::TempDir& folder) {
     return dir;
 }
 
-} // namespace
+}  // namespace
 
 TEST(MatteBench, scoresEveryMethodAndItsPeersAsOneJsonLine) {
     if (!fs::exists(ARCOMP_BINARY)) GTEST_SKIP() << "arcomp not built";
@@ -53,7 +53,8 @@ TEST(MatteBench, scoresEveryMethodAndItsPeersAsOneJsonLine) {
     const std::string json = arcomp::test::lastLine(r.out);
     EXPECT_EQ(json.rfind("{\"bench\":\"matte\"", 0), 0u) << json;
     EXPECT_NE(json.find("\"default\":\"consensus\""), std::string::npos) << json;
-    for (const char* name : {"consensus", "mog2", "knn", "cnt", "clean_plate", "opencv_mog2", "opencv_knn", "bgsegm_gsoc"})
+    for (const char* name :
+         {"consensus", "mog2", "knn", "cnt", "clean_plate", "opencv_mog2", "opencv_knn", "bgsegm_gsoc"})
         EXPECT_NE(json.find(std::string("\"name\":\"") + name + "\""), std::string::npos) << name;
     EXPECT_NE(json.find("\"peer\":true"), std::string::npos);
     EXPECT_NE(json.find("\"ms_per_frame_768x576\":null"), std::string::npos) << "no clip, no speed figure";

@@ -13,7 +13,7 @@ TEST(MatteScore, countsTheCdnetWay) {
     EXPECT_EQ(all.truePositives, 1);   // 255: the person
     EXPECT_EQ(all.falsePositives, 2);  // 0 and 50 (hard shadow) are background
     EXPECT_EQ(all.falseNegatives, 0);
-    EXPECT_EQ(all.trueNegatives, 0);   // 85 and 170 are not counted at all
+    EXPECT_EQ(all.trueNegatives, 0);  // 85 and 170 are not counted at all
 
     MatteScore none;
     none.add(cv::Mat::zeros(1, 5, CV_8UC1), labels);
@@ -53,5 +53,5 @@ TEST(MatteScore, maskThresholdIsHalfway) {
     EXPECT_EQ(s.falseNegatives, 1);
 }
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

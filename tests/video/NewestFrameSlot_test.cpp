@@ -10,7 +10,7 @@ Frame frameOf(std::uint64_t seq, std::uint8_t grey) {
     return {cv::Mat(8, 8, CV_8UC3, cv::Scalar::all(grey)), {}, std::chrono::steady_clock::now(), seq, PixelFormat::Bgr};
 }
 
-} // namespace
+}  // namespace
 
 TEST(NewestFrameSlot, overwritesUntakenFramesAndCountsDrops) {
     NewestFrameSlot slot;
@@ -21,6 +21,5 @@ TEST(NewestFrameSlot, overwritesUntakenFramesAndCountsDrops) {
     ASSERT_TRUE(f);
     EXPECT_EQ(f->sequence, 2u);
     EXPECT_EQ(slot.drops(), 2u);
-    EXPECT_FALSE(slot.take()); // each frame is handed out once
+    EXPECT_FALSE(slot.take());  // each frame is handed out once
 }
-

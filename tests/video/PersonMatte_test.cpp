@@ -23,12 +23,13 @@ void expectPremultiplied(const cv::Mat& frame, const cv::Mat& alpha, const cv::M
             const int k = alpha.at<std::uint8_t>(y, x);
             const cv::Vec4b want(expected(c[0], k), expected(c[1], k), expected(c[2], k), static_cast<std::uint8_t>(k));
             if (person.at<cv::Vec4b>(y, x) != want && wrong++ < 5)
-                ADD_FAILURE() << "at (" << x << ", " << y << "): " << person.at<cv::Vec4b>(y, x) << ", expected " << want;
+                ADD_FAILURE() << "at (" << x << ", " << y << "): " << person.at<cv::Vec4b>(y, x) << ", expected "
+                              << want;
         }
     EXPECT_EQ(wrong, 0);
 }
 
-} // namespace
+}  // namespace
 
 TEST(PersonMatte, premultiplyRoundsEveryColourAndAlphaPairToNearest) {
     // Column = colour level, row = alpha: all 65,536 pairs, three columns
@@ -37,7 +38,8 @@ TEST(PersonMatte, premultiplyRoundsEveryColourAndAlphaPairToNearest) {
     for (int y = 0; y < 256; ++y)
         for (int x = 0; x < 259; ++x) {
             const auto v = static_cast<std::uint8_t>(x % 256);
-            frame.at<cv::Vec3b>(y, x) = cv::Vec3b(v, static_cast<std::uint8_t>(255 - v), static_cast<std::uint8_t>(x * 7));
+            frame.at<cv::Vec3b>(y, x) =
+                cv::Vec3b(v, static_cast<std::uint8_t>(255 - v), static_cast<std::uint8_t>(x * 7));
             alpha.at<std::uint8_t>(y, x) = static_cast<std::uint8_t>(y);
         }
     cv::Mat person;
@@ -58,7 +60,9 @@ TEST(PersonMatte, premultiplyClearsWhereAlphaIsZeroInAReusedBuffer) {
         alpha.at<std::uint8_t>(4, width / 2) = 128;
         for (int y = 5; y < 9; ++y) {
             const int from = rng.uniform(0, width), to = rng.uniform(from, width) + 1;
-            for (int x = from; x < to; ++x) alpha.at<std::uint8_t>(y, x) = static_cast<std::uint8_t>(rng.uniform(0, 3) == 0 ? 0 : rng.uniform(1, 256));
+            for (int x = from; x < to; ++x)
+                alpha.at<std::uint8_t>(y, x) =
+                    static_cast<std::uint8_t>(rng.uniform(0, 3) == 0 ? 0 : rng.uniform(1, 256));
         }
         cv::Mat person(9, width, CV_8UC4, cv::Scalar(77, 77, 77, 77));  // what the last frame left
         const std::uint8_t* buffer = person.data;

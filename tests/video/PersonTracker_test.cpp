@@ -21,7 +21,7 @@ const TrackedPerson* byId(const std::vector<TrackedPerson>& people, int id) {
     return nullptr;
 }
 
-} // namespace
+}  // namespace
 
 TEST(PersonTracker, theFootPointIgnoresAThinTrailBelowTheFeet) {
     cv::Mat labels(kFrame, CV_32S, cv::Scalar(0));
@@ -119,4 +119,4 @@ TEST(PersonTracker, labelsMarkEachPersonsPixelsAndDropNoise) {
     EXPECT_EQ(tracker.labels().at<int>(11, 601), 0);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -20,7 +20,7 @@ TEST(TestPatternSource, sameFrameIndexGivesIdenticalPixels) {
 TEST(TestPatternSource, circleMovesAndFramesDiffer) {
     TestPatternSource p({.width = 640, .height = 360, .fps = 60, .paced = false});
     EXPECT_EQ(p.circleCentre(0).x, 0);
-    EXPECT_EQ(p.circleCentre(60).x, 160); // a quarter width per second
+    EXPECT_EQ(p.circleCentre(60).x, 160);  // a quarter width per second
     EXPECT_GT(cv::norm(p.render(0), p.render(1), cv::NORM_L1), 0.0);
     EXPECT_EQ(p.render(60).at<cv::Vec3b>(180, 160), cv::Vec3b(40, 160, 230));
 }

@@ -24,18 +24,18 @@ V4l2Options options(std::vector<PixelFormat> preference = {PixelFormat::Yuyv, Pi
 
 double meanAbsDiff(const cv::Mat& a, const cv::Mat& b) { return cv::norm(a, b, cv::NORM_L1) / double(a.total() * 3); }
 
-} // namespace
+}  // namespace
 
 TEST(V4l2Source, negotiatesTheFirstPreferredFormatTheDeviceOffers) {
     auto dev = std::make_shared<FakeV4l2Device>();
     V4l2Source src(options({PixelFormat::Nv12, PixelFormat::Mjpeg, PixelFormat::Yuyv}), dev);
     GrabResult r = src.grab();
     ASSERT_TRUE(r.frame) << r.state.reason;
-    EXPECT_EQ(src.format(), PixelFormat::Mjpeg); // NV12 is not offered; MJPEG comes before YUYV in the list
+    EXPECT_EQ(src.format(), PixelFormat::Mjpeg);  // NV12 is not offered; MJPEG comes before YUYV in the list
     EXPECT_EQ(dev->negotiated, static_cast<std::uint32_t>(V4L2_PIX_FMT_MJPEG));
     EXPECT_EQ(r.frame->format, PixelFormat::Mjpeg);
     EXPECT_EQ(r.frame->image.size(), cv::Size(640, 480));
-    EXPECT_EQ(dev->maps, 4); // four mmap buffers
+    EXPECT_EQ(dev->maps, 4);  // four mmap buffers
 }
 
 TEST(V4l2Source, decodesYuyvFramesToTheScene) {
@@ -108,7 +108,7 @@ TEST(V4l2Source, reconnectsUnderANewNodeByItsStableLinkAfterUnplug) {
 
     GrabResult gone = src.grab();
     EXPECT_EQ(gone.state.status, SourceStatus::Disconnected);
-    EXPECT_EQ(dev->maps, dev->unmaps); // buffers released on unplug
+    EXPECT_EQ(dev->maps, dev->unmaps);  // buffers released on unplug
     EXPECT_EQ(dev->opens, dev->closes);
     GrabResult stillGone = src.grab();
     EXPECT_EQ(stillGone.state.status, SourceStatus::Disconnected);
@@ -119,7 +119,7 @@ TEST(V4l2Source, reconnectsUnderANewNodeByItsStableLinkAfterUnplug) {
     ASSERT_TRUE(back.frame) << back.state.reason;
     EXPECT_EQ(src.node(), "/dev/video2");
     EXPECT_EQ(src.reconnects(), 1u);
-    EXPECT_EQ(back.frame->sequence, 1u); // our sequence continues across the replug
+    EXPECT_EQ(back.frame->sequence, 1u);  // our sequence continues across the replug
 }
 
 TEST(V4l2Source, reportsEnodevFromDqbufAsDisconnected) {

@@ -10,7 +10,7 @@ namespace {
 
 cv::Mat patches() {
     cv::Mat img(64, 128, CV_8UC3);
-    const cv::Vec3b colours[] = {{40, 160, 230}, {200, 60, 60}, {30, 200, 40}, {128, 128, 128},
+    const cv::Vec3b colours[] = {{40, 160, 230}, {200, 60, 60},   {30, 200, 40},  {128, 128, 128},
                                  {16, 16, 16},   {240, 240, 240}, {90, 140, 200}, {255, 0, 255}};
     for (int i = 0; i < 8; ++i) img(cv::Rect((i % 4) * 32, (i / 4) * 32, 32, 32)).setTo(colours[i]);
     return img;
@@ -26,7 +26,7 @@ double worstCentreError(const cv::Mat& a, const cv::Mat& b) {
     return worst;
 }
 
-} // namespace
+}  // namespace
 
 TEST(YuvConversion, limitedRangeBlackAndWhiteMapToZeroAnd255) {
     const std::uint8_t yuyv[] = {16, 128, 235, 128};
@@ -56,7 +56,8 @@ TEST(YuvConversion, roundTripsEveryMatrixAndRange) {
             const auto yuyv = bgrToYuyv(src, e);
             EXPECT_LE(worstCentreError(yuyvToBgr(yuyv.data(), src.cols, src.rows, src.cols * 2, e), src), 2.0);
             const auto nv12 = bgrToNv12(src, e);
-            const cv::Mat back = nv12ToBgr(nv12.data(), src.cols, nv12.data() + src.total(), src.cols, src.cols, src.rows, e);
+            const cv::Mat back =
+                nv12ToBgr(nv12.data(), src.cols, nv12.data() + src.total(), src.cols, src.cols, src.rows, e);
             EXPECT_LE(worstCentreError(back, src), 2.0);
         }
 }
@@ -68,14 +69,15 @@ TEST(YuvConversion, sameSceneFromYuyvNv12AndMjpegAgrees) {
     const auto yuyv = bgrToYuyv(scene, hd);
     const cv::Mat fromYuyv = yuyvToBgr(yuyv.data(), scene.cols, scene.rows, scene.cols * 2, hd);
     const auto nv12 = bgrToNv12(scene, hd);
-    const cv::Mat fromNv12 = nv12ToBgr(nv12.data(), scene.cols, nv12.data() + scene.total(), scene.cols, scene.cols,
-                                       scene.rows, hd);
+    const cv::Mat fromNv12 =
+        nv12ToBgr(nv12.data(), scene.cols, nv12.data() + scene.total(), scene.cols, scene.cols, scene.rows, hd);
     std::vector<std::uint8_t> jpeg;
     cv::imencode(".jpg", scene, jpeg, {cv::IMWRITE_JPEG_QUALITY, 95});
     const cv::Mat fromMjpeg = cv::imdecode(jpeg, cv::IMREAD_COLOR);
     EXPECT_LE(worstCentreError(fromYuyv, fromMjpeg), 4.0);
     EXPECT_LE(worstCentreError(fromNv12, fromMjpeg), 4.0);
     // Decoding the YUYV with the wrong range is caught by the same tolerance.
-    const cv::Mat wrongRange = yuyvToBgr(yuyv.data(), scene.cols, scene.rows, scene.cols * 2, {hd.matrix, YuvRange::Full});
+    const cv::Mat wrongRange =
+        yuyvToBgr(yuyv.data(), scene.cols, scene.rows, scene.cols * 2, {hd.matrix, YuvRange::Full});
     EXPECT_GT(worstCentreError(wrongRange, fromMjpeg), 10.0);
 }

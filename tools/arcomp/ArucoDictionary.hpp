@@ -12,4 +12,4 @@ namespace arcomp {
 
 cv::Ptr<cv::aruco::Dictionary> arucoDictionary(const std::string& name);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -50,8 +50,8 @@ Geometry mergedModel(const ParsedModel& m) {
                 if (allUv) out.texcoords.push_back(g.texcoords[v]);
                 if (allUv1) out.texcoords1.push_back(g.texcoords1[v]);
                 if (allTangents)
-                    out.tangents.push_back(glm::vec4(glm::normalize(linear * glm::vec3(g.tangents[v])),
-                                                     g.tangents[v].w * handedness));
+                    out.tangents.push_back(
+                        glm::vec4(glm::normalize(linear * glm::vec3(g.tangents[v])), g.tangents[v].w * handedness));
             }
             for (std::uint32_t i : g.indices) out.indices.push_back(base + i);
         }
@@ -125,16 +125,17 @@ int bakeLod(const std::string& model, const std::string& ratioText, const std::s
     return kExitOk;
 }
 
-const bool registered = registerBake({"lod", "Simplified LOD levels of a model (meshoptimizer)", [](CommandLine& line) {
-    auto model = std::make_shared<std::string>();
-    auto ratios = std::make_shared<std::string>("1,0.25,0.05");
-    auto out = std::make_shared<std::string>();
-    line.option("model", *model, "Model file (.obj, .gltf, .glb)").required();
-    line.option("--ratios", *ratios, "Fractions of the triangles per level, finest first").showDefault();
-    line.option("--out", *out, "LOD file to write (graph/io/LodFile.hpp)");
-    return [=] { return bakeLod(*model, *ratios, *out); };
-}});
+const bool registered = registerBake(
+    {"lod", "Simplified LOD levels of a model (meshoptimizer)", [](CommandLine& line) {
+         auto model = std::make_shared<std::string>();
+         auto ratios = std::make_shared<std::string>("1,0.25,0.05");
+         auto out = std::make_shared<std::string>();
+         line.option("model", *model, "Model file (.obj, .gltf, .glb)").required();
+         line.option("--ratios", *ratios, "Fractions of the triangles per level, finest first").showDefault();
+         line.option("--out", *out, "LOD file to write (graph/io/LodFile.hpp)");
+         return [=] { return bakeLod(*model, *ratios, *out); };
+     }});
 
-} // namespace
+}  // namespace
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -6,8 +6,8 @@
 //   a YAML file                   regions: [{box: [x0,y0,z0,x1,y1,z1]}, {vertices: [[x,y,z], ...]}]
 // Progress goes to stderr, then one report line per region.
 
-#include "graph/silhouette/FlatMesh.hpp"
 #include "graph/io/SilhouetteFile.hpp"
+#include "graph/silhouette/FlatMesh.hpp"
 #include "tools/cli/Command.hpp"
 
 #include <yaml-cpp/yaml.h>
@@ -72,7 +72,9 @@ std::vector<ViewRegion> regionsFromYaml(const std::string& file) {
 std::vector<ViewRegion> parseRegions(const std::string& spec, const Sphere& bound) {
     if (spec.starts_with("around:")) {
         int n = 0;
-        try { n = std::stoi(spec.substr(7)); } catch (const std::exception&) {}
+        try {
+            n = std::stoi(spec.substr(7));
+        } catch (const std::exception&) {}
         if (n < 1 || n > 1024) throw InputError("--regions around:N needs N in 1..1024, got '" + spec + "'");
         return regionsAround(bound, n);
     }
@@ -86,7 +88,9 @@ std::vector<ViewRegion> parseRegions(const std::string& spec, const Sphere& boun
         std::istringstream numbers(box);
         std::string number;
         while (std::getline(numbers, number, ',')) {
-            try { v.push_back(std::stof(number)); } catch (const std::exception&) {
+            try {
+                v.push_back(std::stof(number));
+            } catch (const std::exception&) {
                 throw InputError("--regions: '" + number + "' is not a number in box " + std::to_string(out.size()));
             }
         }
@@ -102,11 +106,11 @@ int bake(const Options& o) {
     std::vector<ViewRegion> regions = parseRegions(o.regions, sphereAround(model.positions));
     std::vector<SilhouetteRegionReport> report;
     const auto t0 = std::chrono::steady_clock::now();
-    const SilhouetteMesh mesh = bakeSilhouetteMesh(model.positions, model.indices, std::move(regions), &report,
-        [](std::size_t done, std::size_t total) {
+    const SilhouetteMesh mesh = bakeSilhouetteMesh(
+        model.positions, model.indices, std::move(regions), &report, [](std::size_t done, std::size_t total) {
             const int width = 30, filled = static_cast<int>(width * done / total);
-            std::cerr << "\rbaking [" << std::string(filled, '#') << std::string(width - filled, '.') << "] "
-                      << done << "/" << total << (done == total ? "\n" : "") << std::flush;
+            std::cerr << "\rbaking [" << std::string(filled, '#') << std::string(width - filled, '.') << "] " << done
+                      << "/" << total << (done == total ? "\n" : "") << std::flush;
         });
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     for (std::size_t r = 0; r < report.size(); ++r) {
@@ -122,15 +126,15 @@ int bake(const Options& o) {
     return kExitOk;
 }
 
-const bool registered = registerBake({"silhouette", "Silhouette-preserving reduction per viewpoint region",
-    [](CommandLine& line) {
-        auto o = std::make_shared<Options>();
-        line.option("model", o->model, "OBJ model").required();
-        line.option("--regions", o->regions, "around:N, boxes x0,y0,z0,x1,y1,z1;... or a YAML file");
-        line.option("--out", o->out, "baked file to write").required();
-        return [o] { return bake(*o); };
-    }});
+const bool registered =
+    registerBake({"silhouette", "Silhouette-preserving reduction per viewpoint region", [](CommandLine& line) {
+                      auto o = std::make_shared<Options>();
+                      line.option("model", o->model, "OBJ model").required();
+                      line.option("--regions", o->regions, "around:N, boxes x0,y0,z0,x1,y1,z1;... or a YAML file");
+                      line.option("--out", o->out, "baked file to write").required();
+                      return [o] { return bake(*o); };
+                  }});
 
-} // namespace
+}  // namespace
 
-} // namespace arcomp
+}  // namespace arcomp

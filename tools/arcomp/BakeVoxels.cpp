@@ -45,16 +45,15 @@ int bakeVoxels(const BakeVoxelsOptions& o) {
     return kExitOk;
 }
 
-const bool registered = registerBake({"voxels", "Voxelize a model (glTF or OBJ) into an .arvox point model",
-                                      [](CommandLine& line) {
-                                          auto o = std::make_shared<BakeVoxelsOptions>();
-                                          line.option("model", o->model, "glTF or OBJ file").required();
-                                          line.option("--res", o->resolution, "cells along the longest side")
-                                              .showDefault();
-                                          line.option("--out", o->out, "voxel file to write").required();
-                                          return [o] { return bakeVoxels(*o); };
-                                      }});
+const bool registered =
+    registerBake({"voxels", "Voxelize a model (glTF or OBJ) into an .arvox point model", [](CommandLine& line) {
+                      auto o = std::make_shared<BakeVoxelsOptions>();
+                      line.option("model", o->model, "glTF or OBJ file").required();
+                      line.option("--res", o->resolution, "cells along the longest side").showDefault();
+                      line.option("--out", o->out, "voxel file to write").required();
+                      return [o] { return bakeVoxels(*o); };
+                  }});
 
-} // namespace
+}  // namespace
 
-} // namespace arcomp
+}  // namespace arcomp

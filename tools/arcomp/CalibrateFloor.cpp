@@ -12,8 +12,8 @@
 // floor grid over the image, to be looked at before it is trusted.
 
 #include "runtime/config/CameraFile.hpp"
-#include "tools/cli/Command.hpp"
 #include "tools/arcomp/FloorMarker.hpp"
+#include "tools/cli/Command.hpp"
 
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -50,9 +50,11 @@ std::vector<FloorPoint> parseFloorPoints(const std::string& text) {
         double u, v, x, z;
         char comma1, equals, comma2;
         std::istringstream in(item);
-        if (!(in >> u >> comma1 >> v >> equals >> x >> comma2 >> z) || comma1 != ',' || equals != '=' || comma2 != ',' ||
-            !(in >> std::ws).eof() || !std::isfinite(u) || !std::isfinite(v) || !std::isfinite(x) || !std::isfinite(z))
-            throw InputError("--points: item " + std::to_string(n) + " (\"" + item + "\") is not u,v=x,z (pixels = floor metres)");
+        if (!(in >> u >> comma1 >> v >> equals >> x >> comma2 >> z) || comma1 != ',' || equals != '=' ||
+            comma2 != ',' || !(in >> std::ws).eof() || !std::isfinite(u) || !std::isfinite(v) || !std::isfinite(x) ||
+            !std::isfinite(z))
+            throw InputError("--points: item " + std::to_string(n) + " (\"" + item +
+                             "\") is not u,v=x,z (pixels = floor metres)");
         points.push_back({{u, v}, {x, 0.0, z}});
     }
     return points;
@@ -81,21 +83,22 @@ void requireSpread(const std::vector<FloorPoint>& points) {
     const double along = std::sqrt(std::max(pca.eigenvalues.at<double>(0), 0.0));
     const double across = pca.eigenvalues.rows > 1 ? std::sqrt(std::max(pca.eigenvalues.at<double>(1), 0.0)) : 0.0;
     if (along <= 0.0 || across < 0.02 * along)
-        throw InputError("--points: the floor points lie (almost) on one line; give at least 4 that span an area, not all on one line");
+        throw InputError("--points: the floor points lie (almost) on one line; give at least 4 that span an area, not "
+                         "all on one line");
 }
 
 // The marks as given by hand.
 std::vector<FloorPoint> givenPoints(const std::string& text, glm::ivec2 size) {
     const std::vector<FloorPoint> points = parseFloorPoints(text);
     if (points.size() < 4)
-        throw InputError("--points: " + std::to_string(points.size()) + " given; the floor needs at least 4 (u,v=x,z;...)");
+        throw InputError("--points: " + std::to_string(points.size()) +
+                         " given; the floor needs at least 4 (u,v=x,z;...)");
     for (const FloorPoint& p : points)
-        if (p.pixel.x < 0 || p.pixel.y < 0 || p.pixel.x > size.x - 1 || p.pixel.y > size.y - 1)
-        {
+        if (p.pixel.x < 0 || p.pixel.y < 0 || p.pixel.x > size.x - 1 || p.pixel.y > size.y - 1) {
             char where[64];
             std::snprintf(where, sizeof where, "%g,%g", p.pixel.x, p.pixel.y);
-            throw InputError(std::string("--points: pixel ") + where + " is outside the " + std::to_string(size.x) + "x" +
-                             std::to_string(size.y) + " image");
+            throw InputError(std::string("--points: pixel ") + where + " is outside the " + std::to_string(size.x) +
+                             "x" + std::to_string(size.y) + " image");
         }
     requireSpread(points);
     return points;
@@ -105,8 +108,9 @@ int calibrateFloor(const FloorCalibrationOptions& o) {
     const bool byPoints = !o.points.empty(), byMarker = o.marker >= 0;
     if (byPoints && byMarker) throw InputError("give the floor marks by --points or by --marker, not both");
     if (!byPoints && !byMarker)
-        throw InputError("give the floor marks: --points \"u,v=x,z;...\" (at least 4 marks) or --marker ID --marker-size M "
-                         "(an ArUco marker lying on the floor)");
+        throw InputError(
+            "give the floor marks: --points \"u,v=x,z;...\" (at least 4 marks) or --marker ID --marker-size M "
+            "(an ArUco marker lying on the floor)");
     if (byMarker && !(o.markerSize > 0.0))
         throw InputError("--marker " + std::to_string(o.marker) +
                          ": give its --marker-size, the black square's edge in metres (border included)");
@@ -129,11 +133,12 @@ int calibrateFloor(const FloorCalibrationOptions& o) {
         for (const FloorPoint& p : points) corners.emplace_back(p.pixel);
         const double across = std::sqrt(cv::contourArea(corners));
         if (across < 30.0)
-            std::fprintf(stderr,
-                         "arcomp calibrate floor: warning: marker %d spans only %.0f px in the image; a marker this small "
-                         "places the camera loosely (height and tilt off by a tenth): use a bigger one, or check the "
-                         "--preview\n",
-                         o.marker, across);
+            std::fprintf(
+                stderr,
+                "arcomp calibrate floor: warning: marker %d spans only %.0f px in the image; a marker this small "
+                "places the camera loosely (height and tilt off by a tenth): use a bigger one, or check the "
+                "--preview\n",
+                o.marker, across);
     }
 
     CalibratedCamera camera;
@@ -147,11 +152,13 @@ int calibrateFloor(const FloorCalibrationOptions& o) {
         k.cx = (size.x - 1) / 2.0;
         k.cy = (size.y - 1) / 2.0;
     } else {
-        throw InputError("give the lens: --intrinsics <camera file> (from `arcomp calibrate intrinsics`) or --fovy-deg <vertical field of view>");
+        throw InputError("give the lens: --intrinsics <camera file> (from `arcomp calibrate intrinsics`) or --fovy-deg "
+                         "<vertical field of view>");
     }
     const CameraIntrinsics& k = camera.intrinsics;
     const cv::Matx33d cameraMatrix(k.fx, 0, k.cx, 0, k.fy, k.cy, 0, 0, 1);
-    const cv::Vec<double, 5> distortion(k.distortion[0], k.distortion[1], k.distortion[2], k.distortion[3], k.distortion[4]);
+    const cv::Vec<double, 5> distortion(k.distortion[0], k.distortion[1], k.distortion[2], k.distortion[3],
+                                        k.distortion[4]);
 
     std::vector<cv::Point3d> floor;
     std::vector<cv::Point2d> pixels;
@@ -178,15 +185,17 @@ int calibrateFloor(const FloorCalibrationOptions& o) {
         for (int column = 0; column < 3; ++column) camera.rotation[column][row] = r(row, column);
     camera.translation = glm::dvec3(tvec[0], tvec[1], tvec[2]);
     if (camera.heightMetres() <= 0.0)
-        throw InputError(marks + ": the best fit puts the camera " + std::to_string(-camera.heightMetres()) +
-                         " m below the floor; " +
-                         (byPoints ? "check that each u,v is the image point of its x,z" : "is the marker on the floor?"));
+        throw InputError(
+            marks + ": the best fit puts the camera " + std::to_string(-camera.heightMetres()) +
+            " m below the floor; " +
+            (byPoints ? "check that each u,v is the image point of its x,z" : "is the marker on the floor?"));
 
     char what[96];
     if (byPoints)
         std::snprintf(what, sizeof what, "%zu points", points.size());
     else
-        std::snprintf(what, sizeof what, "the corners of %s marker %d (%g m)", dictionary.c_str(), o.marker, o.markerSize);
+        std::snprintf(what, sizeof what, "the corners of %s marker %d (%g m)", dictionary.c_str(), o.marker,
+                      o.markerSize);
     char note[256];
     std::snprintf(note, sizeof note, "floor from %s in %s: %.2f px RMS, %.2f px worst", what,
                   std::filesystem::path(o.image).filename().c_str(), rms, worst);
@@ -196,7 +205,8 @@ int calibrateFloor(const FloorCalibrationOptions& o) {
         // A 1 m grid over the floor around the points, as the camera sees it.
         double minX = 1e9, maxX = -1e9, minZ = 1e9, maxZ = -1e9;
         for (const cv::Point3d& f : floor) {
-            minX = std::min(minX, f.x), maxX = std::max(maxX, f.x), minZ = std::min(minZ, f.z), maxZ = std::max(maxZ, f.z);
+            minX = std::min(minX, f.x), maxX = std::max(maxX, f.x), minZ = std::min(minZ, f.z),
+            maxZ = std::max(maxZ, f.z);
         }
         std::vector<cv::Point3d> ends;
         for (double x = std::floor(minX) - 2; x <= std::ceil(maxX) + 2; x += 1.0)
@@ -225,8 +235,8 @@ int calibrateFloor(const FloorCalibrationOptions& o) {
     }
     const glm::dvec3 at = camera.position();
     std::printf("floor: %s, reprojection %.2f px RMS (%.2f px worst)\n", what, rms, worst);
-    std::printf("camera: %.2f m above the floor at x %.2f, z %.2f, tilted %.1f degrees down\n", camera.heightMetres(), at.x, at.z,
-                camera.tiltDegrees());
+    std::printf("camera: %.2f m above the floor at x %.2f, z %.2f, tilted %.1f degrees down\n", camera.heightMetres(),
+                at.x, at.z, camera.tiltDegrees());
     std::printf("wrote %s\n", o.out.c_str());
     return kExitOk;
 }
@@ -236,16 +246,20 @@ const bool registered = registerCalibration(
          auto o = std::make_shared<FloorCalibrationOptions>();
          line.option("image", o->image, "An image, or a video whose first frame is used").required();
          line.option("--points", o->points, "At least 4 marks: \"u,v=x,z;...\" (pixels = floor metres)");
-         line.option("--marker", o->marker, "Instead of --points: the ID of an ArUco marker on the floor, the floor's origin")
+         line.option("--marker", o->marker,
+                     "Instead of --points: the ID of an ArUco marker on the floor, the floor's origin")
              .range(0, 99999);
          line.option("--marker-size", o->markerSize, "The marker's black square's edge in metres").range(1e-3, 100.0);
          line.option("--dictionary", o->dictionary, "The marker's ArUco dictionary (DICT_4X4_50)");
-         line.option("--intrinsics", o->intrinsics, "A camera file with the measured lens (arcomp calibrate intrinsics)");
-         line.option("--fovy-deg", o->fovyDegrees, "Without --intrinsics: the lens's vertical field of view").range(1.0, 179.0);
+         line.option("--intrinsics", o->intrinsics,
+                     "A camera file with the measured lens (arcomp calibrate intrinsics)");
+         line.option("--fovy-deg", o->fovyDegrees, "Without --intrinsics: the lens's vertical field of view")
+             .range(1.0, 179.0);
          line.option("--out", o->out, "The camera file to write").required();
-         line.option("--preview", o->preview, "Also draw the points, their reprojections and a 1 m floor grid into this image");
+         line.option("--preview", o->preview,
+                     "Also draw the points, their reprojections and a 1 m floor grid into this image");
          return [o] { return calibrateFloor(*o); };
      }});
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

@@ -66,7 +66,8 @@ std::vector<int> spread(int total, int count) {
 
 bool isImageFile(const std::filesystem::path& p) {
     std::string ext = p.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".bmp" || ext == ".tif" || ext == ".tiff";
 }
 
@@ -112,7 +113,8 @@ int visitVideo(const std::string& file, int maxFrames, const FrameVisitor& visit
             }
         ++index;
         if (!video.read(frame) || frame.empty())
-            throw InputError(file, "frame " + std::to_string(wanted + 1) + " of " + std::to_string(total), "cannot be decoded");
+            throw InputError(file, "frame " + std::to_string(wanted + 1) + " of " + std::to_string(total),
+                             "cannot be decoded");
         ++visited;
         if (!visit(frame, "frame " + std::to_string(wanted + 1) + " of " + std::to_string(total))) break;
     }
@@ -144,8 +146,9 @@ int visitCamera(const std::string& device, const FrameVisitor& visit) {
         const SourceState state = source->state();
         if (isLost(state.status) || Clock::now() - lastFrame > std::chrono::seconds(10)) {
             source->close();
-            throw InputError(device, "", "no frames from the camera (" + std::string(sourceStatusName(state.status)) +
-                                             (state.reason.empty() ? "" : ": " + state.reason) + ")");
+            throw InputError(device, "",
+                             "no frames from the camera (" + std::string(sourceStatusName(state.status)) +
+                                 (state.reason.empty() ? "" : ": " + state.reason) + ")");
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
@@ -189,8 +192,7 @@ int calibrateIntrinsics(const IntrinsicsOptions& o) {
     const CalibrationBoard board(spec);
 
     const bool camera = isCamera(o.input);
-    if (!camera && !std::filesystem::exists(o.input))
-        throw InputError(o.input, "", "no such file, folder or camera");
+    if (!camera && !std::filesystem::exists(o.input)) throw InputError(o.input, "", "no such file, folder or camera");
 
     std::vector<BoardView> views;
     cv::Size size;
@@ -200,9 +202,9 @@ int calibrateIntrinsics(const IntrinsicsOptions& o) {
         if (size.empty()) size = frame.size();
         if (frame.size() != size)
             throw InputError(o.input, where,
-                             std::to_string(frame.cols) + "x" + std::to_string(frame.rows) + ", but the first frame is " +
-                                 std::to_string(size.width) + "x" + std::to_string(size.height) +
-                                 "; calibrate one camera at one resolution");
+                             std::to_string(frame.cols) + "x" + std::to_string(frame.rows) +
+                                 ", but the first frame is " + std::to_string(size.width) + "x" +
+                                 std::to_string(size.height) + "; calibrate one camera at one resolution");
         std::optional<BoardView> view = board.find(frame);
         if (!view) return true;
         ++found;
@@ -229,48 +231,55 @@ int calibrateIntrinsics(const IntrinsicsOptions& o) {
 
     const std::string minCoverage = "under " + std::to_string(kMinCoveragePercent) + "% of the image";
     if (found == 0)
-        throw InputError(o.input, "", "no " + board.describe() + " found in any of its " + std::to_string(frames) +
-                                          " frames searched; check --board, --cols and --rows against the print "
-                                          "(squares, not inner corners) and that the whole board is in the picture");
+        throw InputError(o.input, "",
+                         "no " + board.describe() + " found in any of its " + std::to_string(frames) +
+                             " frames searched; check --board, --cols and --rows against the print "
+                             "(squares, not inner corners) and that the whole board is in the picture");
     if (views.empty()) {
         char largest[32];
         std::snprintf(largest, sizeof largest, "%.1f%%", 100.0 * largestSmall);
-        throw InputError(o.input, "", "the board covers " + minCoverage + " in every view where it was found (" +
-                                          std::to_string(found) + " views, the largest " + largest +
-                                          "); hold it nearer the camera");
+        throw InputError(o.input, "",
+                         "the board covers " + minCoverage + " in every view where it was found (" +
+                             std::to_string(found) + " views, the largest " + largest + "); hold it nearer the camera");
     }
     if (static_cast<int>(views.size()) < kMinViews)
-        throw InputError(o.input, "", "the board is usable in " + std::to_string(views.size()) + " views of the " +
-                                          std::to_string(frames) + " frames searched" +
-                                          (small ? " (" + std::to_string(small) + " more where it covers " + minCoverage + ")" : "") +
-                                          "; the lens needs at least " + std::to_string(kMinViews) +
-                                          ": show the board at more angles and distances");
+        throw InputError(
+            o.input, "",
+            "the board is usable in " + std::to_string(views.size()) + " views of the " + std::to_string(frames) +
+                " frames searched" +
+                (small ? " (" + std::to_string(small) + " more where it covers " + minCoverage + ")" : "") +
+                "; the lens needs at least " + std::to_string(kMinViews) +
+                ": show the board at more angles and distances");
 
     const LensFit fit = board.calibrate(views, size);
     const CameraIntrinsics& k = fit.intrinsics;
     char note[256];
-    std::snprintf(note, sizeof note, "lens from %zu views of a %s in %s: %.2f px RMS", views.size(), board.describe().c_str(),
-                  std::filesystem::path(o.input).filename().c_str(), fit.rmsPixels);
+    std::snprintf(note, sizeof note, "lens from %zu views of a %s in %s: %.2f px RMS", views.size(),
+                  board.describe().c_str(), std::filesystem::path(o.input).filename().c_str(), fit.rmsPixels);
     writeLensFile(o.out, k, note);
 
     std::printf("intrinsics: %zu views of %d frames searched", views.size(), frames);
     if (frames > found) std::printf(", %d without the board", frames - found);
     if (small) std::printf(", %d where it covers %s", small, minCoverage.c_str());
     std::printf("; reprojection %.2f px RMS\n", fit.rmsPixels);
-    std::printf("lens: fx %.2f, fy %.2f px; principal point %.2f, %.2f px; distortion k1 %.4f, k2 %.4f, p1 %.5f, p2 %.5f, k3 %g\n",
-                k.fx, k.fy, k.cx, k.cy, k.distortion[0], k.distortion[1], k.distortion[2], k.distortion[3], k.distortion[4]);
+    std::printf("lens: fx %.2f, fy %.2f px; principal point %.2f, %.2f px; distortion k1 %.4f, k2 %.4f, p1 %.5f, p2 "
+                "%.5f, k3 %g\n",
+                k.fx, k.fy, k.cx, k.cy, k.distortion[0], k.distortion[1], k.distortion[2], k.distortion[3],
+                k.distortion[4]);
     const double fovy = 2.0 * std::atan(0.5 * size.height / k.fy) * 180.0 / std::numbers::pi;
     std::printf("vertical field of view %.1f degrees at %dx%d\n", fovy, size.width, size.height);
     if (fit.rmsPixels > 1.0)
-        std::fprintf(stderr, "arcomp calibrate intrinsics: %.2f px RMS is high for a flat board seen sharply: check that the "
-                             "board is flat, the views are not blurred, and --cols/--rows match the print\n",
+        std::fprintf(stderr,
+                     "arcomp calibrate intrinsics: %.2f px RMS is high for a flat board seen sharply: check that the "
+                     "board is flat, the views are not blurred, and --cols/--rows match the print\n",
                      fit.rmsPixels);
     std::printf("wrote %s\n", o.out.c_str());
     return kExitOk;
 }
 
 const bool registered = registerCalibration(
-    {"intrinsics", "The lens (focal length, principal point, distortion) from views of a printed board", [](CommandLine& line) {
+    {"intrinsics", "The lens (focal length, principal point, distortion) from views of a printed board",
+     [](CommandLine& line) {
          auto o = std::make_shared<IntrinsicsOptions>();
          line.option("input", o->input, "A video, a folder of images, or a V4L2 camera (/dev/video0)").required();
          line.option("--board", o->board, "chessboard or charuco").required();
@@ -286,5 +295,5 @@ const bool registered = registerCalibration(
          return [o] { return calibrateIntrinsics(*o); };
      }});
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

@@ -43,7 +43,7 @@ double hullCoverage(const std::vector<cv::Point2f>& corners, cv::Size imageSize)
     return cv::contourArea(hull) / (static_cast<double>(imageSize.width) * imageSize.height);
 }
 
-} // namespace
+}  // namespace
 
 CalibrationBoard::CalibrationBoard(const BoardSpec& spec) : spec_(spec) {
     const bool chess = spec.kind == BoardKind::Chessboard;
@@ -78,7 +78,8 @@ CalibrationBoard::CalibrationBoard(const BoardSpec& spec) : spec_(spec) {
 
 std::string CalibrationBoard::describe() const {
     const std::string squares = std::to_string(spec_.cols) + " x " + std::to_string(spec_.rows) + " squares";
-    const std::string inner = std::to_string(spec_.cols - 1) + " x " + std::to_string(spec_.rows - 1) + " inner corners";
+    const std::string inner =
+        std::to_string(spec_.cols - 1) + " x " + std::to_string(spec_.rows - 1) + " inner corners";
     if (spec_.kind == BoardKind::Chessboard) return "chessboard of " + squares + " (" + inner + ")";
     return "ChArUco board of " + squares + " with " + spec_.dictionary + " markers";
 }
@@ -89,15 +90,16 @@ std::optional<BoardView> CalibrationBoard::find(const cv::Mat& image) const {
     if (spec_.kind == BoardKind::Chessboard) {
         const cv::Size pattern(spec_.cols - 1, spec_.rows - 1);
         if (!cv::findChessboardCorners(g, pattern, view.corners,
-                                       cv::CALIB_CB_ADAPTIVE_THRESH | cv::CALIB_CB_NORMALIZE_IMAGE | cv::CALIB_CB_FAST_CHECK))
+                                       cv::CALIB_CB_ADAPTIVE_THRESH | cv::CALIB_CB_NORMALIZE_IMAGE |
+                                           cv::CALIB_CB_FAST_CHECK))
             return std::nullopt;
         // The search window stays inside a square: a window reaching over
         // the next corner pulls the estimate towards it.
         double nearest = 1e9;
         for (int r = 0; r < pattern.height; ++r)
             for (int c = 0; c + 1 < pattern.width; ++c)
-                nearest = std::min<double>(nearest, cv::norm(view.corners[r * pattern.width + c] -
-                                                             view.corners[r * pattern.width + c + 1]));
+                nearest = std::min<double>(
+                    nearest, cv::norm(view.corners[r * pattern.width + c] - view.corners[r * pattern.width + c + 1]));
         const int half = std::clamp(static_cast<int>(0.4 * nearest), 2, 11);
         cv::cornerSubPix(g, view.corners, cv::Size(half, half), cv::Size(-1, -1),
                          cv::TermCriteria(cv::TermCriteria::EPS + cv::TermCriteria::COUNT, 40, 0.01));
@@ -109,7 +111,8 @@ std::optional<BoardView> CalibrationBoard::find(const cv::Mat& image) const {
         if (markerIds.empty()) return std::nullopt;
         // Interpolation refines each corner with cornerSubPix itself.
         cv::aruco::interpolateCornersCharuco(markerCorners, markerIds, g, charuco_, view.corners, view.ids);
-        if (static_cast<int>(view.ids.size()) < kMinCharucoCorners || cv::aruco::testCharucoCornersCollinear(charuco_, view.ids))
+        if (static_cast<int>(view.ids.size()) < kMinCharucoCorners ||
+            cv::aruco::testCharucoCornersCollinear(charuco_, view.ids))
             return std::nullopt;
     }
     view.coverage = hullCoverage(view.corners, g.size());
@@ -140,8 +143,8 @@ LensFit CalibrationBoard::calibrate(const std::vector<BoardView>& views, cv::Siz
                 corners.push_back(v.corners);
                 ids.push_back(v.ids);
             }
-            rms = cv::aruco::calibrateCameraCharuco(corners, ids, charuco_, imageSize, cameraMatrix, distortion, cv::noArray(),
-                                                   cv::noArray(), kCalibrationFlags);
+            rms = cv::aruco::calibrateCameraCharuco(corners, ids, charuco_, imageSize, cameraMatrix, distortion,
+                                                    cv::noArray(), cv::noArray(), kCalibrationFlags);
         }
     } catch (const cv::Exception& e) {
         throw InputError("the " + std::to_string(views.size()) + " views do not determine the lens (OpenCV: " + e.err +
@@ -149,8 +152,9 @@ LensFit CalibrationBoard::calibrate(const std::vector<BoardView>& views, cv::Siz
     }
     if (!std::isfinite(rms) || cameraMatrix.empty() || !(cameraMatrix.at<double>(0, 0) > 0.0) ||
         !(cameraMatrix.at<double>(1, 1) > 0.0))
-        throw InputError("the " + std::to_string(views.size()) +
-                         " views do not determine the lens (no finite focal length fits them); show the board at more angles");
+        throw InputError(
+            "the " + std::to_string(views.size()) +
+            " views do not determine the lens (no finite focal length fits them); show the board at more angles");
     LensFit fit;
     CameraIntrinsics& k = fit.intrinsics;
     k.imageSize = {imageSize.width, imageSize.height};
@@ -159,9 +163,10 @@ LensFit CalibrationBoard::calibrate(const std::vector<BoardView>& views, cv::Siz
     k.cx = cameraMatrix.at<double>(0, 2);
     k.cy = cameraMatrix.at<double>(1, 2);
     distortion = distortion.reshape(1, 1);
-    for (int i = 0; i < 5 && i < distortion.cols; ++i) k.distortion[static_cast<std::size_t>(i)] = distortion.at<double>(0, i);
+    for (int i = 0; i < 5 && i < distortion.cols; ++i)
+        k.distortion[static_cast<std::size_t>(i)] = distortion.at<double>(0, i);
     fit.rmsPixels = rms;
     return fit;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

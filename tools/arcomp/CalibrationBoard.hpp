@@ -5,9 +5,8 @@
 // Sizes count squares, as on the print: a 9 x 6 chessboard has 8 x 5 inner
 // corners.
 //
-//   CalibrationBoard board({.kind = BoardKind::Chessboard, .cols = 9, .rows = 6, .square = 0.025});  // InputError if bad
-//   std::vector<BoardView> views;
-//   for (const cv::Mat& frame : frames)
+//   CalibrationBoard board({.kind = BoardKind::Chessboard, .cols = 9, .rows = 6, .square = 0.025});  // InputError if
+//   bad std::vector<BoardView> views; for (const cv::Mat& frame : frames)
 //       if (std::optional<BoardView> v = board.find(frame)) views.push_back(*v);
 //   LensFit lens = board.calibrate(views, frames[0].size());   // cv::calibrateCamera: k1, k2, p1, p2, k3
 //
@@ -28,9 +27,9 @@ enum class BoardKind { Chessboard, Charuco };
 
 struct BoardSpec {
     BoardKind kind = BoardKind::Chessboard;
-    int cols = 0, rows = 0;        // squares across and down
-    double square = 0.0;           // a square's edge, metres
-    double markerLength = 0.0;     // ChArUco: a marker's edge, metres
+    int cols = 0, rows = 0;                  // squares across and down
+    double square = 0.0;                     // a square's edge, metres
+    double markerLength = 0.0;               // ChArUco: a marker's edge, metres
     std::string dictionary = "DICT_4X4_50";  // ChArUco: its markers' dictionary
 };
 
@@ -63,4 +62,4 @@ private:
     cv::Ptr<cv::aruco::CharucoBoard> charuco_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

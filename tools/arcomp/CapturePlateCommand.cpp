@@ -34,8 +34,8 @@ int capturePlate(const Options& o) {
     if (!cfg.compositing.video)
         throw InputError(o.config + ": no `video` section; capture-plate records from the station's video source");
     SourceSpec spec = *cfg.compositing.video;
-    spec.fallback = {};    // a plate of the fallback picture would be no plate at all
-    spec.paced = false;    // files: as fast as they decode
+    spec.fallback = {};  // a plate of the fallback picture would be no plate at all
+    spec.paced = false;  // files: as fast as they decode
     spec.loop = false;
     std::unique_ptr<FrameSource> source = openSource(spec);
 
@@ -48,7 +48,8 @@ int capturePlate(const Options& o) {
             lastFrame = Clock::now();
             if (seen++ < o.settle) continue;
             if (sum.empty()) sum = cv::Mat::zeros(f->image.size(), CV_32FC3);
-            if (f->image.size() != sum.size()) throw InputError(source->name() + ": the frame size changed while capturing");
+            if (f->image.size() != sum.size())
+                throw InputError(source->name() + ": the frame size changed while capturing");
             cv::accumulate(f->image, sum);
             ++summed;
             continue;
@@ -86,5 +87,5 @@ const bool registered = registerCommand(
          return [o] { return capturePlate(*o); };
      }});
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

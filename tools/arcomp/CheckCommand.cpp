@@ -3,9 +3,9 @@
 // error is listed with file:line:column; every model is loaded, so an asset
 // that the station would skip at run time fails the check here.
 
+#include "runtime/config/StationConfig.hpp"
 #include "runtime/station/SceneFile.hpp"
 #include "runtime/station/Station.hpp"
-#include "runtime/config/StationConfig.hpp"
 #include "tools/cli/Command.hpp"
 
 #include <iostream>
@@ -33,12 +33,12 @@ int check(const std::string& file) {
     return kExitOk;
 }
 
-const bool registered = registerCommand({"check", "Validate a station config and load its assets without running it",
-                                         [](CommandLine& line) {
-                                             auto file = std::make_shared<std::string>();
-                                             line.option("config", *file, "Station config (.yaml)").required();
-                                             return [file] { return check(*file); };
-                                         }});
+const bool registered = registerCommand(
+    {"check", "Validate a station config and load its assets without running it", [](CommandLine& line) {
+         auto file = std::make_shared<std::string>();
+         line.option("config", *file, "Station config (.yaml)").required();
+         return [file] { return check(*file); };
+     }});
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

@@ -9,7 +9,8 @@
 // (The floor frame is right-handed with +y up, so from above, with x to the
 // right, z points down the page: the print lies the way it reads.)
 //
-//   std::vector<FloorPoint> corners = findFloorMarker(image, "DICT_4X4_50", 7, 0.40);   // InputError when it is not there
+//   std::vector<FloorPoint> corners = findFloorMarker(image, "DICT_4X4_50", 7, 0.40);   // InputError when it is not
+//   there
 
 #include <opencv2/core.hpp>
 
@@ -28,4 +29,4 @@ struct FloorPoint {
 // printed. `sizeMetres` is the black square's edge, border included.
 std::vector<FloorPoint> findFloorMarker(const cv::Mat& image, const std::string& dictionary, int id, double sizeMetres);
 
-} // namespace arcomp
+}  // namespace arcomp

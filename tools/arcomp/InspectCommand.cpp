@@ -47,14 +47,18 @@ std::string decimal(float v) {
 // geometries drawn with it, which carry the per-vertex ones.
 std::vector<std::string> materialFeatures(const Material& m, const std::vector<const Geometry*>& used) {
     std::vector<std::string> f;
-    if (m.unlit) f.push_back("unlit");
-    else f.push_back("metallic-roughness (m " + decimal(m.metallic) + ", r " + decimal(m.roughness) + ")");
+    if (m.unlit)
+        f.push_back("unlit");
+    else
+        f.push_back("metallic-roughness (m " + decimal(m.metallic) + ", r " + decimal(m.roughness) + ")");
     if (m.baseColorTexture.present()) f.push_back("base colour texture");
     if (!m.unlit && m.metallicRoughnessTexture.present()) f.push_back("metallic-roughness texture");
     if (!m.unlit && m.normalTexture.present()) f.push_back("normal map (scale " + number(m.normalScale) + ")");
-    if (!m.unlit && m.occlusionTexture.present()) f.push_back("occlusion (strength " + number(m.occlusionStrength) + ")");
+    if (!m.unlit && m.occlusionTexture.present())
+        f.push_back("occlusion (strength " + number(m.occlusionStrength) + ")");
     if (m.emissive != glm::vec3(0.0f) || m.emissiveTexture.present()) {
-        std::string e = "emissive (" + decimal(m.emissive.r) + " " + decimal(m.emissive.g) + " " + decimal(m.emissive.b);
+        std::string e =
+            "emissive (" + decimal(m.emissive.r) + " " + decimal(m.emissive.g) + " " + decimal(m.emissive.b);
         if (m.emissiveStrength != 1.0f) e += " x" + number(m.emissiveStrength);
         f.push_back(e + (m.emissiveTexture.present() ? ", texture)" : ")"));
     }
@@ -86,7 +90,8 @@ std::vector<std::string> materialFeatures(const Material& m, const std::vector<c
 void printMaterials(const Scene& scene) {
     std::map<std::uint32_t, std::set<std::uint32_t>> geometriesOf;
     for (NodeId n : scene.order())
-        if (scene.kind(n) == NodeKind::Mesh) geometriesOf[scene.meshPart(n).material].insert(scene.meshPart(n).geometry);
+        if (scene.kind(n) == NodeKind::Mesh)
+            geometriesOf[scene.meshPart(n).material].insert(scene.meshPart(n).geometry);
     for (const auto& [material, geometries] : geometriesOf) {
         std::vector<const Geometry*> used;
         for (std::uint32_t g : geometries) used.push_back(&scene.geometry(g));
@@ -109,8 +114,7 @@ void printAnimations(const SceneFile& file) {
         std::set<Interpolation> used;
         for (const AnimationChannel& c : clip.channels) used.insert(c.interpolation);
         std::cout << "animation " << i << " '" << clip.name << "': " << clip.channels.size()
-                  << (clip.channels.size() == 1 ? " channel, " : " channels, ")
-                  << clip.duration() << " s";
+                  << (clip.channels.size() == 1 ? " channel, " : " channels, ") << clip.duration() << " s";
         for (Interpolation mode : used) std::cout << ", " << interpolationName(mode);
         std::cout << "\n";
     }
@@ -146,19 +150,23 @@ int inspect(const std::string& path) {
     std::cout << "nodes " << scene.nodeCount() << ", meshes " << meshes << ", triangles " << triangles
               << ", geometries " << scene.geometries().size() << ", materials " << scene.materials().size()
               << ", images " << scene.images().size() << "\n";
-    if (b.empty()) std::cout << "bounds: empty\n";
-    else std::cout << "bounds: centre (" << b.center.x << ", " << b.center.y << ", " << b.center.z << "), radius " << b.radius << "\n";
+    if (b.empty())
+        std::cout << "bounds: empty\n";
+    else
+        std::cout << "bounds: centre (" << b.center.x << ", " << b.center.y << ", " << b.center.z << "), radius "
+                  << b.radius << "\n";
     printMaterials(scene);
     printAnimations(file);
     for (const std::string& w : file.warnings) std::cout << "warning: " << w << "\n";
     return kExitOk;
 }
 
-const bool registered = registerCommand({"inspect", "Print a scene's node tree with counts and bounds", [](CommandLine& line) {
-                                             auto path = std::make_shared<std::string>();
-                                             line.option("scene", *path, "Model or station config").required();
-                                             return [path] { return inspect(*path); };
-                                         }});
+const bool registered =
+    registerCommand({"inspect", "Print a scene's node tree with counts and bounds", [](CommandLine& line) {
+                         auto path = std::make_shared<std::string>();
+                         line.option("scene", *path, "Model or station config").required();
+                         return [path] { return inspect(*path); };
+                     }});
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

@@ -47,20 +47,19 @@ int inspectVideo(const std::string& source) {
         for (const auto& id : cams) std::printf("  %s\n", id.c_str());
     } else {
         const VideoFileInfo i = probeVideoFile(source);
-        std::printf("file: %s\n  codec %s\n  size %dx%d\n  fps %.3f\n  frames %lld\n", source.c_str(),
-                    i.codec.c_str(), i.width, i.height, i.fps, static_cast<long long>(i.frameCount));
+        std::printf("file: %s\n  codec %s\n  size %dx%d\n  fps %.3f\n  frames %lld\n", source.c_str(), i.codec.c_str(),
+                    i.width, i.height, i.fps, static_cast<long long>(i.frameCount));
     }
     return kExitOk;
 }
 
-const bool registered = registerCommand({"inspect-video", "List a video file's or camera's formats, sizes and rates",
-                                         [](CommandLine& line) {
-                                             auto source = std::make_shared<std::string>();
-                                             line.option("source", *source,
-                                                            "File, /dev/videoN, /dev/v4l/by-id/..., pattern[:WxH@fps] or libcamera")
-                                                 .required();
-                                             return [source] { return inspectVideo(*source); };
-                                         }});
+const bool registered = registerCommand(
+    {"inspect-video", "List a video file's or camera's formats, sizes and rates", [](CommandLine& line) {
+         auto source = std::make_shared<std::string>();
+         line.option("source", *source, "File, /dev/videoN, /dev/v4l/by-id/..., pattern[:WxH@fps] or libcamera")
+             .required();
+         return [source] { return inspectVideo(*source); };
+     }});
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

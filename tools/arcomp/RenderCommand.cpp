@@ -3,13 +3,13 @@
 
 #include "graph/animation/AnimationPlayer.hpp"
 #include "graph/core/SelectPass.hpp"
-#include "runtime/render/Environment.hpp"
 #include "runtime/gl/GlContext.hpp"
-#include "runtime/station/ImageFile.hpp"
+#include "runtime/gl/RenderTarget.hpp"
+#include "runtime/render/Environment.hpp"
 #include "runtime/render/ImpostorBaker.hpp"
 #include "runtime/render/PointCloudLayer.hpp"
-#include "runtime/gl/RenderTarget.hpp"
 #include "runtime/render/Renderer.hpp"
+#include "runtime/station/ImageFile.hpp"
 #include "runtime/station/SceneFile.hpp"
 #include "tools/cli/CliParse.hpp"
 #include "tools/cli/Command.hpp"
@@ -24,7 +24,7 @@ namespace {
 
 struct RenderOptions {
     std::string scene, out, size = "640x480", eye, target, shading = "phong", gl = "auto", lightDirection, lightColor,
-        environment, animation;
+                            environment, animation;
     float fovy = 0.0f;  // 0: the station camera's, else 45
     std::optional<float> environmentIntensity;
     float lightIntensity = RenderSettings{}.lightIntensity;
@@ -40,7 +40,8 @@ void pose(SceneFile& file, const RenderOptions& o) {
         return;
     }
     if (!file.world.animations.empty()) {
-        if (!o.animation.empty()) throw InputError("--animation: a station config names each object's animation itself");
+        if (!o.animation.empty())
+            throw InputError("--animation: a station config names each object's animation itself");
         animateObjects(file.world, o.time);
         return;
     }
@@ -85,8 +86,8 @@ int render(const RenderOptions& o) {
     if (!o.eye.empty() || !o.target.empty() || view.viewport != size || o.fovy > 0.0f) {
         const Sphere b = scene.bound().empty() ? Sphere{glm::vec3(0.0f), 1.0f} : scene.bound();
         const glm::vec3 eye = o.eye.empty() ? view.eye : parseVec3(o.eye, "--eye");
-        const glm::vec3 target = o.target.empty() ? (file.camera ? view.eye + view.forward : b.center)
-                                                  : parseVec3(o.target, "--target");
+        const glm::vec3 target =
+            o.target.empty() ? (file.camera ? view.eye + view.forward : b.center) : parseVec3(o.target, "--target");
         const float distance = glm::length(eye - b.center);
         const float fovy = o.fovy > 0.0f ? o.fovy : glm::degrees(view.fovyRadians);
         view = View::lookAt(eye, target, {0.0f, 1.0f, 0.0f}, fovy, size,
@@ -113,7 +114,7 @@ int render(const RenderOptions& o) {
     target.bind();
     Renderer renderer;
     // --environment over the config's render.environment over neutral.
-    const std::string environment = !o.environment.empty() ? o.environment
+    const std::string environment = !o.environment.empty()     ? o.environment
                                     : file.environment.empty() ? std::string("neutral")
                                                                : file.environment.string();
     if (environment != "neutral") renderer.setEnvironment(prefilterEnvironment(loadEnvironment(environment)));
@@ -131,7 +132,8 @@ int render(const RenderOptions& o) {
     for (std::size_t i = 3; i < image.rgba.size(); i += 4) covered += image.rgba[i] > 0;
     std::cout << "wrote " << o.out << ": " << size.x << "x" << size.y << ", " << list.items.size() << " meshes, "
               << renderer.trianglesDrawn() << " triangles, "
-              << (clouds ? std::to_string(clouds->cloudsDrawn()) + " point clouds, " : std::string()) << toString(context->api()) << ", "
+              << (clouds ? std::to_string(clouds->cloudsDrawn()) + " point clouds, " : std::string())
+              << toString(context->api()) << ", "
               << 100.0 * static_cast<double>(covered) / static_cast<double>(size.x * size.y) << "% covered\n";
     return kExitOk;
 }
@@ -148,18 +150,25 @@ const bool registered = registerCommand(
          line.option("--target", o->target, "Point looked at X,Y,Z (default: the scene's centre)");
          line.option("--fovy", o->fovy, "Vertical field of view in degrees (default: the station camera's, else 45)")
              .range(1.0, 179.0);
-         line.option("--light-direction", o->lightDirection, "Direction towards the light X,Y,Z, world space (default: from above, left and front)");
+         line.option("--light-direction", o->lightDirection,
+                     "Direction towards the light X,Y,Z, world space (default: from above, left and front)");
          line.option("--light-color", o->lightColor, "The directional light's linear colour R,G,B (default: white)");
-         line.option("--time", o->time, "Pose animations at this many seconds: a config's objects, or a model's --animation")
+         line.option("--time", o->time,
+                     "Pose animations at this many seconds: a config's objects, or a model's --animation")
              .range(0.0, 1e9);
-         line.option("--animation", o->animation, "A model file's animation to pose at --time, by name or index (default: the first)");
+         line.option("--animation", o->animation,
+                     "A model file's animation to pose at --time, by name or index (default: the first)");
          line.option("--shading", o->shading, "unlit, flat, gouraud or phong").showDefault();
          line.option("--gl", o->gl, "OpenGL API: auto, gl33 or es3").showDefault();
-         line.option("--environment", o->environment,
-                     "Image-based light: neutral, or an equirectangular .hdr or .png (default: the config's, else neutral)");
-         line.option("--environment-intensity", *environmentIntensity, "Scales the image-based light (default: the config's, else 1)")
+         line.option(
+             "--environment", o->environment,
+             "Image-based light: neutral, or an equirectangular .hdr or .png (default: the config's, else neutral)");
+         line.option("--environment-intensity", *environmentIntensity,
+                     "Scales the image-based light (default: the config's, else 1)")
              .range(0.0, 1000.0);
-         line.option("--light-intensity", o->lightIntensity, "The directional light, as three.js's DirectionalLight.intensity").showDefault();
+         line.option("--light-intensity", o->lightIntensity,
+                     "The directional light, as three.js's DirectionalLight.intensity")
+             .showDefault();
          return [o, environmentIntensity] {
              if (*environmentIntensity >= 0.0f) o->environmentIntensity = *environmentIntensity;
              return render(*o);
@@ -185,5 +194,5 @@ const bool registeredEnvironment = registerCommand(
          return [source, out] { return writeEnvironment(*source, *out); };
      }});
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

@@ -3,11 +3,11 @@
 // composited frames go to DIR as frame-000000.png, ... Deterministic: the
 // same input gives bit-identical images on the same machine.
 
-#include "runtime/gl/GlContext.hpp"
-#include "runtime/station/ReplayInput.hpp"
 #include "runtime/app/ShutdownSignals.hpp"
-#include "runtime/operator/StationLog.hpp"
 #include "runtime/app/StationRunner.hpp"
+#include "runtime/gl/GlContext.hpp"
+#include "runtime/operator/StationLog.hpp"
+#include "runtime/station/ReplayInput.hpp"
 #include "tools/cli/Command.hpp"
 
 #include <iostream>
@@ -34,7 +34,8 @@ void applyCommandLine(const ReplayOptions& o, StationConfig& cfg) {
         spec.fallback = {};
         cfg.compositing.video = spec;
     }
-    if (!cfg.compositing.video) throw InputError(cfg.file.string() + ": no `video` section and no --video FILE: nothing to replay");
+    if (!cfg.compositing.video)
+        throw InputError(cfg.file.string() + ": no `video` section and no --video FILE: nothing to replay");
     cfg.compositing.output.pngDir = o.out;
     if (!o.videoOut.empty()) cfg.compositing.output.videoFile = o.videoOut;
     if (!o.gl.empty()) cfg.render.gl = o.gl;
@@ -54,8 +55,8 @@ int replay(const ReplayOptions& o) {
     // changed video section opens again through the same path.
     std::vector<std::string> warnings;
     std::optional<StationInput> first = openReplayInput(*cfg.compositing.video, warnings);
-    const bool endless = cfg.compositing.video->kind == SourceKind::Pattern || !warnings.empty() ||
-                         cfg.compositing.video->loop;
+    const bool endless =
+        cfg.compositing.video->kind == SourceKind::Pattern || !warnings.empty() || cfg.compositing.video->loop;
     const long frames = o.frames >= 0 ? o.frames : endless ? kPatternFrames : -1;
     for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
     auto openInput = [&first](const StationConfig& c) {
@@ -70,9 +71,12 @@ int replay(const ReplayOptions& o) {
 
     bool isAuto = false;
     const auto api = parseGlApi(cfg.render.gl, isAuto);
-    auto context = HeadlessContext::create(isAuto ? GlRequest::Auto : *api == GlApiKind::Es3 ? GlRequest::Es3 : GlRequest::Gl33);
+    auto context = HeadlessContext::create(isAuto                   ? GlRequest::Auto
+                                           : *api == GlApiKind::Es3 ? GlRequest::Es3
+                                                                    : GlRequest::Gl33);
     installShutdownSignals();
-    StationRunner runner(cfg, [&o](StationConfig& c) { applyCommandLine(o, c); }, openInput);
+    StationRunner runner(
+        cfg, [&o](StationConfig& c) { applyCommandLine(o, c); }, openInput);
 
     double total = 0.0;
     long done = 0;
@@ -88,7 +92,8 @@ int replay(const ReplayOptions& o) {
     std::cout << "replayed " << done << " frames (" << station.size().x << "x" << station.size().y << ", "
               << toString(context->api()) << ", " << (done ? total / static_cast<double>(done) : 0.0)
               << " ms/frame) into " << o.out << "/frame-NNNNNN.png";
-    if (!runner.config().compositing.output.videoFile.empty()) std::cout << " and " << runner.config().compositing.output.videoFile.string();
+    if (!runner.config().compositing.output.videoFile.empty())
+        std::cout << " and " << runner.config().compositing.output.videoFile.string();
     std::cout << "\n";
     if (runner.outputFailures() > 0) {
         // Every frame was composited; some files are missing. The ones written are whole.
@@ -110,10 +115,11 @@ const bool registered = registerCommand(
          line.option("--video-out", o->videoOut, "Also write the composited frames to this video file");
          line.option("--gl", o->gl, "OpenGL API: auto, gl33 or es3 (default: the config's render.gl)")
              .oneOf({"auto", "gl33", "es3"});
-         line.option("--log-level", o->logLevel, "trace, debug, info, warn, error, critical or off (default: the config's)")
+         line.option("--log-level", o->logLevel,
+                     "trace, debug, info, warn, error, critical or off (default: the config's)")
              .oneOf({"trace", "debug", "info", "warn", "error", "critical", "off"});
          return [o] { return replay(*o); };
      }});
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

@@ -9,19 +9,19 @@
 // the video), F12 or P saves a screenshot, R reloads the config (as SIGHUP
 // does), Esc or Q quits.
 
+#include "graph/core/JoinText.hpp"
 #include "runtime/app/CalibrationOverlay.hpp"
 #include "runtime/app/ShutdownSignals.hpp"
-#include "graph/core/JoinText.hpp"
-#include "runtime/operator/StationLog.hpp"
 #include "runtime/app/StationRunner.hpp"
 #include "runtime/app/StatsOverlay.hpp"
-#include "runtime/gl/WindowContext.hpp"
 #include "runtime/app/WindowPresenter.hpp"
+#include "runtime/gl/WindowContext.hpp"
+#include "runtime/operator/StationLog.hpp"
 #include "runtime/station/ImageFile.hpp"
 #include "tools/cli/CliParse.hpp"
 #include "tools/cli/Command.hpp"
-#include "video/sources/OpenSource.hpp"
 #include "video/pixels/VideoError.hpp"
+#include "video/sources/OpenSource.hpp"
 
 #include <GLFW/glfw3.h>
 #include <spdlog/spdlog.h>
@@ -80,7 +80,9 @@ int run(const RunOptions& o) {
                                          .monitor = o.monitor,
                                          .vsync = true,
                                          .hideCursor = true},
-                                        isAuto ? GlRequest::Auto : *api == GlApiKind::Es3 ? GlRequest::Es3 : GlRequest::Gl33);
+                                        isAuto                   ? GlRequest::Auto
+                                        : *api == GlApiKind::Es3 ? GlRequest::Es3
+                                                                 : GlRequest::Gl33);
     installShutdownSignals();
     std::unique_ptr<StationRunner> runner = startStation(cfg);
     WindowPresenter presenter;
@@ -89,10 +91,14 @@ int run(const RunOptions& o) {
 
     bool showOverlay = o.overlay, takeScreenshot = false;
     window->onKey([&](int key) {
-        if (key == GLFW_KEY_TAB) showOverlay = !showOverlay;
-        else if (key == GLFW_KEY_F12 || key == GLFW_KEY_P) takeScreenshot = true;
-        else if (key == GLFW_KEY_R) requestReload();
-        else if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) window->requestClose();
+        if (key == GLFW_KEY_TAB)
+            showOverlay = !showOverlay;
+        else if (key == GLFW_KEY_F12 || key == GLFW_KEY_P)
+            takeScreenshot = true;
+        else if (key == GLFW_KEY_R)
+            requestReload();
+        else if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q)
+            window->requestClose();
     });
 
     long done = 0;
@@ -111,8 +117,8 @@ int run(const RunOptions& o) {
         last = now;
         const Station& station = runner->station();
         const FrameStats& stats = station.stats();
-        overlay.add(stats, station.drawList(), {station.inputName(), station.inputState(), station.inputDrops()}, frameMs,
-                    stats.budget ? runner->config().budget.targetMs : 1000.0 / 60.0);
+        overlay.add(stats, station.drawList(), {station.inputName(), station.inputState(), station.inputDrops()},
+                    frameMs, stats.budget ? runner->config().budget.targetMs : 1000.0 / 60.0);
         // The config of the station running now: a reload may bring another camera file.
         const std::optional<CalibratedCamera>& camera = runner->config().camera.calibrated;
         if (showOverlay && camera) calibration.draw(*camera, station.size(), station.standingPeople());
@@ -121,7 +127,8 @@ int run(const RunOptions& o) {
                           showOverlay && camera ? &calibration.image() : nullptr);
         const bool finalFrame = o.frames >= 0 && done == o.frames;
         if (takeScreenshot || (finalFrame && !o.screenshot.empty())) {
-            const std::string file = finalFrame && !o.screenshot.empty() ? o.screenshot : "screenshot-" + std::to_string(done) + ".png";
+            const std::string file =
+                finalFrame && !o.screenshot.empty() ? o.screenshot : "screenshot-" + std::to_string(done) + ".png";
             try {
                 writePng(file, presenter.screenshot(size));
                 spdlog::info(joinText("screenshot ", file));
@@ -140,20 +147,22 @@ int run(const RunOptions& o) {
 }
 
 const bool registered = registerCommand(
-    {"run", "Run a station live: cameras, scene and compositing in a (full-screen) window",
-     [](CommandLine& line) {
+    {"run", "Run a station live: cameras, scene and compositing in a (full-screen) window", [](CommandLine& line) {
          auto o = std::make_shared<RunOptions>();
          line.option("config", o->config, "Station config (.yaml)").required();
          line.option("--frames", o->frames, "Quit after N frames (default: run until stopped)");
          line.flag("--windowed", o->windowed, "A window instead of full screen");
          line.option("--monitor", o->monitor, "Monitor index for full screen").showDefault();
          line.option("--size", o->size, "Window size WIDTHxHEIGHT when windowed").showDefault();
-         line.flag("--overlay", o->overlay, "Show the stats overlay, and the floor grid with a calibrated camera, from the start (Tab toggles it)");
+         line.flag(
+             "--overlay", o->overlay,
+             "Show the stats overlay, and the floor grid with a calibrated camera, from the start (Tab toggles it)");
          line.option("--screenshot", o->screenshot, "With --frames: save the last frame shown to this PNG");
-         line.option("--log-level", o->logLevel, "trace, debug, info, warn, error, critical or off (default: the config's)")
+         line.option("--log-level", o->logLevel,
+                     "trace, debug, info, warn, error, critical or off (default: the config's)")
              .oneOf({"trace", "debug", "info", "warn", "error", "critical", "off"});
          return [o] { return run(*o); };
      }});
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

@@ -12,7 +12,7 @@ bool parseFloat(std::string_view s, float& out) {
     const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
     return ec == std::errc() && end == s.data() + s.size() && std::isfinite(out);
 }
-} // namespace
+}  // namespace
 
 glm::ivec2 parseSize(const std::string& text, const std::string& option) {
     const auto x = text.find('x');
@@ -33,7 +33,8 @@ glm::vec3 parseVec3(const std::string& text, const std::string& option) {
     for (int i = 0; i < 3; ++i) {
         const auto comma = text.find(',', start);
         const bool last = i == 2;
-        if ((comma == std::string::npos) != last || !parseFloat(std::string_view(text).substr(start, comma - start), v[i]))
+        if ((comma == std::string::npos) != last ||
+            !parseFloat(std::string_view(text).substr(start, comma - start), v[i]))
             throw InputError(option + " '" + text + "': expected three numbers X,Y,Z, e.g. 0,1.5,4");
         start = comma + 1;
     }
@@ -48,4 +49,4 @@ TimerMode parseTimerMode(const std::string& text, const std::string& option) {
     throw InputError(option + " '" + text + "': expected finish, cpu, query or auto");
 }
 
-} // namespace arcomp
+}  // namespace arcomp

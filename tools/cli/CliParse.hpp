@@ -19,4 +19,4 @@ inline constexpr const char* kTimerModeHelp =
     "without other programs' share of the cores), auto or query (GL_TIME_ELAPSED where available; on "
     "llvmpipe it leaves out most of the work)";
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -32,4 +32,4 @@ bool registerCommand(Command command) {
     return true;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

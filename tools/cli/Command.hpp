@@ -56,4 +56,4 @@ struct InputError : BadInput {
 
 enum ExitCode : int { kExitOk = 0, kExitFailure = 1, kExitBadInput = 2 };
 
-} // namespace arcomp
+}  // namespace arcomp

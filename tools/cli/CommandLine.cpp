@@ -57,4 +57,4 @@ CommandOption CommandLine::flag(const std::string& name, bool& value, const std:
     return CommandOption(app_.add_flag(name, value, help));
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -19,7 +19,7 @@
 namespace CLI {
 class App;
 class Option;
-} // namespace CLI
+}  // namespace CLI
 
 namespace arcomp {
 
@@ -57,4 +57,4 @@ private:
     CLI::App& app_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -25,7 +25,7 @@ void addAll(CLI::App& parent, std::vector<Command>& commands, Actions& actions) 
     }
 }
 
-} // namespace
+}  // namespace
 
 int runCommandLine(int argc, char** argv, const CommandProgram& program) {
     CLI::App app{program.summary, program.program};
@@ -72,4 +72,4 @@ int runCommandLine(int argc, char** argv, const CommandProgram& program) {
     return kExitBadInput;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -37,4 +37,4 @@ struct CommandProgram {
 // The exit code (ExitCode); registeredCommands() are the top-level commands.
 int runCommandLine(int argc, char** argv, const CommandProgram& program);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -58,9 +58,8 @@ int parseAsFile(const std::uint8_t* data, std::size_t size, const std::string& n
     const auto file = fuzzInputFile(data, size, name);
     try {
         parse(file);
-    } catch (const DocumentedError&) {
-    }
+    } catch (const DocumentedError&) {}
     return 0;
 }
 
-} // namespace arcomp::fuzz
+}  // namespace arcomp::fuzz

@@ -13,7 +13,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     using arcomp::HttpRequestHead;
     const std::string_view bytes(reinterpret_cast<const char*>(data), size);
     const HttpRequestHead whole = arcomp::parseHttpRequestHead(bytes);
-    if (whole.state == HttpRequestHead::Complete && (whole.method.empty() || whole.path.empty() || whole.path[0] != '/'))
+    if (whole.state == HttpRequestHead::Complete &&
+        (whole.method.empty() || whole.path.empty() || whole.path[0] != '/'))
         std::abort();
     if (whole.state == HttpRequestHead::Bad && whole.error.empty()) std::abort();
     if (size == 0) return 0;

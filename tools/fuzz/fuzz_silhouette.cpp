@@ -4,7 +4,6 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     try {
         arcomp::decodeSilhouetteMesh(std::span(reinterpret_cast<const std::byte*>(data), size), "fuzz.sil");
-    } catch (const arcomp::ModelError&) {
-    }
+    } catch (const arcomp::ModelError&) {}
     return 0;
 }

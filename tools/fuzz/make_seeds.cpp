@@ -29,11 +29,9 @@ Geometry tetrahedron() {
     return g;
 }
 
-void writeText(const fs::path& file, const std::string& text) {
-    std::ofstream(file, std::ios::binary) << text;
-}
+void writeText(const fs::path& file, const std::string& text) { std::ofstream(file, std::ios::binary) << text; }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
     if (argc != 2) {
@@ -41,7 +39,8 @@ int main(int argc, char** argv) {
         return 2;
     }
     const fs::path out = argv[1];
-    for (const char* t : {"lod", "silhouette", "voxel", "calibration", "camera", "gaze", "obj", "http"}) fs::create_directories(out / t);
+    for (const char* t : {"lod", "silhouette", "voxel", "calibration", "camera", "gaze", "obj", "http"})
+        fs::create_directories(out / t);
 
     const Geometry g = tetrahedron();
     std::vector<LodLevel> levels(2);
@@ -83,19 +82,23 @@ int main(int argc, char** argv) {
     writeCalibration(out / "calibration/calib.yaml", model, {"gl33: fuzz seed", {1280, 720}});
 
     CalibratedCamera camera;
-    camera.intrinsics = {.imageSize = {640, 480}, .fx = 500.0, .fy = 500.0, .cx = 319.5, .cy = 239.5, .distortion = {-0.1, 0.01, 0.0, 0.0, 0.0}};
+    camera.intrinsics = {.imageSize = {640, 480},
+                         .fx = 500.0,
+                         .fy = 500.0,
+                         .cx = 319.5,
+                         .cy = 239.5,
+                         .distortion = {-0.1, 0.01, 0.0, 0.0, 0.0}};
     camera.translation = {0.0, -3.0, 8.0};
     writeCameraFile(out / "camera/camera.yaml", camera, "fuzz seed");
 
     writeText(out / "http/scrape.txt", "GET /metrics HTTP/1.1\r\nHost: 127.0.0.1:9464\r\nAccept: text/plain\r\n\r\n");
     writeText(out / "http/token.txt", "GET /status?x=1 HTTP/1.0\nAuthorization: Bearer 0123456789abcdef\n\n");
 
-    writeText(out / "gaze/track.csv",
-              "time,eye_x,eye_y,eye_z,gaze_x,gaze_y,gaze_z\n"
-              "# a comment\n"
-              "0.0,0,1.6,5,0,0,-1\n\n"
-              "0.5,0.1,1.6,5,0.1,0,-1\n"
-              "1.25,0.2,1.6,4.9,0.2,-0.1,-1\n");
+    writeText(out / "gaze/track.csv", "time,eye_x,eye_y,eye_z,gaze_x,gaze_y,gaze_z\n"
+                                      "# a comment\n"
+                                      "0.0,0,1.6,5,0,0,-1\n\n"
+                                      "0.5,0.1,1.6,5,0.1,0,-1\n"
+                                      "1.25,0.2,1.6,4.9,0.2,-0.1,-1\n");
     writeText(out / "obj/cube.obj",
               "mtllib cube.mtl\no cube\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
               "vt 0 0\nvt 1 0\nvt 1 1\nvn 0 0 -1\nvn 0 0 1\ng front\nusemtl red\n"

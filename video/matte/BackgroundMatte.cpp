@@ -18,7 +18,7 @@ void check(bool ok, const std::string& what) {
 
 cv::Mat ellipse(int px) { return px > 0 ? cv::getStructuringElement(cv::MORPH_ELLIPSE, {px, px}) : cv::Mat(); }
 
-} // namespace
+}  // namespace
 
 BackgroundMatte::BackgroundMatte(const BackgroundSpec& spec) : spec_(spec) {
     check(spec.scale >= 0.1 && spec.scale <= 1.0, "scale must lie in 0.1..1");
@@ -28,7 +28,8 @@ BackgroundMatte::BackgroundMatte(const BackgroundSpec& spec) : spec_(spec) {
     check(spec.threshold > 0.0, "threshold must be > 0");
     switch (spec.method) {
     case BackgroundMethod::Consensus:
-        throw VideoError("background matte", "settings", "the consensus method is ConsensusMatte's (makeMatte builds it)");
+        throw VideoError("background matte", "settings",
+                         "the consensus method is ConsensusMatte's (makeMatte builds it)");
     case BackgroundMethod::Mog2: model_ = cv::createBackgroundSubtractorMOG2(spec.history, spec.threshold, true); break;
     case BackgroundMethod::Knn: model_ = cv::createBackgroundSubtractorKNN(spec.history, 400.0, true); break;
     case BackgroundMethod::Cnt:
@@ -61,8 +62,10 @@ std::string BackgroundMatte::name() const {
 
 void BackgroundMatte::foreground(const cv::Mat& small) {
     if (spec_.method == BackgroundMethod::CleanPlate) {
-        if (plate_.empty()) plate_ = small.clone();  // the first frame is the empty place
-        else if (plate_.size() != small.size()) cv::resize(plate_, plate_, small.size(), 0, 0, cv::INTER_AREA);
+        if (plate_.empty())
+            plate_ = small.clone();  // the first frame is the empty place
+        else if (plate_.size() != small.size())
+            cv::resize(plate_, plate_, small.size(), 0, 0, cv::INTER_AREA);
         cv::Mat diff;
         cv::absdiff(small, plate_, diff);
         cv::Mat largest = diff.reshape(1, static_cast<int>(diff.total()));
@@ -77,8 +80,10 @@ void BackgroundMatte::foreground(const cv::Mat& small) {
 
 void BackgroundMatte::apply(const cv::Mat& frame, cv::Mat& person) {
     CV_Assert(frame.type() == CV_8UC3);
-    if (spec_.scale < 1.0) shrinkByArea(frame, spec_.scale, small_);
-    else small_ = frame;
+    if (spec_.scale < 1.0)
+        shrinkByArea(frame, spec_.scale, small_);
+    else
+        small_ = frame;
     foreground(small_);
     if (!openKernel_.empty()) cv::morphologyEx(mask_, mask_, cv::MORPH_OPEN, openKernel_);
     if (!closeKernel_.empty()) cv::morphologyEx(mask_, mask_, cv::MORPH_CLOSE, closeKernel_);
@@ -96,9 +101,11 @@ void BackgroundMatte::apply(const cv::Mat& frame, cv::Mat& person) {
             cv::addWeighted(previous_, spec_.temporal, soft_, 1.0 - spec_.temporal, 0.0, soft_);
         soft_.copyTo(previous_);
     }
-    if (soft_.size() != frame.size()) cv::resize(soft_, alpha_, frame.size(), 0, 0, cv::INTER_LINEAR);
-    else soft_.copyTo(alpha_);
+    if (soft_.size() != frame.size())
+        cv::resize(soft_, alpha_, frame.size(), 0, 0, cv::INTER_LINEAR);
+    else
+        soft_.copyTo(alpha_);
     premultiply(frame, alpha_, person);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -45,4 +45,4 @@ private:
     cv::Mat openKernel_, closeKernel_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

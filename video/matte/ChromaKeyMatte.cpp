@@ -19,7 +19,7 @@ float smoothstep01(float t) {
     return t * t * (3.0f - 2.0f * t);
 }
 
-} // namespace
+}  // namespace
 
 float chromaKeyAlpha(float d, float similarity, float smoothness) {
     if (smoothness <= 0.0f) return d > similarity ? 1.0f : 0.0f;
@@ -46,7 +46,8 @@ ChromaKeyMatte::ChromaKeyMatte(const ChromaKeySpec& spec) : alpha_(256 * 256), k
         for (int cr = 0; cr < 256; ++cr) {
             const float d = std::hypot((cb - 128) / 255.0f - key[0], (cr - 128) / 255.0f - key[1]);
             const std::size_t i = static_cast<std::size_t>(cb) * 256 + static_cast<std::size_t>(cr);
-            alpha_[i] = static_cast<std::uint8_t>(std::lround(255.0f * chromaKeyAlpha(d, spec.similarity, spec.smoothness)));
+            alpha_[i] =
+                static_cast<std::uint8_t>(std::lround(255.0f * chromaKeyAlpha(d, spec.similarity, spec.smoothness)));
             keep_[i] = static_cast<std::uint8_t>(std::lround(255.0f * chromaSpillKeep(d, spec.similarity, spec.spill)));
         }
 }
@@ -62,8 +63,10 @@ void ChromaKeyMatte::apply(const cv::Mat& frame, cv::Mat& person) {
             for (int x = 0; x < frame.cols; ++x, c += 3, o += 4) {
                 const int b = c[0], g = c[1], r = c[2];
                 const float y = kR * static_cast<float>(r) + kG * static_cast<float>(g) + kB * static_cast<float>(b);
-                const int cb = std::clamp(static_cast<int>(std::lround((static_cast<float>(b) - y) * kCb)) + 128, 0, 255);
-                const int cr = std::clamp(static_cast<int>(std::lround((static_cast<float>(r) - y) * kCr)) + 128, 0, 255);
+                const int cb =
+                    std::clamp(static_cast<int>(std::lround((static_cast<float>(b) - y) * kCb)) + 128, 0, 255);
+                const int cr =
+                    std::clamp(static_cast<int>(std::lround((static_cast<float>(r) - y) * kCr)) + 128, 0, 255);
                 const std::size_t i = static_cast<std::size_t>(cb) * 256 + static_cast<std::size_t>(cr);
                 const int a = alpha_[i];
                 const int keep = keep_[i];
@@ -82,4 +85,4 @@ void ChromaKeyMatte::apply(const cv::Mat& frame, cv::Mat& person) {
     });
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -38,4 +38,4 @@ private:
     std::vector<std::uint8_t> keep_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

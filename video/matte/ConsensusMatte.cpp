@@ -97,10 +97,11 @@ void applyAtFullSize(const cv::Mat& frame, const cv::Mat& a, const cv::Mat& b, c
     });
 }
 
-} // namespace
+}  // namespace
 
 ConsensusMatte::ConsensusMatte(const BackgroundSpec& spec) : spec_(spec), model_(spec.consensus) {
-    if (spec.scale < 0.1 || spec.scale > 1.0) throw VideoError("background matte", "settings", "scale must lie in 0.1..1");
+    if (spec.scale < 0.1 || spec.scale > 1.0)
+        throw VideoError("background matte", "settings", "scale must lie in 0.1..1");
     const ConsensusSpec& c = spec.consensus;
     if (c.minBlobArea < 0.0 || c.minBlobArea >= 1.0 || c.maxHoleArea < 0.0 || c.maxHoleArea >= 1.0)
         throw VideoError("background matte", "settings", "min_blob_area and max_hole_area must lie in 0..1");
@@ -118,14 +119,16 @@ ConsensusMatte::ConsensusMatte(const BackgroundSpec& spec) : spec_(spec), model_
 void ConsensusMatte::cleanUp() {
     cv::compare(labels_, ConsensusModel::kPerson, mask_, cv::CMP_EQ);
     const double area = static_cast<double>(mask_.total());
-    const cv::Rect people = spec_.consensus.minBlobArea > 0.0
-                                ? dropSmallComponents(mask_, spec_.consensus.minBlobArea * area, ids_, stats_, centroids_)
-                                : cv::boundingRect(mask_);
+    const cv::Rect people =
+        spec_.consensus.minBlobArea > 0.0
+            ? dropSmallComponents(mask_, spec_.consensus.minBlobArea * area, ids_, stats_, centroids_)
+            : cv::boundingRect(mask_);
     // Everything after this only changes pixels near people: it works in
     // their bounding box, grown by what closing and the guided filter reach.
     const int margin = closeKernel_.cols + 2 * guidedRadius() + 2;
-    work_ = people.empty() ? cv::Rect() : (people + cv::Size(2 * margin, 2 * margin) - cv::Point(margin, margin)) &
-                                              cv::Rect(0, 0, mask_.cols, mask_.rows);
+    work_ = people.empty() ? cv::Rect()
+                           : (people + cv::Size(2 * margin, 2 * margin) - cv::Point(margin, margin)) &
+                                 cv::Rect(0, 0, mask_.cols, mask_.rows);
     if (work_.empty()) return;
     cv::Mat region = mask_(work_);
     if (!closeKernel_.empty()) cv::morphologyEx(region, region, cv::MORPH_CLOSE, closeKernel_);
@@ -174,7 +177,8 @@ void ConsensusMatte::forgetGhosts() {
             if (i == 0) continue;
             ++area[i];
             stillArea[i] += still.at<std::uint16_t>(y, x) >= stillEnough;
-            const bool outline = id[x - 1] == 0 || id[x + 1] == 0 || ids_.at<int>(y - 1, x) == 0 || ids_.at<int>(y + 1, x) == 0;
+            const bool outline =
+                id[x - 1] == 0 || id[x + 1] == 0 || ids_.at<int>(y - 1, x) == 0 || ids_.at<int>(y + 1, x) == 0;
             if (!outline) continue;
             sharpNow[i] += sharpness(grey_, x, y);
             sharpModel[i] += sharpness(modelGrey_, x, y);
@@ -261,8 +265,10 @@ void ConsensusMatte::guidedEdges(const cv::Mat& frame) {
 
 void ConsensusMatte::apply(const cv::Mat& frame, cv::Mat& person) {
     CV_Assert(frame.type() == CV_8UC3);
-    if (spec_.scale < 1.0) shrinkByArea(frame, spec_.scale, small_);
-    else small_ = frame;
+    if (spec_.scale < 1.0)
+        shrinkByArea(frame, spec_.scale, small_);
+    else
+        small_ = frame;
     model_.apply(small_, labels_);
     cleanUp();
     if (!work_.empty()) forgetGhosts();
@@ -276,4 +282,4 @@ void ConsensusMatte::apply(const cv::Mat& frame, cv::Mat& person) {
     premultiply(frame, alpha_, person);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

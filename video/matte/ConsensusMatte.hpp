@@ -49,9 +49,9 @@ private:
     cv::Mat closeKernel_;
     cv::Rect work_;  // model-scale box around the people of this frame, where clean-up and edges work
     cv::Mat small_, labels_, mask_, alpha_;
-    cv::Mat ids_, stats_, centroids_, holes_, modelGrey_, ghosts_;               // clean-up scratch
+    cv::Mat ids_, stats_, centroids_, holes_, modelGrey_, ghosts_;                // clean-up scratch
     cv::Mat grey_, guide_, target_, guideSquared_, guideTarget_, meanI_, meanP_;  // guided filter scratch
     cv::Mat meanA_, meanB_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

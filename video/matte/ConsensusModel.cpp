@@ -43,7 +43,7 @@ bool looksLikeShadow(const std::uint8_t* pixel, const std::uint8_t* background, 
     return d0 * d0 + d1 * d1 + d2 * d2 <= spec.shadowChroma * spec.shadowChroma * norm2;
 }
 
-} // namespace
+}  // namespace
 
 ConsensusModel::ConsensusModel(const ConsensusSpec& spec) : spec_(spec) {
     check(spec.samples >= 2 && spec.samples <= 64, "samples must lie in 2..64");
@@ -56,7 +56,8 @@ ConsensusModel::ConsensusModel(const ConsensusSpec& spec) : spec_(spec) {
     check(spec.absorbSeconds > 0.0, "absorb_s must be > 0");
     check(spec.warmupSeconds >= 0.0, "warmup_s must be >= 0");
     check(spec.fps > 0.0 && spec.fps <= 1000.0, "fps must lie in (0, 1000]");
-    check(spec.lightChangeFraction > 0.0 && spec.lightChangeFraction <= 1.0, "light_change_fraction must lie in (0, 1]");
+    check(spec.lightChangeFraction > 0.0 && spec.lightChangeFraction <= 1.0,
+          "light_change_fraction must lie in (0, 1]");
 }
 
 void ConsensusModel::setPlate(const cv::Mat& plate) {
@@ -247,7 +248,8 @@ void ConsensusModel::update(const cv::Mat& image, const cv::Mat& labels) {
                 // Foreground (or shadow): not learnt, unless it has stayed
                 // unchanged for absorbSeconds; then it is learnt at the
                 // background's own pace, a sample at a time.
-                still[x] = l1(in, last) < stillRadius ? static_cast<std::uint16_t>(std::min<int>(still[x] + 1, 65535)) : 0;
+                still[x] =
+                    l1(in, last) < stillRadius ? static_cast<std::uint16_t>(std::min<int>(still[x] + 1, 65535)) : 0;
                 if (still[x] >= absorbFrames && odds(nextRandom(random)) == 0)
                     std::copy(in, in + 3, own + sample(nextRandom(random)) * 3);
                 continue;
@@ -262,11 +264,12 @@ void ConsensusModel::update(const cv::Mat& image, const cv::Mat& labels) {
                 const int nx = std::clamp(x + static_cast<int>(r % 3) - 1, 0, w - 1);
                 const int ny = std::clamp(y + static_cast<int>((r / 3) % 3) - 1, 0, h - 1);
                 if (labels.ptr<std::uint8_t>(ny)[nx] == 0)
-                    std::copy(in, in + 3, &samples_[(static_cast<std::size_t>(ny) * w + nx) * n * 3 + sample(r >> 8) * 3]);
+                    std::copy(in, in + 3,
+                              &samples_[(static_cast<std::size_t>(ny) * w + nx) * n * 3 + sample(r >> 8) * 3]);
             }
         }
     }
     random_ = random;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

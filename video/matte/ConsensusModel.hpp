@@ -79,4 +79,4 @@ private:
     std::uint32_t random_ = 2463534242u;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -23,9 +23,11 @@ void MaskFolderMatte::apply(const cv::Mat& frame, cv::Mat& person) {
         throw VideoError(file.string(), "matte",
                          "mask is " + std::to_string(mask.cols) + "x" + std::to_string(mask.rows) + ", the video " +
                              std::to_string(frame.cols) + "x" + std::to_string(frame.rows));
-    if (mask.channels() > 1) cv::extractChannel(mask, alpha_, 0);
-    else alpha_ = mask;
+    if (mask.channels() > 1)
+        cv::extractChannel(mask, alpha_, 0);
+    else
+        alpha_ = mask;
     premultiply(frame, alpha_, person);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -37,4 +37,4 @@ private:
     cv::Mat alpha_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

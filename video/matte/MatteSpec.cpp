@@ -18,18 +18,19 @@ public:
     std::string name() const override { return "none"; }
 };
 
-} // namespace
+}  // namespace
 
 std::unique_ptr<PersonMatte> makeMatte(const MatteSpec& spec) {
     switch (spec.kind) {
     case MatteKind::None: return std::make_unique<NoMatte>();
     case MatteKind::Chroma: return std::make_unique<ChromaKeyMatte>(spec.chroma);
     case MatteKind::Background:
-        if (spec.background.method == BackgroundMethod::Consensus) return std::make_unique<ConsensusMatte>(spec.background);
+        if (spec.background.method == BackgroundMethod::Consensus)
+            return std::make_unique<ConsensusMatte>(spec.background);
         return std::make_unique<BackgroundMatte>(spec.background);
     case MatteKind::Masks: return std::make_unique<MaskFolderMatte>(spec.masks);
     }
     return std::make_unique<NoMatte>();
 }
 
-} // namespace arcomp
+}  // namespace arcomp

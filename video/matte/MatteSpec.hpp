@@ -33,21 +33,22 @@ enum class BackgroundMethod { Consensus, Mog2, Knn, Cnt, CleanPlate };
 // The consensus model (video/matte/ConsensusModel.hpp): every parameter is a
 // physical quantity, in 8-bit levels, ratios or seconds, not a per-sequence tuning.
 struct ConsensusSpec {
-    int samples = 20;                 // background colours remembered per pixel
-    int matches = 2;                  // samples a pixel must be near to be background
-    double colourRadius = 24.0;       // L1 distance over B, G, R (levels) within which a sample is near: 3 x 8, the noise
-    double shadowDarkest = 0.4;       // a shadow keeps at least this fraction of the background's brightness
-    double shadowLightest = 0.92;     // ... and at most this (above: noise, already background)
-    double shadowChroma = 0.05;       // largest colour change of a shadow, relative to the background's brightness (about 3 degrees)
-    int updateOdds = 16;              // a background pixel refreshes one of its samples with odds 1 in this
-    double absorbSeconds = 180.0;     // a still, unchanging foreground pixel joins the background after this long
-    double warmupSeconds = 2.0;       // busy-scene start: the first background is the median of this many seconds
-    double fps = 25.0;                // frames per second of the video, to turn seconds into frames
-    double lightChangeFraction = 0.5; // share of the frame that must change at once to count as a light change
-    double minBlobArea = 0.001;       // foreground blobs smaller than this share of the frame are noise
-    double maxHoleArea = 0.004;       // background holes smaller than this share of the frame, inside a person, are filled
-    int gapPx = 6;                    // gaps narrower than this (frame pixels) between parts of a person are closed
-    int edgeRadiusPx = 4;             // guided filter window radius in frame pixels: how far the edge may move to the image's
+    int samples = 20;              // background colours remembered per pixel
+    int matches = 2;               // samples a pixel must be near to be background
+    double colourRadius = 24.0;    // L1 distance over B, G, R (levels) within which a sample is near: 3 x 8, the noise
+    double shadowDarkest = 0.4;    // a shadow keeps at least this fraction of the background's brightness
+    double shadowLightest = 0.92;  // ... and at most this (above: noise, already background)
+    double shadowChroma =
+        0.05;  // largest colour change of a shadow, relative to the background's brightness (about 3 degrees)
+    int updateOdds = 16;               // a background pixel refreshes one of its samples with odds 1 in this
+    double absorbSeconds = 180.0;      // a still, unchanging foreground pixel joins the background after this long
+    double warmupSeconds = 2.0;        // busy-scene start: the first background is the median of this many seconds
+    double fps = 25.0;                 // frames per second of the video, to turn seconds into frames
+    double lightChangeFraction = 0.5;  // share of the frame that must change at once to count as a light change
+    double minBlobArea = 0.001;        // foreground blobs smaller than this share of the frame are noise
+    double maxHoleArea = 0.004;  // background holes smaller than this share of the frame, inside a person, are filled
+    int gapPx = 6;               // gaps narrower than this (frame pixels) between parts of a person are closed
+    int edgeRadiusPx = 4;  // guided filter window radius in frame pixels: how far the edge may move to the image's
 };
 
 // Foreground from a background model, cleaned up for a person layer.
@@ -56,8 +57,8 @@ struct ConsensusSpec {
 struct BackgroundSpec {
     BackgroundMethod method = BackgroundMethod::Consensus;
     ConsensusSpec consensus{};
-    std::string cleanPlate{};    // CleanPlate: an image of the empty place; empty = the first frame seen
-    double threshold = 30.0;     // CleanPlate: per-channel difference that counts as foreground; MOG2: variance threshold
+    std::string cleanPlate{};  // CleanPlate: an image of the empty place; empty = the first frame seen
+    double threshold = 30.0;   // CleanPlate: per-channel difference that counts as foreground; MOG2: variance threshold
     double learningRate = -1.0;  // -1: the model's own schedule; 0: frozen after the first frame
     int history = 300;           // frames the model remembers (MOG2, KNN) / stability (CNT, in frames)
     double scale = 0.5;          // the model runs at this fraction of the frame size (0.1..1), alpha is scaled back
@@ -78,4 +79,4 @@ struct MatteSpec {
 // be read, a value out of range).
 std::unique_ptr<PersonMatte> makeMatte(const MatteSpec& spec);
 
-} // namespace arcomp
+}  // namespace arcomp

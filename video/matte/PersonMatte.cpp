@@ -81,7 +81,7 @@ void premultiplyRow(const std::uint8_t* c, const std::uint8_t* a, std::uint8_t* 
     }
 }
 
-} // namespace
+}  // namespace
 
 void premultiply(const cv::Mat& frame, const cv::Mat& alpha, cv::Mat& person) {
     CV_Assert(frame.type() == CV_8UC3 && alpha.type() == CV_8UC1 && frame.size() == alpha.size());
@@ -100,4 +100,4 @@ void premultiply(const cv::Mat& frame, const cv::Mat& alpha, cv::Mat& person) {
     });
 }
 
-} // namespace arcomp
+}  // namespace arcomp

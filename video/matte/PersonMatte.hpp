@@ -34,4 +34,4 @@ cv::Mat alphaOf(const cv::Mat& person);
 // (CV_8UC4 BGRA), rounding to nearest: the last step of every matte.
 void premultiply(const cv::Mat& frame, const cv::Mat& alpha, cv::Mat& person);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -114,8 +114,16 @@ const std::vector<TrackedPerson>& PersonTracker::update(const cv::Mat& alpha) {
         if (alone || p.width == 0) p.width = p.box.width;
     }
     for (std::size_t b = 0; b < blobs.size(); ++b)
-        if (!blobTaken[b]) people_.push_back({nextId_++, blobs[b].box, blobs[b].foot, {0.0f, 0.0f}, blobs[b].feetVisible, 0,
-                                             blobs[b].label, false, blobs[b].box.width});
+        if (!blobTaken[b])
+            people_.push_back({nextId_++,
+                               blobs[b].box,
+                               blobs[b].foot,
+                               {0.0f, 0.0f},
+                               blobs[b].feetVisible,
+                               0,
+                               blobs[b].label,
+                               false,
+                               blobs[b].box.width});
     // Labels that no track took (none, after the loop above) and small blobs read as background.
     std::vector<int> keep(static_cast<std::size_t>(stats_.rows), 0);
     for (const TrackedPerson& p : people_)
@@ -124,4 +132,4 @@ const std::vector<TrackedPerson>& PersonTracker::update(const cv::Mat& alpha) {
     return people_;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

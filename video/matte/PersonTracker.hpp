@@ -45,7 +45,7 @@ public:
         double minAreaFraction = 0.001;  // of the frame: smaller blobs are noise
         float maxStepPx = 80.0f;         // farthest a foot point moves between frames
         int keepMissedFrames = 12;
-        float smoothing = 0.5f;          // share of the new measurement in the foot point
+        float smoothing = 0.5f;  // share of the new measurement in the foot point
     };
 
     PersonTracker() : PersonTracker(Settings{}) {}
@@ -78,4 +78,4 @@ private:
 // above that row.
 cv::Point2f footPoint(const cv::Mat& labels, int label, const cv::Rect& box);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -25,4 +25,4 @@ private:
     std::uint64_t magic_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

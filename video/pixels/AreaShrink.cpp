@@ -47,7 +47,8 @@ void shrinkRow(const std::uint8_t* const rows[4], int samples, std::vector<std::
     x = 0;
 #if CV_SIMD
     for (; x + cv::v_uint16::nlanes <= last; x += cv::v_uint16::nlanes)
-        cv::v_store(m + x, sixteenth(cv::vx_load(s + x) + cv::vx_load(s + x + 3) + cv::vx_load(s + x + 6) + cv::vx_load(s + x + 9)));
+        cv::v_store(m + x, sixteenth(cv::vx_load(s + x) + cv::vx_load(s + x + 3) + cv::vx_load(s + x + 6) +
+                                     cv::vx_load(s + x + 9)));
 #endif
     for (; x < last; ++x) m[x] = sixteenth(s[x] + s[x + 3] + s[x + 6] + s[x + 9]);
     for (int o = 0, i = 0; i < last; o += 3, i += 12) {
@@ -57,7 +58,7 @@ void shrinkRow(const std::uint8_t* const rows[4], int samples, std::vector<std::
     }
 }
 
-} // namespace
+}  // namespace
 
 void shrinkByArea(const cv::Mat& frame, double scale, cv::Mat& small) {
     if (scale != 0.25 || frame.type() != CV_8UC3 || frame.cols % 4 != 0 || frame.rows % 4 != 0 || frame.empty()) {
@@ -70,10 +71,11 @@ void shrinkByArea(const cv::Mat& frame, double scale, cv::Mat& small) {
         std::vector<std::uint16_t> columns(static_cast<std::size_t>(samples)), means(static_cast<std::size_t>(samples));
         for (int y = range.start; y < range.end; ++y) {
             const std::uint8_t* const rows[4] = {frame.ptr<std::uint8_t>(4 * y), frame.ptr<std::uint8_t>(4 * y + 1),
-                                                 frame.ptr<std::uint8_t>(4 * y + 2), frame.ptr<std::uint8_t>(4 * y + 3)};
+                                                 frame.ptr<std::uint8_t>(4 * y + 2),
+                                                 frame.ptr<std::uint8_t>(4 * y + 3)};
             shrinkRow(rows, samples, columns, means, small.ptr<std::uint8_t>(y));
         }
     });
 }
 
-} // namespace arcomp
+}  // namespace arcomp

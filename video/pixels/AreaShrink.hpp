@@ -14,4 +14,4 @@ namespace arcomp {
 
 void shrinkByArea(const cv::Mat& frame, double scale, cv::Mat& small);
 
-} // namespace arcomp
+}  // namespace arcomp

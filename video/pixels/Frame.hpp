@@ -16,7 +16,7 @@
 namespace arcomp {
 
 struct Frame {
-    cv::Mat image; // CV_8UC3, BGR
+    cv::Mat image;  // CV_8UC3, BGR
     // The frame's time on its source's own timeline: the driver timestamp
     // for cameras, time since the first frame for files and patterns. Replay
     // uses this; it is deterministic for files.
@@ -24,8 +24,8 @@ struct Frame {
     // When the frame was captured on this machine's steady clock; latency is
     // measured from here to the moment the consumer takes the frame.
     std::chrono::steady_clock::time_point captured{};
-    std::uint64_t sequence = 0; // 0, 1, 2, ... as produced; gaps mean drops or skipped damage
+    std::uint64_t sequence = 0;  // 0, 1, 2, ... as produced; gaps mean drops or skipped damage
     PixelFormat format = PixelFormat::Bgr;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -56,4 +56,4 @@ std::string fourccString(std::uint32_t fourcc) {
     return s;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

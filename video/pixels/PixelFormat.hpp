@@ -13,11 +13,11 @@
 namespace arcomp {
 
 enum class PixelFormat : std::uint8_t {
-    Bgr,     // already 8-bit BGR (test pattern, still images)
-    Yuyv,    // packed 4:2:2, Y0 U Y1 V
-    Nv12,    // planar Y, then interleaved UV at half resolution
-    Mjpeg,   // one JPEG per frame
-    Encoded, // a compressed file stream decoded by FFmpeg (codec in the source's description)
+    Bgr,      // already 8-bit BGR (test pattern, still images)
+    Yuyv,     // packed 4:2:2, Y0 U Y1 V
+    Nv12,     // planar Y, then interleaved UV at half resolution
+    Mjpeg,    // one JPEG per frame
+    Encoded,  // a compressed file stream decoded by FFmpeg (codec in the source's description)
 };
 
 std::string_view pixelFormatName(PixelFormat format);
@@ -29,4 +29,4 @@ std::optional<PixelFormat> pixelFormatFromFourcc(std::uint32_t fourcc);
 // "YUYV", "MJPG", "H264": printable four characters of a fourcc.
 std::string fourccString(std::uint32_t fourcc);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -13,4 +13,4 @@ public:
     using BadInput::BadInput;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

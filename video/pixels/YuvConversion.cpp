@@ -51,7 +51,11 @@ FixedYuvToRgb fixedYuvToRgb(YuvEncoding e) {
     // Green's coefficients go in negated so that all three channels add
     // products truncated the same way, down; subtracting them would round
     // green up instead and miss the exact result twice as often.
-    return {static_cast<std::uint16_t>(std::lround(k.a * 8192.0)), q13(k.bu), q13(-k.gu), q13(-k.gv), q13(k.rv),
+    return {static_cast<std::uint16_t>(std::lround(k.a * 8192.0)),
+            q13(k.bu),
+            q13(-k.gu),
+            q13(-k.gv),
+            q13(k.rv),
             static_cast<std::int16_t>(std::lround(scale / 2 - k.a * k.y0 * scale))};
 }
 
@@ -63,7 +67,7 @@ inline int lumaTerm(const FixedYuvToRgb& k, int y) { return (y << 8) * k.a >> 16
 inline int chromaTerm(std::int16_t coefficient, int c) { return ((c - 128) << 8) * coefficient >> 16; }
 
 struct ChromaTerms {
-    int b, g, r; // bias included: shared by the pixels that share the chroma sample
+    int b, g, r;  // bias included: shared by the pixels that share the chroma sample
 };
 
 inline ChromaTerms chromaTerms(const FixedYuvToRgb& k, int u, int v) {
@@ -85,7 +89,7 @@ inline void putBgr(std::uint8_t* out, const FixedYuvToRgb& k, const ChromaTerms&
 // us to, picks AVX2 at run time: twice the pixels per instruction.
 yuv::RowKernels widestRowKernels() {
 #if defined(__x86_64__)
-    __builtin_cpu_init(); // a conversion might run from a static initialiser, before libgcc's has
+    __builtin_cpu_init();  // a conversion might run from a static initialiser, before libgcc's has
     if (__builtin_cpu_supports("avx2")) return yuv::avx2RowKernels();
 #endif
     return yuv::baseline::rowKernels();
@@ -108,8 +112,8 @@ void yuyvRowToBgr(const std::uint8_t* in, std::uint8_t* out, int width, const Fi
     }
 }
 
-void nv12RowToBgr(const std::uint8_t* y, const std::uint8_t* uv, std::uint8_t* out, int width,
-                  const FixedYuvToRgb& k, yuv::Nv12RowVectors vectors) {
+void nv12RowToBgr(const std::uint8_t* y, const std::uint8_t* uv, std::uint8_t* out, int width, const FixedYuvToRgb& k,
+                  yuv::Nv12RowVectors vectors) {
     int x = vectors(y, uv, out, width, k);
     for (; x < width; ++x) putBgr(out + 3 * x, k, chromaTerms(k, uv[x & ~1], uv[(x & ~1) + 1]), y[x]);
 }
@@ -119,7 +123,7 @@ void nv12RowToBgr(const std::uint8_t* y, const std::uint8_t* uv, std::uint8_t* o
 double stripes(int width, int height) { return std::max(1.0, static_cast<double>(width) * height / (1 << 16)); }
 
 struct YuvPixel {
-    double y, u, v; // u, v centred on 128
+    double y, u, v;  // u, v centred on 128
 };
 
 YuvPixel bgrToYuvPixel(const YuvEncoding& e, const cv::Vec3b& p) {
@@ -139,7 +143,7 @@ void requireBgr(const cv::Mat& bgr, bool evenHeight) {
         throw std::invalid_argument("YUV encoding needs an 8-bit BGR image of even size");
 }
 
-} // namespace
+}  // namespace
 
 YuvEncoding defaultYuvEncoding(PixelFormat format, int height) {
     if (format == PixelFormat::Mjpeg) return {YuvMatrix::Bt601, YuvRange::Full};
@@ -171,8 +175,8 @@ cv::Mat nv12ToBgr(const std::uint8_t* y, int yStride, const std::uint8_t* uv, in
         [&](const cv::Range& rows) {
             for (int row = rows.start; row < rows.end; ++row)
                 nv12RowToBgr(y + static_cast<std::ptrdiff_t>(row) * yStride,
-                             uv + static_cast<std::ptrdiff_t>(row / 2) * uvStride, out.ptr<std::uint8_t>(row), width,
-                             k, vectors);
+                             uv + static_cast<std::ptrdiff_t>(row / 2) * uvStride, out.ptr<std::uint8_t>(row), width, k,
+                             vectors);
         },
         stripes(width, height));
     return out;
@@ -200,8 +204,7 @@ std::vector<std::uint8_t> bgrToNv12(const cv::Mat& bgr, YuvEncoding e) {
     const std::size_t w = static_cast<std::size_t>(bgr.cols), h = static_cast<std::size_t>(bgr.rows);
     std::vector<std::uint8_t> out(w * h * 3 / 2);
     for (int row = 0; row < bgr.rows; ++row)
-        for (int x = 0; x < bgr.cols; ++x)
-            out[row * w + x] = toByte(bgrToYuvPixel(e, bgr.at<cv::Vec3b>(row, x)).y);
+        for (int x = 0; x < bgr.cols; ++x) out[row * w + x] = toByte(bgrToYuvPixel(e, bgr.at<cv::Vec3b>(row, x)).y);
     std::uint8_t* uv = out.data() + w * h;
     for (int row = 0; row < bgr.rows; row += 2) {
         for (int x = 0; x < bgr.cols; x += 2) {
@@ -219,4 +222,4 @@ std::vector<std::uint8_t> bgrToNv12(const cv::Mat& bgr, YuvEncoding e) {
     return out;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -18,7 +18,7 @@
 namespace arcomp {
 
 enum class YuvMatrix { Bt601, Bt709 };
-enum class YuvRange { Limited, Full }; // limited: Y 16..235, C 16..240
+enum class YuvRange { Limited, Full };  // limited: Y 16..235, C 16..240
 
 struct YuvEncoding {
     YuvMatrix matrix = YuvMatrix::Bt601;
@@ -38,4 +38,4 @@ cv::Mat nv12ToBgr(const std::uint8_t* y, int yStride, const std::uint8_t* uv, in
 std::vector<std::uint8_t> bgrToYuyv(const cv::Mat& bgr, YuvEncoding encoding);
 std::vector<std::uint8_t> bgrToNv12(const cv::Mat& bgr, YuvEncoding encoding);
 
-} // namespace arcomp
+}  // namespace arcomp

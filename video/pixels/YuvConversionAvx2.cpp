@@ -30,6 +30,6 @@ namespace arcomp::yuv {
 
 RowKernels avx2RowKernels() { return avx2::rowKernels(); }
 
-} // namespace arcomp::yuv
+}  // namespace arcomp::yuv
 
 #endif

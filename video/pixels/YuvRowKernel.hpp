@@ -31,9 +31,9 @@ namespace arcomp::yuv {
 constexpr int kFracBits = 5;
 
 struct FixedYuvToRgb {
-    std::uint16_t a;             // times Y << 8, unsigned: Y reaches 255
-    std::int16_t bu, gu, gv, rv; // times (C - 128) << 8; green's negated
-    std::int16_t bias;           // -a y0, plus half a level so the final shift rounds
+    std::uint16_t a;              // times Y << 8, unsigned: Y reaches 255
+    std::int16_t bu, gu, gv, rv;  // times (C - 128) << 8; green's negated
+    std::int16_t bias;            // -a y0, plus half a level so the final shift rounds
 };
 
 // One build's row converters. Each converts the whole vectors at the start of
@@ -154,6 +154,6 @@ inline int nv12RowVectors(const std::uint8_t* y, const std::uint8_t* uv, std::ui
 
 inline RowKernels rowKernels() { return {&yuyvRowVectors, &nv12RowVectors}; }
 
-} // namespace ARCOMP_YUV_KERNEL_NAMESPACE
+}  // namespace ARCOMP_YUV_KERNEL_NAMESPACE
 
-} // namespace arcomp::yuv
+}  // namespace arcomp::yuv

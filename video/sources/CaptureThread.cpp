@@ -33,7 +33,7 @@ void CaptureThread::setState(SourceState state) {
     if (state.status != state_.status || state.reason != state_.reason) {
         if (state.status != SourceStatus::Streaming)
             spdlog::info(joinText("video source ", name_, ": ", sourceStatusName(state.status),
-                                 state.reason.empty() ? "" : ": ", state.reason));
+                                  state.reason.empty() ? "" : ": ", state.reason));
     }
     state_ = std::move(state);
 }
@@ -63,4 +63,4 @@ void CaptureThread::run() {
     grabber.reset();
 }
 
-} // namespace arcomp
+}  // namespace arcomp

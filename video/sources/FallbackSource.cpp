@@ -5,7 +5,6 @@
 
 #include <spdlog/spdlog.h>
 
-
 namespace arcomp {
 
 std::string_view fallbackKindName(FallbackKind kind) {
@@ -86,4 +85,4 @@ std::optional<Frame> FallbackSource::newest() {
     return fallbackFrame();
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -55,4 +55,4 @@ private:
 
 std::string_view fallbackKindName(FallbackKind kind);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -5,7 +5,6 @@
 
 #include <spdlog/spdlog.h>
 
-
 #include <cmath>
 #include <filesystem>
 
@@ -24,7 +23,7 @@ void checkReadable(const std::string& path) {
     if (::access(path.c_str(), R_OK) != 0) throw VideoError(path, "", "file is not readable (permission denied)");
 }
 
-} // namespace
+}  // namespace
 
 FileSource::FileSource(FileOptions options) : options_(std::move(options)) {
     const std::string& path = options_.path;
@@ -125,4 +124,4 @@ GrabResult FileSource::grab() {
 
 VideoFileInfo probeVideoFile(const std::string& path) { return FileSource({.path = path}).info(); }
 
-} // namespace arcomp
+}  // namespace arcomp

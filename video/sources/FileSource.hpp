@@ -27,17 +27,17 @@ enum class OnDamage { Stop, Skip };
 
 struct FileOptions {
     std::string path;
-    bool paced = false; // grab() waits until each frame is due; next() never waits
+    bool paced = false;  // grab() waits until each frame is due; next() never waits
     bool loop = false;
     OnDamage onDamage = OnDamage::Stop;
 };
 
 struct VideoFileInfo {
-    std::string codec; // fourcc as text, e.g. "FMP4", "MJPG", "H264"
+    std::string codec;  // fourcc as text, e.g. "FMP4", "MJPG", "H264"
     int width = 0;
     int height = 0;
     double fps = 0.0;
-    std::int64_t frameCount = 0; // as the container claims; damage may end the file earlier
+    std::int64_t frameCount = 0;  // as the container claims; damage may end the file earlier
 };
 
 class FileSource : public FrameGrabber {
@@ -72,4 +72,4 @@ private:
 // Reads a file's container facts without decoding more than one frame.
 VideoFileInfo probeVideoFile(const std::string& path);
 
-} // namespace arcomp
+}  // namespace arcomp

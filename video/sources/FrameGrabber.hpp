@@ -31,4 +31,4 @@ public:
     virtual std::string name() const = 0;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

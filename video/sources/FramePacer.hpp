@@ -30,4 +30,4 @@ private:
     std::optional<std::chrono::steady_clock::time_point> origin_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

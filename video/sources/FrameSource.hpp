@@ -33,4 +33,4 @@ public:
     virtual std::string name() const = 0;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -7,15 +7,16 @@
 
 namespace arcomp {
 
-LensUndistortion::LensUndistortion(const cv::Matx33d& cameraMatrix, const cv::Vec<double, 5>& distortion, cv::Size size) {
+LensUndistortion::LensUndistortion(const cv::Matx33d& cameraMatrix, const cv::Vec<double, 5>& distortion,
+                                   cv::Size size) {
     cv::initUndistortRectifyMap(cameraMatrix, distortion, cv::noArray(), cameraMatrix, size, CV_16SC2, mapX_, mapY_);
 }
 
 void LensUndistortion::apply(cv::Mat& frame) {
     if (frame.size() != mapX_.size())
-        throw std::invalid_argument("lens undistortion: a " + std::to_string(frame.cols) + "x" + std::to_string(frame.rows) +
-                                    " frame, but the tables are for " + std::to_string(mapX_.cols) + "x" +
-                                    std::to_string(mapX_.rows));
+        throw std::invalid_argument("lens undistortion: a " + std::to_string(frame.cols) + "x" +
+                                    std::to_string(frame.rows) + " frame, but the tables are for " +
+                                    std::to_string(mapX_.cols) + "x" + std::to_string(mapX_.rows));
     // A new image each frame: the old one may still be shared with the
     // source's buffers or a stage that kept it.
     cv::Mat undistorted;
@@ -23,4 +24,4 @@ void LensUndistortion::apply(cv::Mat& frame) {
     frame = undistorted;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -25,4 +25,4 @@ private:
     cv::Mat mapX_, mapY_;  // fixed-point tables (CV_16SC2 and CV_16UC1): faster remaps than float
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -7,7 +7,6 @@
 #include <opencv2/imgcodecs.hpp>
 #include <spdlog/spdlog.h>
 
-
 #include <algorithm>
 #include <cmath>
 #include <condition_variable>
@@ -46,7 +45,7 @@ libcamera::PixelFormat toLibcamera(PixelFormat f) {
     }
 }
 
-} // namespace
+}  // namespace
 
 struct LibcameraSource::Impl {
     LibcameraOptions options;
@@ -121,10 +120,14 @@ std::string LibcameraSource::Impl::connect() {
     }
     if (config->validate() == libcamera::CameraConfiguration::Invalid) return "camera rejects every configuration";
     if (camera->configure(config.get()) != 0) return "Camera::configure failed";
-    if (sc.pixelFormat == libcamera::formats::YUYV) format = PixelFormat::Yuyv;
-    else if (sc.pixelFormat == libcamera::formats::NV12) format = PixelFormat::Nv12;
-    else if (sc.pixelFormat == libcamera::formats::MJPEG) format = PixelFormat::Mjpeg;
-    else return joinText("camera settled on ", sc.pixelFormat.toString(), ", which arcomp cannot convert");
+    if (sc.pixelFormat == libcamera::formats::YUYV)
+        format = PixelFormat::Yuyv;
+    else if (sc.pixelFormat == libcamera::formats::NV12)
+        format = PixelFormat::Nv12;
+    else if (sc.pixelFormat == libcamera::formats::MJPEG)
+        format = PixelFormat::Mjpeg;
+    else
+        return joinText("camera settled on ", sc.pixelFormat.toString(), ", which arcomp cannot convert");
     width = static_cast<int>(sc.size.width);
     height = static_cast<int>(sc.size.height);
     stride = static_cast<int>(sc.stride);
@@ -150,7 +153,8 @@ std::string LibcameraSource::Impl::connect() {
     started = true;
     for (auto& r : requests)
         if (camera->queueRequest(r.get()) != 0) return "Camera::queueRequest failed";
-    spdlog::info(joinText("libcamera ", camera->id(), ": streaming ", pixelFormatName(format), " ", width, "x", height));
+    spdlog::info(
+        joinText("libcamera ", camera->id(), ": streaming ", pixelFormatName(format), " ", width, "x", height));
     return {};
 }
 
@@ -184,15 +188,16 @@ std::optional<cv::Mat> LibcameraSource::Impl::convert(libcamera::FrameBuffer* bu
     switch (format) {
     case PixelFormat::Yuyv: return yuyvToBgr(base + planes[0].offset, width, height, stride, encoding);
     case PixelFormat::Nv12: {
-        const std::uint8_t* uv = planes.size() > 1 ? base + planes[1].offset
-                                                   : base + planes[0].offset + static_cast<std::size_t>(stride) * height;
+        const std::uint8_t* uv = planes.size() > 1
+                                     ? base + planes[1].offset
+                                     : base + planes[0].offset + static_cast<std::size_t>(stride) * height;
         return nv12ToBgr(base + planes[0].offset, stride, uv, stride, width, height, encoding);
     }
     case PixelFormat::Mjpeg: {
         const unsigned used = buffer->metadata().planes()[0].bytesused;
-        cv::Mat img = cv::imdecode(cv::Mat(1, static_cast<int>(used), CV_8UC1,
-                                           const_cast<std::uint8_t*>(base + planes[0].offset)),
-                                   cv::IMREAD_COLOR);
+        cv::Mat img = cv::imdecode(
+            cv::Mat(1, static_cast<int>(used), CV_8UC1, const_cast<std::uint8_t*>(base + planes[0].offset)),
+            cv::IMREAD_COLOR);
         if (img.empty()) return std::nullopt;
         return img;
     }
@@ -273,4 +278,4 @@ std::vector<std::string> listLibcameraCameras() {
     return ids;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

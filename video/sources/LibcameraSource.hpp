@@ -11,8 +11,8 @@
 // With no camera (cameraRemoved, or none at start) the source reports
 // Disconnected and looks again with backoff.
 
-#include "video/sources/FrameGrabber.hpp"
 #include "video/pixels/YuvConversion.hpp"
+#include "video/sources/FrameGrabber.hpp"
 
 #include <chrono>
 #include <memory>
@@ -21,7 +21,7 @@
 namespace arcomp {
 
 struct LibcameraOptions {
-    std::string cameraId; // empty: the first camera libcamera lists
+    std::string cameraId;  // empty: the first camera libcamera lists
     int width = 1280;
     int height = 720;
     double fps = 30.0;
@@ -47,4 +47,4 @@ private:
 // Ids of the cameras libcamera lists now (empty here: no camera).
 std::vector<std::string> listLibcameraCameras();
 
-} // namespace arcomp
+}  // namespace arcomp

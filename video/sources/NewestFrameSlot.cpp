@@ -22,4 +22,4 @@ std::optional<Frame> NewestFrameSlot::take() {
     return out;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -30,4 +30,4 @@ private:
     std::atomic<std::uint64_t> drops_{0};
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -1,16 +1,15 @@
 #include "video/sources/OpenSource.hpp"
 #include "graph/core/JoinText.hpp"
 
+#include "video/pixels/VideoError.hpp"
 #include "video/sources/CaptureThread.hpp"
 #include "video/sources/FallbackSource.hpp"
 #include "video/sources/FileSource.hpp"
 #include "video/sources/LibcameraSource.hpp"
 #include "video/sources/TestPatternSource.hpp"
 #include "video/sources/V4l2Source.hpp"
-#include "video/pixels/VideoError.hpp"
 
 #include <opencv2/imgcodecs.hpp>
-
 
 namespace arcomp {
 
@@ -18,8 +17,9 @@ namespace {
 
 std::unique_ptr<FrameSource> openPrimary(const SourceSpec& spec) {
     if (spec.width <= 0 || spec.height <= 0 || !(spec.fps > 0.0))
-        throw VideoError(spec.path.empty() ? "source" : spec.path, "spec",
-                         joinText("size ", spec.width, "x", spec.height, " at ", spec.fps, " fps: expected positive values"));
+        throw VideoError(
+            spec.path.empty() ? "source" : spec.path, "spec",
+            joinText("size ", spec.width, "x", spec.height, " at ", spec.fps, " fps: expected positive values"));
     CaptureThread::GrabberFactory factory;
     std::string name = spec.path;
     switch (spec.kind) {
@@ -54,7 +54,7 @@ std::unique_ptr<FrameSource> openPrimary(const SourceSpec& spec) {
         break;
     case SourceKind::Pattern: {
         const TestPatternOptions o{.width = spec.width, .height = spec.height, .fps = spec.fps, .paced = spec.paced};
-        TestPatternSource check(o); // reject a bad size here, not on the capture thread
+        TestPatternSource check(o);  // reject a bad size here, not on the capture thread
         name = check.name();
         factory = [o] { return std::make_unique<TestPatternSource>(o); };
         break;
@@ -63,7 +63,7 @@ std::unique_ptr<FrameSource> openPrimary(const SourceSpec& spec) {
     return std::make_unique<CaptureThread>(name, std::move(factory));
 }
 
-} // namespace
+}  // namespace
 
 std::unique_ptr<FrameSource> openSource(const SourceSpec& spec) {
     std::unique_ptr<FrameSource> primary = openPrimary(spec);
@@ -99,4 +99,4 @@ std::unique_ptr<FrameSource> openSource(const SourceSpec& spec) {
     return out;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -18,4 +18,4 @@ namespace arcomp {
 
 std::unique_ptr<FrameSource> openSource(const SourceSpec& spec);
 
-} // namespace arcomp
+}  // namespace arcomp

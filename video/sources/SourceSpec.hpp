@@ -6,8 +6,8 @@
 //                   .fallback = {FallbackKind::Pattern}};
 //   std::unique_ptr<FrameSource> cam = openSource(spec);   // open and capturing
 
-#include "video/sources/FileSource.hpp"
 #include "video/pixels/PixelFormat.hpp"
+#include "video/sources/FileSource.hpp"
 
 #include <string>
 #include <vector>
@@ -21,20 +21,20 @@ enum class FallbackKind { None, File, Image, LastGoodFrame, Pattern };
 
 struct FallbackSpec {
     FallbackKind kind = FallbackKind::None;
-    std::string path; // the file or still image
+    std::string path;  // the file or still image
 };
 
 struct SourceSpec {
     SourceKind kind = SourceKind::Pattern;
-    std::string path;   // file path, device (prefer /dev/v4l/by-id/...), or libcamera id ("" = first)
-    int width = 1280;   // cameras and pattern; files keep their own size
+    std::string path;  // file path, device (prefer /dev/v4l/by-id/...), or libcamera id ("" = first)
+    int width = 1280;  // cameras and pattern; files keep their own size
     int height = 720;
-    double fps = 30.0;  // cameras and pattern; files keep their own rate
-    std::vector<PixelFormat> formats; // camera preference, first wins; empty = the source's default
-    bool loop = false;  // files
-    bool paced = true;  // files and pattern: real time; false = as fast as possible
+    double fps = 30.0;                 // cameras and pattern; files keep their own rate
+    std::vector<PixelFormat> formats;  // camera preference, first wins; empty = the source's default
+    bool loop = false;                 // files
+    bool paced = true;                 // files and pattern: real time; false = as fast as possible
     OnDamage onDamage = OnDamage::Stop;
     FallbackSpec fallback;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

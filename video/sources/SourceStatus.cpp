@@ -14,4 +14,4 @@ std::string_view sourceStatusName(SourceStatus status) {
     return "unknown";
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -11,12 +11,12 @@
 namespace arcomp {
 
 enum class SourceStatus {
-    Opening,      // not yet produced a frame
-    Streaming,    // frames arriving
-    Stalled,      // open, but no frame within a few frame periods
-    Disconnected, // device gone or not present; the source keeps trying to get it back
-    Ended,        // a file reached its end (and does not loop)
-    Error,        // unusable (damaged file, unsupported format); reason says what and where
+    Opening,       // not yet produced a frame
+    Streaming,     // frames arriving
+    Stalled,       // open, but no frame within a few frame periods
+    Disconnected,  // device gone or not present; the source keeps trying to get it back
+    Ended,         // a file reached its end (and does not loop)
+    Error,         // unusable (damaged file, unsupported format); reason says what and where
 };
 
 struct SourceState {
@@ -31,4 +31,4 @@ inline bool isLost(SourceStatus status) {
     return status == SourceStatus::Disconnected || status == SourceStatus::Ended || status == SourceStatus::Error;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -5,13 +5,14 @@
 
 #include <opencv2/imgproc.hpp>
 
-
 namespace arcomp {
 
 TestPatternSource::TestPatternSource(TestPatternOptions options) : options_(options) {
     if (options_.width < 16 || options_.height < 16 || options_.width > 16384 || options_.height > 16384 ||
         !(options_.fps > 0.0 && options_.fps <= 1000.0))
-        throw VideoError("pattern", "", joinText("size ", options_.width, "x", options_.height, " at ", options_.fps, " fps: expected 16..16384 pixels and 0 < fps <= 1000"));
+        throw VideoError("pattern", "",
+                         joinText("size ", options_.width, "x", options_.height, " at ", options_.fps,
+                                  " fps: expected 16..16384 pixels and 0 < fps <= 1000"));
 }
 
 std::string TestPatternSource::name() const {
@@ -48,8 +49,8 @@ cv::Mat TestPatternSource::render(std::uint64_t index) const {
     const double bounce = phase < 0.5 ? phase * 2.0 : 2.0 - phase * 2.0;
     const int sy = h / 4 + static_cast<int>(bounce * (h * 3 / 4 - 2 * r));
     cv::rectangle(img, cv::Rect(w * 3 / 4, sy, 2 * r, 2 * r), {200, 60, 60}, cv::FILLED);
-    cv::putText(img, joinText("#", index), cv::Point(w / 40, h - h / 20), cv::FONT_HERSHEY_SIMPLEX,
-                h / 240.0, {255, 255, 255}, std::max(1, h / 240), cv::LINE_8);
+    cv::putText(img, joinText("#", index), cv::Point(w / 40, h - h / 20), cv::FONT_HERSHEY_SIMPLEX, h / 240.0,
+                {255, 255, 255}, std::max(1, h / 240), cv::LINE_8);
     return img;
 }
 
@@ -64,4 +65,4 @@ GrabResult TestPatternSource::grab() {
     return {std::move(f), {SourceStatus::Streaming, {}}};
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -17,7 +17,7 @@ struct TestPatternOptions {
     int width = 640;
     int height = 480;
     double fps = 30.0;
-    bool paced = true; // false: grab() returns the next frame at once (replay, tests)
+    bool paced = true;  // false: grab() returns the next frame at once (replay, tests)
 };
 
 class TestPatternSource : public FrameGrabber {
@@ -37,4 +37,4 @@ private:
     FramePacer pacer_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -40,8 +40,8 @@ public:
     }
 };
 
-} // namespace
+}  // namespace
 
 std::shared_ptr<V4l2Device> systemV4l2Device() { return std::make_shared<SystemV4l2Device>(); }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -32,4 +32,4 @@ public:
 
 std::shared_ptr<V4l2Device> systemV4l2Device();
 
-} // namespace arcomp
+}  // namespace arcomp

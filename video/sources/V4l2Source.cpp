@@ -6,7 +6,6 @@
 #include <opencv2/imgcodecs.hpp>
 #include <spdlog/spdlog.h>
 
-
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -39,7 +38,7 @@ std::string joinFourccs(const std::vector<std::uint32_t>& v) {
     return s.empty() ? "nothing" : s;
 }
 
-} // namespace
+}  // namespace
 
 V4l2Source::V4l2Source(V4l2Options options, std::shared_ptr<V4l2Device> device)
     : options_(std::move(options)), device_(std::move(device)) {
@@ -79,7 +78,8 @@ std::string V4l2Source::connect(bool& permanent) {
     if (!chosen) {
         permanent = true;
         std::string asked;
-        for (PixelFormat p : options_.preference) asked += (asked.empty() ? "" : ", ") + std::string(pixelFormatName(p));
+        for (PixelFormat p : options_.preference)
+            asked += (asked.empty() ? "" : ", ") + std::string(pixelFormatName(p));
         return joinText(node_, " offers ", joinFourccs(offered), "; the config asks for ", asked);
     }
 
@@ -101,7 +101,8 @@ std::string V4l2Source::connect(bool& permanent) {
     stride_ = fmt.fmt.pix.bytesperline ? static_cast<int>(fmt.fmt.pix.bytesperline)
                                        : (*format_ == PixelFormat::Yuyv ? width_ * 2 : width_);
     if (width_ != options_.width || height_ != options_.height)
-        spdlog::warn(joinText(node_, ": asked for ", options_.width, "x", options_.height, ", device gives ", width_, "x", height_));
+        spdlog::warn(joinText(node_, ": asked for ", options_.width, "x", options_.height, ", device gives ", width_,
+                              "x", height_));
     encoding_ = options_.encoding.value_or(defaultYuvEncoding(*format_, height_));
 
     v4l2_streamparm parm{};
@@ -129,14 +130,15 @@ std::string V4l2Source::connect(bool& permanent) {
     }
     int type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
     if (device_->ioctl(fd_, VIDIOC_STREAMON, &type) != 0) return errnoText("VIDIOC_STREAMON");
-    spdlog::info(joinText(options_.device, ": streaming ", pixelFormatName(*format_), " ", width_, "x", height_, " from ", node_));
+    spdlog::info(joinText(options_.device, ": streaming ", pixelFormatName(*format_), " ", width_, "x", height_,
+                          " from ", node_));
     return {};
 }
 
 void V4l2Source::teardown() {
     if (fd_ >= 0) {
         int type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
-        device_->ioctl(fd_, VIDIOC_STREAMOFF, &type); // fails harmlessly on a vanished device
+        device_->ioctl(fd_, VIDIOC_STREAMOFF, &type);  // fails harmlessly on a vanished device
     }
     for (const Buffer& b : buffers_) device_->munmap(b.data, b.length);
     buffers_.clear();
@@ -202,8 +204,7 @@ GrabResult V4l2Source::grab() {
     const int n = device_->poll(fd_, timeoutMs, &revents);
     if (n < 0 && errno == EINTR) return {std::nullopt, {SourceStatus::Streaming, {}}};
     if (n < 0) return disconnect(errnoText("poll"));
-    if (n == 0)
-        return {std::nullopt, {SourceStatus::Stalled, joinText(node_, ": no frame for ", timeoutMs, " ms")}};
+    if (n == 0) return {std::nullopt, {SourceStatus::Stalled, joinText(node_, ": no frame for ", timeoutMs, " ms")}};
     if (revents & (POLLERR | POLLHUP | POLLNVAL))
         return disconnect(joinText(node_, ": poll reports the device gone (revents 0x", std::hex, revents, ")"));
 
@@ -229,7 +230,7 @@ GrabResult V4l2Source::grab() {
     if (!img) {
         ++errorFrames_;
         spdlog::debug(joinText(node_, ": skipped buffer ", bufferSequence, " (",
-                              flaggedError ? "V4L2_BUF_FLAG_ERROR" : "undecodable", ")"));
+                               flaggedError ? "V4L2_BUF_FLAG_ERROR" : "undecodable", ")"));
         return {std::nullopt, {SourceStatus::Streaming, {}}};
     }
     f.image = std::move(*img);
@@ -284,4 +285,4 @@ std::vector<V4l2FormatInfo> listV4l2Formats(V4l2Device& dev, const std::string& 
     return out;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

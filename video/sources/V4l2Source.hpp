@@ -10,9 +10,9 @@
 //                   .preference = {PixelFormat::Mjpeg, PixelFormat::Yuyv}});
 //   GrabResult r = cam.grab();   // CaptureThread calls this on its own thread
 
+#include "video/pixels/YuvConversion.hpp"
 #include "video/sources/FrameGrabber.hpp"
 #include "video/sources/V4l2Device.hpp"
-#include "video/pixels/YuvConversion.hpp"
 
 #include <chrono>
 #include <cstdint>
@@ -27,7 +27,7 @@ struct V4l2Options {
     int height = 720;
     double fps = 30.0;
     std::vector<PixelFormat> preference{PixelFormat::Yuyv, PixelFormat::Mjpeg, PixelFormat::Nv12};
-    std::optional<YuvEncoding> encoding; // default: defaultYuvEncoding(format, height)
+    std::optional<YuvEncoding> encoding;  // default: defaultYuvEncoding(format, height)
     int bufferCount = 4;
     std::chrono::milliseconds backoffInitial{100};
     std::chrono::milliseconds backoffMax{2000};
@@ -45,8 +45,8 @@ public:
     std::optional<PixelFormat> format() const { return format_; }
     int width() const { return width_; }
     int height() const { return height_; }
-    std::string node() const { return node_; }         // the /dev/videoN in use
-    std::uint64_t errorFrames() const { return errorFrames_; } // V4L2_BUF_FLAG_ERROR or undecodable
+    std::string node() const { return node_; }                  // the /dev/videoN in use
+    std::uint64_t errorFrames() const { return errorFrames_; }  // V4L2_BUF_FLAG_ERROR or undecodable
     std::uint64_t reconnects() const { return reconnects_; }
 
 private:
@@ -83,8 +83,8 @@ struct V4l2FormatInfo {
     std::string description;
     struct Size {
         int width = 0, height = 0;
-        std::vector<double> fps; // empty when the driver does not enumerate intervals
-        bool stepwise = false;   // width/height are the maximum of a continuous range
+        std::vector<double> fps;  // empty when the driver does not enumerate intervals
+        bool stepwise = false;    // width/height are the maximum of a continuous range
     };
     std::vector<Size> sizes;
 };
@@ -93,4 +93,4 @@ struct V4l2FormatInfo {
 // ENUM_FRAMEINTERVALS. Throws VideoError when the device cannot be opened.
 std::vector<V4l2FormatInfo> listV4l2Formats(V4l2Device& device, const std::string& path);
 
-} // namespace arcomp
+}  // namespace arcomp

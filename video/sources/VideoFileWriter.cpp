@@ -14,7 +14,8 @@ VideoFileWriter::VideoFileWriter(std::string path, const std::string& fourcc, do
     if (!parent.empty()) std::filesystem::create_directories(parent, ec);
     const int code = cv::VideoWriter::fourcc(fourcc[0], fourcc[1], fourcc[2], fourcc[3]);
     if (!writer_.open(path_, cv::CAP_FFMPEG, code, fps, size_, true))
-        throw VideoError(path_, "writer", "cannot open for writing with codec " + fourcc + " (folder writable? codec known?)");
+        throw VideoError(path_, "writer",
+                         "cannot open for writing with codec " + fourcc + " (folder writable? codec known?)");
 }
 
 VideoFileWriter::~VideoFileWriter() { close(); }
@@ -22,7 +23,8 @@ VideoFileWriter::~VideoFileWriter() { close(); }
 void VideoFileWriter::write(const cv::Mat& bgr) {
     if (!writer_.isOpened()) throw VideoError(path_, "frame " + std::to_string(frames_), "writer already closed");
     if (bgr.size() != size_ || bgr.type() != CV_8UC3)
-        throw VideoError(path_, "frame " + std::to_string(frames_), "expected a BGR image of the size the file was opened with");
+        throw VideoError(path_, "frame " + std::to_string(frames_),
+                         "expected a BGR image of the size the file was opened with");
     writer_.write(bgr);
     ++frames_;
 }
@@ -31,4 +33,4 @@ void VideoFileWriter::close() {
     if (writer_.isOpened()) writer_.release();
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -34,4 +34,4 @@ private:
     std::uint64_t frames_ = 0;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

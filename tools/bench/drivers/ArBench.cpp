@@ -31,10 +31,10 @@
 #include "runtime/station/SceneFile.hpp"
 #include "runtime/station/Station.hpp"
 #include "tools/bench/probes/ShellCommand.hpp"
-#include "tools/cli/Command.hpp"
 #include "tools/bench/report/BenchJson.hpp"
 #include "tools/bench/report/Stats.hpp"
 #include "tools/bench/scenes/SyntheticCamera.hpp"
+#include "tools/cli/Command.hpp"
 #include "video/matte/MaskFolderMatte.hpp"
 
 #include <opencv2/imgcodecs.hpp>
@@ -59,8 +59,12 @@ constexpr double kCameraHeight = 3.2, kCameraZ = 9.5, kTiltDegrees = 17.0;
 
 CalibratedCamera trueCamera() {
     CalibratedCamera c;
-    c.intrinsics = {.imageSize = {kLens.size.width, kLens.size.height}, .fx = kLens.fx, .fy = kLens.fy, .cx = kLens.cx,
-                    .cy = kLens.cy, .distortion = {kLens.distortion[0], kLens.distortion[1], 0, 0, 0}};
+    c.intrinsics = {.imageSize = {kLens.size.width, kLens.size.height},
+                    .fx = kLens.fx,
+                    .fy = kLens.fy,
+                    .cx = kLens.cx,
+                    .cy = kLens.cy,
+                    .distortion = {kLens.distortion[0], kLens.distortion[1], 0, 0, 0}};
     const double tilt = glm::radians(kTiltDegrees);
     const glm::dvec3 forward(0.0, -std::sin(tilt), -std::cos(tilt)), right(1.0, 0.0, 0.0);
     c.rotation = glm::transpose(glm::dmat3(right, glm::cross(forward, right), forward));
@@ -110,7 +114,9 @@ cv::Mat floorTexture(double texelsPerMetre) {
         for (int x = 0; x < side; ++x) {
             const int cell = (x / static_cast<int>(texelsPerMetre / 2) + y / static_cast<int>(texelsPerMetre / 2)) % 2;
             const bool line = x % static_cast<int>(texelsPerMetre) < 2 || y % static_cast<int>(texelsPerMetre) < 2;
-            floor.at<cv::Vec3b>(y, x) = line ? cv::Vec3b(190, 190, 185) : cell ? cv::Vec3b(120, 125, 120) : cv::Vec3b(95, 100, 98);
+            floor.at<cv::Vec3b>(y, x) = line   ? cv::Vec3b(190, 190, 185)
+                                        : cell ? cv::Vec3b(120, 125, 120)
+                                               : cv::Vec3b(95, 100, 98);
         }
     return floor;
 }
@@ -128,7 +134,8 @@ cv::Mat over(const cv::Mat& layer, const cv::Mat& under) {
         for (int x = 0; x < out.cols; ++x) {
             const cv::Vec4b l = layer.at<cv::Vec4b>(y, x);
             const cv::Vec3b u = under.at<cv::Vec3b>(y, x);
-            for (int c = 0; c < 3; ++c) out.at<cv::Vec3b>(y, x)[c] = cv::saturate_cast<std::uint8_t>(l[c] + u[c] * (255 - l[3]) / 255.0);
+            for (int c = 0; c < 3; ++c)
+                out.at<cv::Vec3b>(y, x)[c] = cv::saturate_cast<std::uint8_t>(l[c] + u[c] * (255 - l[3]) / 255.0);
         }
     return out;
 }
@@ -194,19 +201,25 @@ Calibration calibrate(const SyntheticCamera& lens, const fs::path& dir) {
     const cv::Mat board = chessboardTexture(9, 6, texels);
     for (int i = 0; i < 14; ++i) {
         const double a = 0.45 * std::sin(i * 1.3), b = 0.4 * std::cos(i * 0.9), c = 0.15 * std::sin(i * 2.1);
-        const cv::Vec3d rvec(a, b, c), tvec(-0.22 + 0.12 * std::sin(i * 0.7), -0.15 + 0.1 * std::cos(i * 1.1), 0.6 + 0.03 * i);
+        const cv::Vec3d rvec(a, b, c),
+            tvec(-0.22 + 0.12 * std::sin(i * 0.7), -0.15 + 0.1 * std::cos(i * 1.1), 0.6 + 0.03 * i);
         char name[32];
         std::snprintf(name, sizeof name, "view-%02d.png", i);
-        cv::imwrite((dir / "board" / name).string(), lens.photograph(board, 0.04 / texels, {-0.04, -0.04}, boardToCamera(rvec, tvec)));
+        cv::imwrite((dir / "board" / name).string(),
+                    lens.photograph(board, 0.04 / texels, {-0.04, -0.04}, boardToCamera(rvec, tvec)));
     }
-    const std::string intrinsics = arcomp("calibrate intrinsics " + (dir / "board").string() +
-                                          " --board chessboard --cols 9 --rows 6 --square 0.04 --out " + (dir / "lens.yaml").string());
+    const std::string intrinsics =
+        arcomp("calibrate intrinsics " + (dir / "board").string() +
+               " --board chessboard --cols 9 --rows 6 --square 0.04 --out " + (dir / "lens.yaml").string());
     // An ArUco marker of 1.5 m (a floor decal) at the floor's origin, 10 m from the lens.
-    const cv::Mat floor = floorWithMarkers(cv::aruco::getPredefinedDictionary(cv::aruco::DICT_4X4_50), {{7, 0.0, 0.0}}, 1.5, 3.0, 200);
-    cv::imwrite((dir / "floor-marker.png").string(),
-                lens.photograph(floor, 1.0 / 200, {-1.5, -1.5}, floorToCamera(0.0, kCameraHeight, kCameraZ, kTiltDegrees)));
-    (void)arcomp("calibrate floor " + (dir / "floor-marker.png").string() + " --intrinsics " + (dir / "lens.yaml").string() +
-                 " --marker 7 --marker-size 1.5 --out " + (dir / "camera.yaml").string());
+    const cv::Mat floor =
+        floorWithMarkers(cv::aruco::getPredefinedDictionary(cv::aruco::DICT_4X4_50), {{7, 0.0, 0.0}}, 1.5, 3.0, 200);
+    cv::imwrite(
+        (dir / "floor-marker.png").string(),
+        lens.photograph(floor, 1.0 / 200, {-1.5, -1.5}, floorToCamera(0.0, kCameraHeight, kCameraZ, kTiltDegrees)));
+    (void)arcomp("calibrate floor " + (dir / "floor-marker.png").string() + " --intrinsics " +
+                 (dir / "lens.yaml").string() + " --marker 7 --marker-size 1.5 --out " +
+                 (dir / "camera.yaml").string());
 
     Calibration c;
     c.camera = readCameraFile(dir / "camera.yaml");
@@ -214,7 +227,8 @@ Calibration calibrate(const SyntheticCamera& lens, const fs::path& dir) {
     const CameraIntrinsics &k = c.camera.intrinsics, &t = truth.intrinsics;
     c.focalErrPct = 100.0 * std::max(std::abs(k.fx - t.fx) / t.fx, std::abs(k.fy - t.fy) / t.fy);
     c.principalErrPx = std::max(std::abs(k.cx - t.cx), std::abs(k.cy - t.cy));
-    if (const auto at = intrinsics.find("reprojection "); at != std::string::npos) c.rmsPx = std::stod(intrinsics.substr(at + 13));
+    if (const auto at = intrinsics.find("reprojection "); at != std::string::npos)
+        c.rmsPx = std::stod(intrinsics.substr(at + 13));
     c.heightErrPct = 100.0 * std::abs(c.camera.heightMetres() - truth.heightMetres()) / truth.heightMetres();
     c.tiltErrDeg = std::abs(c.camera.tiltDegrees() - truth.tiltDegrees());
     return c;
@@ -241,7 +255,7 @@ private:
 struct StationRun {
     double wrongPct = 0;
     double medianMs = 0;
-    FrameStats stages;  // each stage's median
+    FrameStats stages;           // each stage's median
     std::vector<cv::Mat> shown;  // the frames kept for the strip
     cv::Mat worst;               // the frame with the most wrong pixels, those in magenta
     int worstFrame = -1;
@@ -261,8 +275,8 @@ std::vector<StationRun> runStations(const std::vector<fs::path>& configs, const 
     };
     std::vector<Running> runs(configs.size());
     for (std::size_t k = 0; k < configs.size(); ++k)
-        runs[k].station = std::make_unique<Station>(loadStationConfig(configs[k]),
-                                                    StationInput::fromReplay(std::make_unique<FramesGrabber>(video), kFps));
+        runs[k].station = std::make_unique<Station>(
+            loadStationConfig(configs[k]), StationInput::fromReplay(std::make_unique<FramesGrabber>(video), kFps));
     for (std::size_t i = 0; i < video.size(); ++i)
         for (std::size_t turn = 0; turn < runs.size(); ++turn) {
             Running& r = runs[(i + turn) % runs.size()];
@@ -295,7 +309,8 @@ std::vector<StationRun> runStations(const std::vector<fs::path>& configs, const 
     std::vector<StationRun> results;
     for (Running& r : runs) {
         StationRun& out = r.result;
-        out.wrongPct = r.walkerPixels ? 100.0 * static_cast<double>(r.wrong) / static_cast<double>(r.walkerPixels) : 0.0;
+        out.wrongPct =
+            r.walkerPixels ? 100.0 * static_cast<double>(r.wrong) / static_cast<double>(r.walkerPixels) : 0.0;
         out.medianMs = median(r.totals);
         out.stages.trackMs = median(r.track);
         out.stages.shadowMs = median(r.shadow);
@@ -310,13 +325,18 @@ std::vector<StationRun> runStations(const std::vector<fs::path>& configs, const 
 
 void writeConfig(const fs::path& file, const std::string& matte, const std::string& compositor) {
     std::ofstream out(file);
-    out << "matte:\n" << matte << "compositor:\n  person_plane_m: 12\n" << compositor << "render:\n  shading: unlit\n"
+    out << "matte:\n"
+        << matte << "compositor:\n  person_plane_m: 12\n"
+        << compositor << "render:\n  shading: unlit\n"
         << "camera:\n  calibration: camera.yaml\nscene:\n  objects:\n";
     for (const ObjectConfig& o : cgObjects()) {
-        out << "    - {name: " << o.name << ", shape: " << o.shape << ", position: [" << o.position.x << ", " << o.position.y
-            << ", " << o.position.z << "], color: [" << o.color.r << ", " << o.color.g << ", " << o.color.b << ", 1]";
-        if (o.shape == "box") out << ", size: [" << o.size.x << ", " << o.size.y << ", " << o.size.z << "]";
-        else out << ", radius: " << o.radius;
+        out << "    - {name: " << o.name << ", shape: " << o.shape << ", position: [" << o.position.x << ", "
+            << o.position.y << ", " << o.position.z << "], color: [" << o.color.r << ", " << o.color.g << ", "
+            << o.color.b << ", 1]";
+        if (o.shape == "box")
+            out << ", size: [" << o.size.x << ", " << o.size.y << ", " << o.size.z << "]";
+        else
+            out << ", radius: " << o.radius;
         out << "}\n";
     }
 }
@@ -335,7 +355,8 @@ int run(const Options& o) {
     const cv::Mat floor = floorTexture(texelsPerMetre);
     const cv::Matx33d floorPose = floorToCamera(0.0, kCameraHeight, kCameraZ, kTiltDegrees);
     const cv::Mat plate = lens.photograph(floor, 1.0 / texelsPerMetre, {-15.0, -15.0}, floorPose);
-    const SyntheticCamera pinhole({.size = kLens.size, .fx = kLens.fx, .fy = kLens.fy, .cx = kLens.cx, .cy = kLens.cy, .distortion = {}});
+    const SyntheticCamera pinhole(
+        {.size = kLens.size, .fx = kLens.fx, .fy = kLens.fy, .cx = kLens.cx, .cy = kLens.cy, .distortion = {}});
     const cv::Mat truthPlate = pinhole.photograph(floor, 1.0 / texelsPerMetre, {-15.0, -15.0}, floorPose);
     cv::imwrite((dir / "plate.png").string(), plate);
 
@@ -365,8 +386,9 @@ int run(const Options& o) {
     writeConfig(dir / "feet-masks.yaml", gtMasks, "");
     writeConfig(dir / "feet-own-matte.yaml", ownMatte, "");
     writeConfig(dir / "plane-masks.yaml", gtMasks, "  person_depth: plane\n  shadow: {enabled: false}\n");
-    const std::vector<StationRun> runs = runStations(
-        {dir / "feet-masks.yaml", dir / "plane-masks.yaml", dir / "feet-own-matte.yaml"}, video, masks, truthCg, stripFrames);
+    const std::vector<StationRun> runs =
+        runStations({dir / "feet-masks.yaml", dir / "plane-masks.yaml", dir / "feet-own-matte.yaml"}, video, masks,
+                    truthCg, stripFrames);
     const StationRun &feet = runs[0], &plane = runs[1], &own = runs[2];
 
     // The strip: a row a frame, ground truth | single plane | per-person depth, at half size.
@@ -399,8 +421,7 @@ int run(const Options& o) {
         .end();
     json.field("frame_ms_median_per_person", Fixed{feet.medianMs, 2})
         .field("frame_ms_median_single_plane", Fixed{plane.medianMs, 2})
-        .field("added_ms_768x576", Fixed{feet.medianMs - plane.medianMs, 2})
-;
+        .field("added_ms_768x576", Fixed{feet.medianMs - plane.medianMs, 2});
     for (const auto& [name, r] : {std::pair{"stage_ms_per_person", &feet}, std::pair{"stage_ms_single_plane", &plane}})
         json.beginObject(name)
             .field("matte", Fixed{r->stages.matteMs, 2})
@@ -413,8 +434,9 @@ int run(const Options& o) {
     json.beginObject("targets")
         .field("layering", feet.wrongPct <= 0.5 && own.wrongPct <= 0.5)
         .field("single_plane_fails", plane.wrongPct > 0.5)
-        .field("calibration", calibration.focalErrPct <= 1.0 && calibration.principalErrPx <= 2.0 && calibration.rmsPx < 0.5 &&
-                                  calibration.heightErrPct <= 2.0 && calibration.tiltErrDeg <= 0.5)
+        .field("calibration", calibration.focalErrPct <= 1.0 && calibration.principalErrPx <= 2.0 &&
+                                  calibration.rmsPx < 0.5 && calibration.heightErrPct <= 2.0 &&
+                                  calibration.tiltErrDeg <= 0.5)
         .field("cost", feet.medianMs - plane.medianMs <= 2.0)
         .end();
     json.field("out", dir.string());
@@ -422,15 +444,16 @@ int run(const Options& o) {
     return kExitOk;
 }
 
-const bool registered = registerCommand({"ar", "Registered AR against a synthetic ground truth: layering per person vs one plane, calibration error, cost",
-                                       [](CommandLine& line) {
-                                           auto o = std::make_shared<Options>();
-                                           line.option("--frames", o->frames, "frames of the installation (the walkers reach the box after about 100)")
-                                               .range(12, 100000)
-                                               .showDefault();
-                                           line.option("--out", o->out, "folder for the strip, the calibration inputs and configs").showDefault();
-                                           return [o] { return run(*o); };
-                                       }});
+const bool registered = registerCommand(
+    {"ar", "Registered AR against a synthetic ground truth: layering per person vs one plane, calibration error, cost",
+     [](CommandLine& line) {
+         auto o = std::make_shared<Options>();
+         line.option("--frames", o->frames, "frames of the installation (the walkers reach the box after about 100)")
+             .range(12, 100000)
+             .showDefault();
+         line.option("--out", o->out, "folder for the strip, the calibration inputs and configs").showDefault();
+         return [o] { return run(*o); };
+     }});
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

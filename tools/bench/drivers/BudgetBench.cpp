@@ -54,18 +54,18 @@
 
 #include "graph/budget/FrameBudget.hpp"
 #include "graph/budget/OnScreenPixels.hpp"
-#include "graph/lod/LodAlternatives.hpp"
 #include "graph/core/SelectPass.hpp"
+#include "graph/lod/LodAlternatives.hpp"
 #include "runtime/config/CalibrationFile.hpp"
-#include "tools/bench/probes/CostCalibration.hpp"
 #include "runtime/gl/GlContext.hpp"
 #include "runtime/gl/RenderTarget.hpp"
-#include "tools/cli/CliParse.hpp"
-#include "tools/cli/Command.hpp"
+#include "tools/bench/probes/CostCalibration.hpp"
 #include "tools/bench/report/BenchJson.hpp"
-#include "tools/bench/scenes/FlightScene.hpp"
 #include "tools/bench/report/LinePlot.hpp"
 #include "tools/bench/report/Stats.hpp"
+#include "tools/bench/scenes/FlightScene.hpp"
+#include "tools/cli/CliParse.hpp"
+#include "tools/cli/Command.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -97,7 +97,7 @@ constexpr double kTargetUnderFastest = 0.85;
 
 struct Series {
     std::vector<double> ms, predicted, quality, applyUs, gain;  // gain: the online fit's, as predicted
-    std::vector<double> itemsMs, floorItemsMs;  // calibrated: as drawn, all coarsest and unlit
+    std::vector<double> itemsMs, floorItemsMs;                  // calibrated: as drawn, all coarsest and unlit
     std::vector<std::size_t> items, reduced;
 };
 
@@ -112,8 +112,12 @@ double stddev(const std::vector<double>& v) {
 // A run's frame-time fields, into the object `j` has open.
 void writeFrameStats(BenchJson& j, const std::vector<double>& ms) {
     const double lo = *std::min_element(ms.begin(), ms.end()), hi = *std::max_element(ms.begin(), ms.end());
-    j.field("frame_ms_median", median(ms)).field("frame_ms_p95", percentile(ms, 95)).field("frame_ms_max", hi)
-        .field("frame_ms_min", lo).field("frame_ms_stddev", stddev(ms)).field("max_min_ratio", lo > 0 ? hi / lo : 0.0);
+    j.field("frame_ms_median", median(ms))
+        .field("frame_ms_p95", percentile(ms, 95))
+        .field("frame_ms_max", hi)
+        .field("frame_ms_min", lo)
+        .field("frame_ms_stddev", stddev(ms))
+        .field("max_min_ratio", lo > 0 ? hi / lo : 0.0);
 }
 
 // Flies the path once; with a budget, each frame goes through it.
@@ -138,7 +142,8 @@ Series fly(FlightScene& flight, Renderer& renderer, FrameTimer& timer, int frame
         if (budget) {
             const auto t0 = std::chrono::steady_clock::now();
             const BudgetStats st = budget->apply(flight.world.scene, list, view);
-            s.applyUs.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
+            s.applyUs.push_back(
+                std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
             predicted = st.predictedMs;
             quality = st.quality;
             reduced = st.itemsReduced;
@@ -194,7 +199,8 @@ int run(const Options& o) {
         throw InputError("--raster-threads must lie in 0..64, or be -1 for the driver's default");
     if (!(o.controller.upgradeMargin >= 0.0 && o.controller.upgradeMargin <= 0.5))
         throw InputError("--upgrade-margin must lie in 0..0.5");
-    if (o.controller.holdFrames < 0 || o.controller.holdFrames > 10000) throw InputError("--hold-frames must lie in 0..10000");
+    if (o.controller.holdFrames < 0 || o.controller.holdFrames > 10000)
+        throw InputError("--hold-frames must lie in 0..10000");
     const TimerMode timerMode = parseTimerMode(o.timer, "--timer");
     const std::filesystem::path out(o.out);
     std::filesystem::create_directories(out);
@@ -212,7 +218,8 @@ int run(const Options& o) {
     {
         DrawList all;
         for (const auto& levels : flight.mountains)
-            for (NodeId n : levels) all.items.push_back({n, flight.world.scene.meshPart(n), 1.0f, 1.0f, 0, Shading::Phong});
+            for (NodeId n : levels)
+                all.items.push_back({n, flight.world.scene.meshPart(n), 1.0f, 1.0f, 0, Shading::Phong});
         const View v = View::framing(flight.world.scene.bound(), 45.0f, size);
         renderer.draw(flight.world.scene, all, v);
         timer.begin();
@@ -253,7 +260,8 @@ int run(const Options& o) {
     // predicted items time in the unmanaged run.
     std::vector<double> tableGain;
     for (std::size_t f = 0; f < unmanaged.ms.size(); ++f)
-        if (unmanaged.itemsMs[f] > 0.0) tableGain.push_back((unmanaged.ms[f] - table.overheadMs) / unmanaged.itemsMs[f]);
+        if (unmanaged.itemsMs[f] > 0.0)
+            tableGain.push_back((unmanaged.ms[f] - table.overheadMs) / unmanaged.itemsMs[f]);
     const double gainU = tableGain.empty() ? 1.0 : std::max(0.25, median(tableGain));
     double floorMs = 0.0;
     for (double items : unmanaged.floorItemsMs) floorMs = std::max(floorMs, gainU * items + table.overheadMs);
@@ -286,7 +294,8 @@ int run(const Options& o) {
     }
     std::vector<double> unmanagedPredictionError;
     for (std::size_t f = 0; f < unmanaged.ms.size(); ++f)
-        unmanagedPredictionError.push_back(100.0 * std::abs(unmanaged.predicted[f] - unmanaged.ms[f]) / unmanaged.ms[f]);
+        unmanagedPredictionError.push_back(100.0 * std::abs(unmanaged.predicted[f] - unmanaged.ms[f]) /
+                                           unmanaged.ms[f]);
     const double n = static_cast<double>(managed.ms.size());
     const double p95Dev = percentile(absDev, 95), over20Pct = 100.0 * static_cast<double>(over20) / n;
     const double predErr = median(predictionError);
@@ -298,8 +307,8 @@ int run(const Options& o) {
                "items,items_reduced,apply_us,managed_gain\n";
         for (std::size_t f = 0; f < managed.ms.size(); ++f)
             csv << f << ',' << targetMs << ',' << unmanaged.ms[f] << ',' << unmanaged.predicted[f] << ','
-                << managed.ms[f] << ',' << managed.predicted[f] << ',' << managed.quality[f] << ','
-                << managed.items[f] << ',' << managed.reduced[f] << ',' << managed.applyUs[f] << ',' << managed.gain[f] << '\n';
+                << managed.ms[f] << ',' << managed.predicted[f] << ',' << managed.quality[f] << ',' << managed.items[f]
+                << ',' << managed.reduced[f] << ',' << managed.applyUs[f] << ',' << managed.gain[f] << '\n';
         if (!csv) throw std::runtime_error((out / "budget_frames.csv").string() + ": write failed");
     }
     const std::vector<double> x = frameAxis(managed.ms.size());
@@ -316,14 +325,19 @@ int run(const Options& o) {
 
     const bool met = p95Dev <= 10.0 && over20Pct <= 1.0 && predErr <= 10.0 && ratio >= 3.0;
     BenchJson json;
-    json.field("bench", "budget").field("device", glDescription()).field("timer", timer.method())
-        .field("raster_threads", o.rasterThreads).field("repeat_jitter_p95_pct", jitterPct);
+    json.field("bench", "budget")
+        .field("device", glDescription())
+        .field("timer", timer.method())
+        .field("raster_threads", o.rasterThreads)
+        .field("repeat_jitter_p95_pct", jitterPct);
     json.beginArray("size").value(size.x).value(size.y).end();
     json.field("frames", o.frames).field("mountains", o.mountains);
     json.beginArray("triangles_per_level");
     for (const std::size_t triangles : flight.trianglesPerLevel) json.value(triangles);
     json.end();
-    json.field("calibration_s", calibrationSeconds).field("target_ms", targetMs).field("target_rule", targetRule)
+    json.field("calibration_s", calibrationSeconds)
+        .field("target_ms", targetMs)
+        .field("target_rule", targetRule)
         .field("floor_ms_max_estimate", floorMs);
     json.beginObject("unmanaged");
     writeFrameStats(json, unmanaged.ms);
@@ -352,28 +366,27 @@ const bool registered = registerCommand(
          auto o = std::make_shared<Options>();
          line.option("--out", o->out, "folder for the CSV, the plots and calibration.yaml").showDefault();
          line.option("--target-ms", o->targetMs,
-                        "target frame time; 0: " + std::to_string(kTargetUnderFastest).substr(0, 4) +
-                            " of the unmanaged run's fastest frame (not below the floor)")
+                     "target frame time; 0: " + std::to_string(kTargetUnderFastest).substr(0, 4) +
+                         " of the unmanaged run's fastest frame (not below the floor)")
              .showDefault();
          line.option("--raster-threads", o->rasterThreads,
-                        "llvmpipe raster threads (LP_NUM_THREADS); 0: on the drawing thread; -1: the driver's default")
+                     "llvmpipe raster threads (LP_NUM_THREADS); 0: on the drawing thread; -1: the driver's default")
              .showDefault();
          line.option("--upgrade-margin", o->controller.upgradeMargin,
-                        "hysteresis: a raise must leave this fraction of the target unused")
+                     "hysteresis: a raise must leave this fraction of the target unused")
              .showDefault();
          line.option("--hold-frames", o->controller.holdFrames, "hysteresis: frames a lowered object stays down")
              .showDefault();
          line.option("--frames", o->frames, "frames along the path, per run").showDefault();
          line.option("--mountains", o->mountains, "mountains in the field").showDefault();
          line.option("--size", o->size, "output size WIDTHxHEIGHT").showDefault();
-         line.option("--timer", o->timer, kTimerModeHelp)
-             .showDefault();
+         line.option("--timer", o->timer, kTimerModeHelp).showDefault();
          line.option("--scene-frames", o->sceneFrames, "whole frames of the flight scene in the calibration")
              .showDefault();
          line.option("--calibration", o->calibration, "read this calibration instead of measuring one");
          return [o] { return run(*o); };
      }});
 
-} // namespace
+}  // namespace
 
-} // namespace arcomp
+}  // namespace arcomp

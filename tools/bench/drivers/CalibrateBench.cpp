@@ -6,13 +6,13 @@
 //   arcomp-bench calibrate --out build/bench-budget   # writes calibration.yaml
 
 #include "runtime/config/CalibrationFile.hpp"
-#include "tools/bench/probes/CostCalibration.hpp"
 #include "runtime/gl/GlContext.hpp"
 #include "runtime/gl/RenderTarget.hpp"
-#include "tools/cli/CliParse.hpp"
-#include "tools/cli/Command.hpp"
+#include "tools/bench/probes/CostCalibration.hpp"
 #include "tools/bench/report/BenchJson.hpp"
 #include "tools/bench/scenes/FlightScene.hpp"
+#include "tools/cli/CliParse.hpp"
+#include "tools/cli/Command.hpp"
 
 #include <chrono>
 #include <iostream>
@@ -73,12 +73,11 @@ const bool registered = registerCommand(
          auto o = std::make_shared<Options>();
          line.option("--out", o->out, "folder for calibration.yaml").showDefault();
          line.option("--size", o->size, "output size WIDTHxHEIGHT").showDefault();
-         line.option("--timer", o->timer, kTimerModeHelp)
-             .showDefault();
+         line.option("--timer", o->timer, kTimerModeHelp).showDefault();
          line.option("--repeats", o->repeats, "frames per sample (median)").showDefault();
          return [o] { return run(*o); };
      }});
 
-} // namespace
+}  // namespace
 
-} // namespace arcomp
+}  // namespace arcomp

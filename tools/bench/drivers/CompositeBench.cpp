@@ -43,10 +43,10 @@
 #include "runtime/gl/GlContext.hpp"
 #include "runtime/station/ReplayInput.hpp"
 #include "runtime/station/Station.hpp"
-#include "tools/cli/Command.hpp"
-#include "tools/bench/report/BenchJson.hpp"
 #include "tools/bench/probes/ShellCommand.hpp"
+#include "tools/bench/report/BenchJson.hpp"
 #include "tools/bench/report/Stats.hpp"
+#include "tools/cli/Command.hpp"
 #include "video/sources/FileSource.hpp"
 #include "video/sources/TestPatternSource.hpp"
 #include "video/sources/VideoFileWriter.hpp"
@@ -221,8 +221,11 @@ PeerResult gstreamerPeer(int frames) {
     }
     const std::string n = std::to_string(frames), caps = "video/x-raw,width=1920,height=1080,format=AYUV";
     const std::string command = "gst-launch-1.0 -q compositor name=mix ! video/x-raw,format=AYUV ! fakesink sync=false"
-                                " videotestsrc num-buffers=" + n + " pattern=checkers-8 ! " + caps + " ! mix."
-                                " videotestsrc num-buffers=" + n + " ! " + caps + " ! alpha method=green ! mix.";
+                                " videotestsrc num-buffers=" +
+                                n + " pattern=checkers-8 ! " + caps +
+                                " ! mix."
+                                " videotestsrc num-buffers=" +
+                                n + " ! " + caps + " ! alpha method=green ! mix.";
     const auto t0 = std::chrono::steady_clock::now();
     const ShellResult ran = runShellCommand(command);
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -254,7 +257,8 @@ RunResult runHd(const StationConfig& demo, const fs::path& scratch, const Compos
     StationConfig hd = demo;
     hd.compositing.output = {};
     hd.compositing.matte.background.scale = 0.25;
-    Station station(hd, StationInput::fromReplay(std::make_unique<FileSource>(FileOptions{.path = file.string()}), 30.0));
+    Station station(hd,
+                    StationInput::fromReplay(std::make_unique<FileSource>(FileOptions{.path = file.string()}), 30.0));
     // Read back every frame, as any output would; no encoder on top.
     return run(station, "generated 1920x1080 MJPG", o.frames, o.warmup, true);
 }
@@ -269,11 +273,15 @@ struct HoldoutResult {
 HoldoutResult runHoldout(const CompositeOptions& o) {
     HoldoutResult r;
     const auto t0 = std::chrono::steady_clock::now();
-    Station s(occluders(o.model, HoldoutMesh::Silhouette, r.occluders), StationInput::fromReplay(
-        std::make_unique<TestPatternSource>(TestPatternOptions{.width = 768, .height = 576, .paced = false}), 30.0));
+    Station s(occluders(o.model, HoldoutMesh::Silhouette, r.occluders),
+              StationInput::fromReplay(
+                  std::make_unique<TestPatternSource>(TestPatternOptions{.width = 768, .height = 576, .paced = false}),
+                  30.0));
     r.bakeMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    Station f(occluders(o.model, HoldoutMesh::Full, r.occluders), StationInput::fromReplay(
-        std::make_unique<TestPatternSource>(TestPatternOptions{.width = 768, .height = 576, .paced = false}), 30.0));
+    Station f(occluders(o.model, HoldoutMesh::Full, r.occluders),
+              StationInput::fromReplay(
+                  std::make_unique<TestPatternSource>(TestPatternOptions{.width = 768, .height = 576, .paced = false}),
+                  30.0));
     std::cerr << "holdout: " << r.occluders << "\n";
     // Interleaved so that both see the same machine load.
     std::vector<double> sMs, fMs;
@@ -322,8 +330,11 @@ int bench(const CompositeOptions& o) {
     // What the pipelining adds: the frame is shown one station frame later,
     // and read back one more later where the readback is asynchronous.
     const int latency = 1 + hd.readbackLatencyFrames;
-    j.beginObject("pipeline_latency").field("frames", latency).field("ms", hd.fps > 0 ? latency * 1000.0 / hd.fps : 0.0)
-        .field("readback", hd.readbackLatencyFrames ? "asynchronous" : "synchronous").end();
+    j.beginObject("pipeline_latency")
+        .field("frames", latency)
+        .field("ms", hd.fps > 0 ? latency * 1000.0 / hd.fps : 0.0)
+        .field("readback", hd.readbackLatencyFrames ? "asynchronous" : "synchronous")
+        .end();
     j.end().field("hd_matte_scale", 0.25);
     j.beginObject("gstreamer");
     if (gst.fps) {
@@ -366,16 +377,17 @@ int bench(const CompositeOptions& o) {
     return kExitOk;
 }
 
-const bool registered = registerCommand({"composite", "Compositing: per-stage ms, fps at 768x576 and 1080p, silhouette vs full holdout",
-    [](CommandLine& line) {
-        auto o = std::make_shared<CompositeOptions>();
-        line.option("--config", o->config, "station config for the vtest run").showDefault();
-        line.option("--model", o->model, "high-polygon occluder model").showDefault();
-        line.option("--frames", o->frames, "measured frames per run").showDefault();
-        line.option("--warmup", o->warmup, "frames before measuring").showDefault();
-        line.flag("--hd-only", o->hdOnly, "only the 1080p part and its GStreamer peer");
-        return [o] { return bench(*o); };
-    }});
+const bool registered =
+    registerCommand({"composite", "Compositing: per-stage ms, fps at 768x576 and 1080p, silhouette vs full holdout",
+                     [](CommandLine& line) {
+                         auto o = std::make_shared<CompositeOptions>();
+                         line.option("--config", o->config, "station config for the vtest run").showDefault();
+                         line.option("--model", o->model, "high-polygon occluder model").showDefault();
+                         line.option("--frames", o->frames, "measured frames per run").showDefault();
+                         line.option("--warmup", o->warmup, "frames before measuring").showDefault();
+                         line.flag("--hd-only", o->hdOnly, "only the 1080p part and its GStreamer peer");
+                         return [o] { return bench(*o); };
+                     }});
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

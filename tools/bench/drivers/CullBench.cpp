@@ -9,13 +9,13 @@
 // then whether every frame's counts match OpenSceneGraph's and the ratio of
 // the two medians (speedup_vs_osg) and of the two 95th percentiles.
 
-#include "graph/lod/Lod.hpp"
 #include "graph/core/SelectPass.hpp"
-#include "tools/cli/Command.hpp"
-#include "tools/bench/report/BenchJson.hpp"
+#include "graph/lod/Lod.hpp"
 #include "tools/bench/drivers/CullBenchOsg.hpp"
-#include "tools/bench/scenes/CullScene.hpp"
+#include "tools/bench/report/BenchJson.hpp"
 #include "tools/bench/report/Stats.hpp"
+#include "tools/bench/scenes/CullScene.hpp"
+#include "tools/cli/Command.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -88,7 +88,8 @@ std::pair<double, CullFrameCounts> arcompFrame(ArcompCullScene& a, const CullSce
 // Frames [first, last) of the path on one side, after `warmup` untimed
 // frames that bring that side's data back into cache; `cull(frame)` culls
 // one frame and returns its time and counts.
-template <class Cull> void timeBlock(CullRun& run, int first, int last, int warmup, Cull&& cull) {
+template <class Cull>
+void timeBlock(CullRun& run, int first, int last, int warmup, Cull&& cull) {
     for (int f = 0; f < warmup; ++f) cull(first);
     for (int f = first; f < last; ++f) {
         const auto [ms, counts] = cull(f);
@@ -121,7 +122,8 @@ Summary summarize(const CullRun& run) {
 int runCullBench(std::uint32_t objects, const std::string& layoutName, int frames) {
     if (frames < 1) throw InputError("--frames must be at least 1");
     if (objects < 1) throw InputError("--objects must be at least 1");
-    if (layoutName != "flat" && layoutName != "tree") throw InputError("--layout must be flat or tree, not " + layoutName);
+    if (layoutName != "flat" && layoutName != "tree")
+        throw InputError("--layout must be flat or tree, not " + layoutName);
     const CullLayout layout = layoutName == "flat" ? CullLayout::Flat : CullLayout::Tree;
     const CullScene description = makeCullScene(objects, layout);
 
@@ -158,24 +160,35 @@ int runCullBench(std::uint32_t objects, const std::string& layoutName, int frame
     const auto levelCounts = [&json](const char* key, const Summary& summary) {
         json.beginArray(key).value(summary.levels[0]).value(summary.levels[1]).value(summary.levels[2]).end();
     };
-    json.field("bench", "cull").field("objects", objects).field("layout", layoutName).field("frames", frames)
-        .field("measured_frames", ourRun.msPerFrame.size()).field("warmup_frames", kWarmupFrames)
+    json.field("bench", "cull")
+        .field("objects", objects)
+        .field("layout", layoutName)
+        .field("frames", frames)
+        .field("measured_frames", ourRun.msPerFrame.size())
+        .field("warmup_frames", kWarmupFrames)
         .field("ms_per_frame_median", s.medianMs)
-        .field("ms_per_frame_p95", s.p95Ms).field("ms_per_frame_min", s.minMs).field("ms_per_frame_max", s.maxMs)
-        .field("ns_per_object_median", s.medianMs * 1e6 / objects).field("visible_median", s.visibleMedian);
+        .field("ms_per_frame_p95", s.p95Ms)
+        .field("ms_per_frame_min", s.minMs)
+        .field("ms_per_frame_max", s.maxMs)
+        .field("ns_per_object_median", s.medianMs * 1e6 / objects)
+        .field("visible_median", s.visibleMedian);
     levelCounts("lod_level_counts", s);
-    json.field("nodes", scene.scene.nodeCount()).field("block_frames", kBlockFrames)
+    json.field("nodes", scene.scene.nodeCount())
+        .field("block_frames", kBlockFrames)
         .field("block_warmup_frames", kBlockWarmupFrames);
 #ifdef ARCOMP_HAVE_OSG
     const Summary o = summarize(osgRun);
     std::size_t mismatched = 0;
     for (std::size_t f = 0; f < ourRun.counts.size(); ++f) mismatched += ourRun.counts[f] == osgRun.counts[f] ? 0 : 1;
-    json.field("osg_measured_frames", osgRun.msPerFrame.size()).field("osg_ms_per_frame_median", o.medianMs)
+    json.field("osg_measured_frames", osgRun.msPerFrame.size())
+        .field("osg_ms_per_frame_median", o.medianMs)
         .field("osg_ms_per_frame_p95", o.p95Ms)
         .field("osg_ms_per_frame_min", o.minMs)
-        .field("osg_ms_per_frame_max", o.maxMs).field("osg_visible_median", o.visibleMedian);
+        .field("osg_ms_per_frame_max", o.maxMs)
+        .field("osg_visible_median", o.visibleMedian);
     levelCounts("osg_lod_level_counts", o);
-    json.field("frames_with_count_mismatch", mismatched).field("counts_match_osg", mismatched == 0)
+    json.field("frames_with_count_mismatch", mismatched)
+        .field("counts_match_osg", mismatched == 0)
         .field("speedup_vs_osg", s.medianMs > 0 ? o.medianMs / s.medianMs : 0.0)
         .field("speedup_vs_osg_p95", s.p95Ms > 0 ? o.p95Ms / s.p95Ms : 0.0);
 #else
@@ -185,17 +198,17 @@ int runCullBench(std::uint32_t objects, const std::string& layoutName, int frame
     return kExitOk;
 }
 
-const bool registered = registerCommand({"cull", "Select traversal (cull + LOD + draw list) against OpenSceneGraph",
-    [](CommandLine& line) {
-        auto objects = std::make_shared<std::uint32_t>(100000);
-        auto layout = std::make_shared<std::string>("flat");
-        auto frames = std::make_shared<int>(200);
-        line.option("--objects", *objects, "Number of objects").showDefault();
-        line.option("--layout", *layout, "flat or tree").showDefault();
-        line.option("--frames", *frames, "Measured frames (after 20 warm-up frames)").showDefault();
-        return [=] { return runCullBench(*objects, *layout, *frames); };
-    }});
+const bool registered =
+    registerCommand({"cull", "Select traversal (cull + LOD + draw list) against OpenSceneGraph", [](CommandLine& line) {
+                         auto objects = std::make_shared<std::uint32_t>(100000);
+                         auto layout = std::make_shared<std::string>("flat");
+                         auto frames = std::make_shared<int>(200);
+                         line.option("--objects", *objects, "Number of objects").showDefault();
+                         line.option("--layout", *layout, "flat or tree").showDefault();
+                         line.option("--frames", *frames, "Measured frames (after 20 warm-up frames)").showDefault();
+                         return [=] { return runCullBench(*objects, *layout, *frames); };
+                     }});
 
-} // namespace
+}  // namespace
 
-} // namespace arcomp
+}  // namespace arcomp

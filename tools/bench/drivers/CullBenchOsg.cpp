@@ -4,8 +4,8 @@
 // Compiled only where OpenSceneGraph was found.
 #ifdef ARCOMP_HAVE_OSG
 
-#include "graph/core/Geometry.hpp"
 #include "tools/bench/drivers/CullBenchOsg.hpp"
+#include "graph/core/Geometry.hpp"
 
 #include <osg/Geode>
 #include <osg/Geometry>
@@ -57,8 +57,8 @@ struct OsgScene {
 void addGroup(OsgScene& out, const CullScene& s, std::uint32_t group, osg::Group* parent) {
     const CullGroup& g = s.groups[group];
     for (std::uint32_t k : g.objects) {
-        osg::ref_ptr<osg::MatrixTransform> t = new osg::MatrixTransform(
-            osg::Matrix::translate(s.positions[k].x, s.positions[k].y, s.positions[k].z));
+        osg::ref_ptr<osg::MatrixTransform> t =
+            new osg::MatrixTransform(osg::Matrix::translate(s.positions[k].x, s.positions[k].y, s.positions[k].z));
         osg::ref_ptr<osg::LOD> lod = new osg::LOD;
         lod->setRangeMode(osg::LOD::DISTANCE_FROM_EYE_POINT);
         lod->addChild(out.levels[0], 0.0f, kCullRanges[0]);
@@ -90,7 +90,7 @@ CullFrameCounts countLeaves(osgUtil::RenderBin& bin, const OsgScene& scene) {
     return counts;
 }
 
-} // namespace
+}  // namespace
 
 struct OsgCull::State {
     explicit State(const CullScene& s) : description(s) {}
@@ -134,8 +134,7 @@ std::pair<double, CullFrameCounts> OsgCull::frame(int frame, int frames) {
     State& st = *state_;
     const CullCamera c = cullCamera(st.description, frame, frames);
     const osg::Matrixd view = osg::Matrixd::lookAt(osg::Vec3d(c.eye.x, c.eye.y, c.eye.z),
-                                                   osg::Vec3d(c.target.x, c.target.y, c.target.z),
-                                                   osg::Vec3d(0, 1, 0));
+                                                   osg::Vec3d(c.target.x, c.target.y, c.target.z), osg::Vec3d(0, 1, 0));
     const auto start = std::chrono::steady_clock::now();
     // As SceneView::cullStage: reset, hand over the render graph, push
     // viewport and matrices, traverse, pop, sort and prune.
@@ -164,6 +163,6 @@ std::pair<double, CullFrameCounts> OsgCull::frame(int frame, int frames) {
     return {std::chrono::duration<double, std::milli>(stop - start).count(), countLeaves(*st.stage, st.scene)};
 }
 
-} // namespace arcomp
+}  // namespace arcomp
 
 #endif

@@ -27,12 +27,12 @@
 //   tools/gltf-reference/setup && arcomp-bench gltf-reference --out build/bench-gltf-reference
 
 #include "runtime/render/Environment.hpp"
+#include "tools/bench/probes/ShellCommand.hpp"
+#include "tools/bench/report/BenchJson.hpp"
+#include "tools/bench/report/Ssim.hpp"
+#include "tools/bench/scenes/GltfFeatureModels.hpp"
 #include "tools/cli/CliParse.hpp"
 #include "tools/cli/Command.hpp"
-#include "tools/bench/report/BenchJson.hpp"
-#include "tools/bench/scenes/GltfFeatureModels.hpp"
-#include "tools/bench/probes/ShellCommand.hpp"
-#include "tools/bench/report/Ssim.hpp"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -89,7 +89,8 @@ std::string missingReference(const Options& o) {
 }
 
 fs::path environmentFile(const std::string& name, const fs::path& folder) {
-    if (name != "neutral") throw std::logic_error("feature model environment '" + name + "' is not one the bench makes");
+    if (name != "neutral")
+        throw std::logic_error("feature model environment '" + name + "' is not one the bench makes");
     const fs::path file = folder / "neutral.hdr";
     // The neutral studio arcomp lights with, so that both renderers see it.
     if (!fs::exists(file)) writeRadianceHdr(file, neutralEnvironment());
@@ -106,14 +107,16 @@ std::string arcompRenderArgs(const Job& job, const fs::path& model, const fs::pa
                              glm::ivec2 size, const fs::path& png) {
     const FeatureModel& m = *job.model;
     std::string args = "render " + shellQuote(model.string()) + " --out " + shellQuote(png.string()) + " --size " +
-                       std::to_string(size.x) + "x" + std::to_string(size.y) + " --gl " + (api == "es30" ? "es3" : api) +
-                       " --eye " + vec3(m.camera.eye) + " --target " + vec3(m.camera.target) +
-                       " --fovy " + BenchJson::number(m.camera.fovyDegrees) + " --light-direction " + vec3(m.light.direction) +
-                       " --light-color " + vec3(m.light.color) + " --light-intensity " + BenchJson::number(m.light.intensity);
+                       std::to_string(size.x) + "x" + std::to_string(size.y) + " --gl " +
+                       (api == "es30" ? "es3" : api) + " --eye " + vec3(m.camera.eye) + " --target " +
+                       vec3(m.camera.target) + " --fovy " + BenchJson::number(m.camera.fovyDegrees) +
+                       " --light-direction " + vec3(m.light.direction) + " --light-color " + vec3(m.light.color) +
+                       " --light-intensity " + BenchJson::number(m.light.intensity);
     if (!environment.empty())
         args += " --environment " + shellQuote(environment.string()) + " --environment-intensity " +
                 BenchJson::number(m.environmentIntensity);
-    else args += " --environment-intensity 0";
+    else
+        args += " --environment-intensity 0";
     if (job.time) args += " --time " + BenchJson::number(*job.time);
     return args;
 }
@@ -125,7 +128,9 @@ std::string threeJobs(const std::vector<Job>& jobs, const fs::path& models, cons
     j.field("chromium", o.chromium).beginArray("jobs");
     for (const Job& job : jobs) {
         const FeatureModel& m = *job.model;
-        const auto array = [&](const char* key, const glm::vec3& v) { j.beginArray(key).value(v.x).value(v.y).value(v.z).end(); };
+        const auto array = [&](const char* key, const glm::vec3& v) {
+            j.beginArray(key).value(v.x).value(v.y).value(v.z).end();
+        };
         j.beginObject();
         j.field("model", fs::absolute(models / (m.name + ".gltf")).string());
         j.field("out", fs::absolute(outDir / (job.id + ".png")).string());
@@ -137,11 +142,15 @@ std::string threeJobs(const std::vector<Job>& jobs, const fs::path& models, cons
         array("direction", m.light.direction);
         array("color", m.light.color);
         j.field("intensity", m.light.intensity).end();
-        if (m.environment.empty()) j.null("environment");
-        else j.field("environment", fs::absolute(environmentFile(m.environment, models)).string());
+        if (m.environment.empty())
+            j.null("environment");
+        else
+            j.field("environment", fs::absolute(environmentFile(m.environment, models)).string());
         j.field("environmentIntensity", m.environmentIntensity);
-        if (job.time) j.field("time", *job.time);
-        else j.null("time");
+        if (job.time)
+            j.field("time", *job.time);
+        else
+            j.null("time");
         j.end();
     }
     j.end();
@@ -198,7 +207,8 @@ int run(const Options& o) {
     std::vector<std::string> apis;
     for (std::string api : splitList(o.gl)) {
         if (api == "es3") api = "es30";
-        if (api != "gl33" && api != "es30") throw InputError("--gl '" + o.gl + "': expected gl33 and/or es30, comma-separated");
+        if (api != "gl33" && api != "es30")
+            throw InputError("--gl '" + o.gl + "': expected gl33 and/or es30, comma-separated");
         apis.push_back(api);
     }
     if (apis.empty()) throw InputError("--gl: no API given");
@@ -237,8 +247,8 @@ int run(const Options& o) {
     const fs::path threeDir = out / "three", jobsFile = out / "three-jobs.json";
     std::ofstream(jobsFile) << threeJobs(jobs, models, threeDir, size, o) << "\n";
     std::cerr << "gltf-reference: three.js renders " << jobs.size() << " images\n";
-    const ShellResult three = runShellCommand("node " + shellQuote((fs::path(o.referenceDir) / "render.mjs").string()) + " " +
-                                 shellQuote(jobsFile.string()));
+    const ShellResult three = runShellCommand("node " + shellQuote((fs::path(o.referenceDir) / "render.mjs").string()) +
+                                              " " + shellQuote(jobsFile.string()));
     if (three.status != 0) throw std::runtime_error("three.js reference failed:\n" + three.output);
     std::string threeRevision, webgl;
     {
@@ -259,7 +269,7 @@ int run(const Options& o) {
         std::vector<std::optional<double>> ssim;    // per API, the whole image
         std::vector<std::optional<double>> object;  // per API, where either renderer drew (and 5 pixels around)
         std::vector<std::optional<double>> diff;    // per API, mean |difference| there, 0-255
-        std::vector<std::string> errors;          // per API, empty when it rendered
+        std::vector<std::string> errors;            // per API, empty when it rendered
     };
     std::vector<Score> scores;
     for (const Job& job : jobs) {
@@ -272,17 +282,19 @@ int run(const Options& o) {
         for (const std::string& api : apis) {
             const fs::path png = out / ("arcomp-" + api) / (job.id + ".png");
             fs::create_directories(png.parent_path());
-            const fs::path environment = m.environment.empty() ? fs::path() : fs::absolute(environmentFile(m.environment, models));
+            const fs::path environment =
+                m.environment.empty() ? fs::path() : fs::absolute(environmentFile(m.environment, models));
             std::cerr << "gltf-reference: arcomp " << api << " renders " << job.id << "\n";
-            const ShellResult ran = runShellCommand(shellQuote(self) + " " +
-                                       arcompRenderArgs(job, fs::absolute(models / (m.name + ".gltf")), environment, api,
-                                                        size, png));
+            const ShellResult ran = runShellCommand(
+                shellQuote(self) + " " +
+                arcompRenderArgs(job, fs::absolute(models / (m.name + ".gltf")), environment, api, size, png));
             if (ran.status != 0) {
                 score.ssim.push_back(std::nullopt);
                 score.object.push_back(std::nullopt);
                 score.diff.push_back(std::nullopt);
                 score.errors.push_back(ran.output.empty() ? "exit " + std::to_string(ran.status) : ran.output);
-                tiles.push_back(captioned(cv::Mat(reference.size(), CV_8UC3, cv::Scalar(0, 0, 80)), "arcomp " + api + " failed"));
+                tiles.push_back(
+                    captioned(cv::Mat(reference.size(), CV_8UC3, cv::Scalar(0, 0, 80)), "arcomp " + api + " failed"));
                 continue;
             }
             const Rendered arcomp = overBackground(png, true);
@@ -293,8 +305,11 @@ int run(const Options& o) {
             cv::Mat object;
             cv::dilate(three.covered | arcomp.covered, object, cv::getStructuringElement(cv::MORPH_ELLIPSE, {11, 11}));
             const int border = 5;  // the SSIM window's half: ssim() leaves it out
-            const bool drawn = cv::countNonZero(object(cv::Rect(border, border, object.cols - 2 * border, object.rows - 2 * border))) > 0;
-            const std::optional<double> o = drawn ? std::optional<double>(ssim(reference, image, object)) : std::nullopt;
+            const bool drawn =
+                cv::countNonZero(object(cv::Rect(border, border, object.cols - 2 * border, object.rows - 2 * border))) >
+                0;
+            const std::optional<double> o =
+                drawn ? std::optional<double>(ssim(reference, image, object)) : std::nullopt;
             score.ssim.push_back(s);
             score.object.push_back(o);
             if (drawn) {
@@ -326,11 +341,12 @@ int run(const Options& o) {
     j.field("bench", "gltf-reference");
     j.beginArray("size").value(size.x).value(size.y).end();
     j.field("three", threeRevision).field("webgl", webgl);
-    j.field("ssim", "Wang et al. 2004, 11x11 Gaussian sigma 1.5, K1 0.01, K2 0.03, per sRGB channel averaged, over grey; "
-                    "ssim_object: the same map averaged where either renderer drew, dilated 5 px; "
-                    "diff_object: mean |difference| of 8-bit sRGB values there; "
-                    "pass: both ssim and ssim_object reach the threshold with every API (the whole image alone passes "
-                    "an object drawn in the wrong colour, since the background dominates)");
+    j.field("ssim",
+            "Wang et al. 2004, 11x11 Gaussian sigma 1.5, K1 0.01, K2 0.03, per sRGB channel averaged, over grey; "
+            "ssim_object: the same map averaged where either renderer drew, dilated 5 px; "
+            "diff_object: mean |difference| of 8-bit sRGB values there; "
+            "pass: both ssim and ssim_object reach the threshold with every API (the whole image alone passes "
+            "an object drawn in the wrong colour, since the background dominates)");
     j.field("threshold", o.threshold);
     j.beginArray("apis");
     for (const std::string& api : apis) j.value(api);
@@ -340,16 +356,21 @@ int run(const Options& o) {
     j.beginArray("models");
     for (std::size_t i = 0; i < jobs.size(); ++i) {
         j.beginObject().field("model", jobs[i].model->name);
-        if (jobs[i].time) j.field("time", *jobs[i].time);
-        else j.null("time");
+        if (jobs[i].time)
+            j.field("time", *jobs[i].time);
+        else
+            j.null("time");
         bool pass = true;
         // One SSIM per API; every one must reach the threshold.
-        const auto scoresOf = [&](const char* key, const std::vector<std::optional<double>>& values, double& lowestSoFar) {
+        const auto scoresOf = [&](const char* key, const std::vector<std::optional<double>>& values,
+                                  double& lowestSoFar) {
             j.beginObject(key);
             for (std::size_t a = 0; a < apis.size(); ++a) {
                 const auto& s = values[a];
-                if (s) j.field(apis[a], Fixed{*s, 4});
-                else j.null(apis[a]);
+                if (s)
+                    j.field(apis[a], Fixed{*s, 4});
+                else
+                    j.null(apis[a]);
                 pass = pass && s && *s >= o.threshold;
                 lowestSoFar = std::min(lowestSoFar, s.value_or(0.0));
             }
@@ -359,8 +380,10 @@ int run(const Options& o) {
         scoresOf("ssim_object", scores[i].object, lowestObject);
         j.beginObject("diff_object");
         for (std::size_t a = 0; a < apis.size(); ++a) {
-            if (const auto& d = scores[i].diff[a]) j.field(apis[a], Fixed{*d, 2});
-            else j.null(apis[a]);
+            if (const auto& d = scores[i].diff[a])
+                j.field(apis[a], Fixed{*d, 2});
+            else
+                j.null(apis[a]);
         }
         j.end();
         for (std::size_t a = 0; a < apis.size(); ++a)
@@ -377,18 +400,23 @@ int run(const Options& o) {
 }
 
 const bool registered = registerCommand(
-    {"gltf-reference", "glTF feature models drawn by arcomp (each GL API) and by three.js in headless Chromium: SSIM per model",
+    {"gltf-reference",
+     "glTF feature models drawn by arcomp (each GL API) and by three.js in headless Chromium: SSIM per model",
      [](CommandLine& line) {
          auto o = std::make_shared<Options>();
          line.option("--out", o->out, "folder for the models, the renders and the strips").required();
          line.option("--models", o->models, "feature models to render, comma-separated (default: all)");
          line.option("--gl", o->gl, "arcomp's APIs, comma-separated: gl33, es30").showDefault();
          line.option("--size", o->size, "image size WIDTHxHEIGHT, both renderers").showDefault();
-         line.option("--reference-dir", o->referenceDir, "the three.js harness (render.mjs, node_modules/)").showDefault();
+         line.option("--reference-dir", o->referenceDir, "the three.js harness (render.mjs, node_modules/)")
+             .showDefault();
          line.option("--chromium", o->chromium, "Chromium executable").showDefault();
-         line.option("--threshold", o->threshold, "SSIM (whole image and object region) a model must reach with every API to pass").range(0.0, 1.0).showDefault();
+         line.option("--threshold", o->threshold,
+                     "SSIM (whole image and object region) a model must reach with every API to pass")
+             .range(0.0, 1.0)
+             .showDefault();
          return [o] { return run(*o); };
      }});
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

@@ -9,10 +9,10 @@
 // select <= 2 ms a frame and rebuild <= 5 ms a frame at 100,000.
 
 #include "graph/core/ElapsedTime.hpp"
-#include "graph/grouping/GroupingNodes.hpp"
 #include "graph/core/SelectPass.hpp"
-#include "tools/cli/Command.hpp"
+#include "graph/grouping/GroupingNodes.hpp"
 #include "tools/bench/report/BenchJson.hpp"
+#include "tools/cli/Command.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -87,7 +87,8 @@ int run(const Options& o) {
     const auto viewAt = [&](int f) {
         const float s = float(f) / float(std::max(1, o.frames - 1));
         const glm::vec3 eye{extent * (0.1f + 0.8f * s), 1500.0f, extent * (0.1f + 0.3f * s)};
-        return View::lookAt(eye, eye + glm::vec3(0.6f, -0.25f, 1.0f), {0, 1, 0}, 60.0f, {1280, 720}, 10.0f, 4.0f * extent);
+        return View::lookAt(eye, eye + glm::vec3(0.6f, -0.25f, 1.0f), {0, 1, 0}, 60.0f, {1280, 720}, 10.0f,
+                            4.0f * extent);
     };
     DrawList list;
     double selectMs = 0.0, ungroupedMs = 0.0;
@@ -141,18 +142,28 @@ int run(const Options& o) {
     const bool big = o.objects >= 100000;
     const double buildTarget = big ? 20000.0 : 1000.0;
     BenchJson j;
-    j.field("bench", "grouping").field("objects", o.objects).field("build_ms", buildMs)
-        .field("tree_depth", tree.depth()).field("groups", groups).field("top_level", tree.roots().size())
-        .field("frames", o.frames).field("select_ms_per_frame", selectMs / frames)
+    j.field("bench", "grouping")
+        .field("objects", o.objects)
+        .field("build_ms", buildMs)
+        .field("tree_depth", tree.depth())
+        .field("groups", groups)
+        .field("top_level", tree.roots().size())
+        .field("frames", o.frames)
+        .field("select_ms_per_frame", selectMs / frames)
         .field("drawn_items_per_frame", double(drawn) / frames)
         .field("visited_nodes_per_frame", double(visited) / frames)
         .field("baseline_ungrouped_select_ms_per_frame", ungroupedMs / frames)
         .field("baseline_ungrouped_items_per_frame", double(drawnUngrouped) / frames)
-        .field("moving_per_frame", moving).field("rebuild_ms_per_frame", rebuildMs / frames)
+        .field("moving_per_frame", moving)
+        .field("rebuild_ms_per_frame", rebuildMs / frames)
         .field("refitted_per_frame", double(total.refitted) / frames)
         .field("dissolved_per_frame", double(total.dissolved) / frames)
         .field("merged_per_frame", double(total.merged) / frames);
-    j.beginObject("targets").field("build_ms", buildTarget).field("select_ms_per_frame", 2).field("rebuild_ms_per_frame", 5).end();
+    j.beginObject("targets")
+        .field("build_ms", buildTarget)
+        .field("select_ms_per_frame", 2)
+        .field("rebuild_ms_per_frame", 5)
+        .end();
     j.field("build_within_target", buildMs < buildTarget)
         .field("select_within_target", selectMs / frames <= 2.0)
         .field("rebuild_within_target", rebuildMs / frames <= 5.0);
@@ -161,8 +172,7 @@ int run(const Options& o) {
 }
 
 const bool registered = registerCommand(
-    {"grouping", "Grouping tree: build time and depth, select and local rebuild per frame",
-     [](CommandLine& line) {
+    {"grouping", "Grouping tree: build time and depth, select and local rebuild per frame", [](CommandLine& line) {
          auto o = std::make_shared<Options>();
          line.option("--objects", o->objects, "Number of objects").showDefault();
          line.option("--frames", o->frames, "Frames of the camera path and of motion").showDefault();
@@ -170,5 +180,5 @@ const bool registered = registerCommand(
          return [o] { return run(*o); };
      }});
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

@@ -9,15 +9,15 @@
 
 #include "graph/scenes/ForestExperiment.hpp"
 #include "runtime/gl/GlContext.hpp"
-#include "tools/bench/report/ImageDifference.hpp"
-#include "runtime/station/ImageFile.hpp"
-#include "runtime/render/ImpostorBaker.hpp"
 #include "runtime/gl/RenderTarget.hpp"
+#include "runtime/render/ImpostorBaker.hpp"
 #include "runtime/render/Renderer.hpp"
+#include "runtime/station/ImageFile.hpp"
+#include "tools/bench/report/BenchJson.hpp"
+#include "tools/bench/report/ImageDifference.hpp"
+#include "tools/bench/report/LinePlot.hpp"
 #include "tools/cli/CliParse.hpp"
 #include "tools/cli/Command.hpp"
-#include "tools/bench/report/BenchJson.hpp"
-#include "tools/bench/report/LinePlot.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -94,7 +94,8 @@ int run(const Options& o) {
     const char* names[2] = {"mixed", "green"};
     for (int f = 0; f < 2; ++f) {
         ForestExperiment& e = *forests[f];
-        const std::size_t baked = bakeImpostors(e.world.scene, e.forest.grouping, e.world.grouping, {.pixelsPerUnit = 0.6f, .eye = e.view.eye});
+        const std::size_t baked = bakeImpostors(e.world.scene, e.forest.grouping, e.world.grouping,
+                                                {.pixelsPerUnit = 0.6f, .eye = e.view.eye});
         std::cerr << names[f] << ": " << baked << " impostors baked\n";
         Renderer renderer;
         const auto shot = [&](ForestMode mode, GroupingProxy proxy, const char* label) {
@@ -122,9 +123,13 @@ int run(const Options& o) {
     // decimals than the grid's would print their rounding.
     const auto onGrid = [](double t) { return Fixed{t, 3}; };
     BenchJson j;
-    j.field("bench", "grouping-forest").field("omega_t_steps", thresholds.size())
+    j.field("bench", "grouping-forest")
+        .field("omega_t_steps", thresholds.size())
         .field("full_triangles", curves[0].full.front());
-    j.beginObject("grouping_helps_from_omega_t").field("mixed", onGrid(helpsFrom[0])).field("green", onGrid(helpsFrom[1])).end();
+    j.beginObject("grouping_helps_from_omega_t")
+        .field("mixed", onGrid(helpsFrom[0]))
+        .field("green", onGrid(helpsFrom[1]))
+        .end();
     j.beginObject("triangles_at_omega_t_0_1")
         .field("mixed_simplified", curves[0].simplified.back())
         .field("mixed_grouped", curves[0].grouped.back())
@@ -161,5 +166,5 @@ const bool registered = registerCommand(
          return [o] { return run(*o); };
      }});
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

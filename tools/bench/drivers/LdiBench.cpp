@@ -23,15 +23,15 @@
 
 #include "graph/core/ElapsedTime.hpp"
 #include "graph/points/LdiRenderer.hpp"
-#include "graph/scenes/ProceduralTree.hpp"
 #include "graph/points/Voxelizer.hpp"
-#include "tools/cli/Command.hpp"
+#include "graph/scenes/ProceduralTree.hpp"
 #include "tools/bench/report/BenchJson.hpp"
 #include "tools/bench/report/Stats.hpp"
+#include "tools/cli/Command.hpp"
 
 #include <glm/gtc/constants.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -99,7 +99,8 @@ struct Measured {
 };
 
 int benchLdi(const Options& o) {
-    if (o.frames < 1 || o.size < 16 || o.threads < 1) throw InputError("--frames, --size and --threads must be positive");
+    if (o.frames < 1 || o.size < 16 || o.threads < 1)
+        throw InputError("--frames, --size and --threads must be positive");
     std::filesystem::create_directories(o.out);
     const ProceduralTree tree = growTree(2009);
     const std::vector<VoxelSource> sources = tree.voxelSources();
@@ -193,7 +194,8 @@ int benchLdi(const Options& o) {
         pasteOnWhite(strip, 0, ref.renderDepthSorted(stripView));
         pasteOnWhite(strip, 1, one.render(stripView));
         pasteOnWhite(strip, 2, many.render(stripView));
-        const std::string file = (std::filesystem::path(o.out) / (pass == 0 ? "ldi_strip.png" : "ldi_strip_redblack.png")).string();
+        const std::string file =
+            (std::filesystem::path(o.out) / (pass == 0 ? "ldi_strip.png" : "ldi_strip_redblack.png")).string();
         if (!cv::imwrite(file, strip)) throw std::runtime_error(file + ": cannot write");
         written.push_back(file);
     }
@@ -210,10 +212,15 @@ int benchLdi(const Options& o) {
     // Every figure to three places, as this bench has always reported them.
     const auto rounded = [](double x) { return Fixed{x, 3}; };
     BenchJson json;
-    json.field("bench", "ldi").field("voxels", grid.size()).field("grid", o.resolution)
-        .field("output", std::to_string(o.size) + "x" + std::to_string(o.size)).field("frames", o.frames)
-        .field("threads", o.threads).field("tolerance_levels", kTolerance)
-        .field("depth_sort_ms_per_frame", rounded(sortMs)).field("depth_sort_min_ms", rounded(sortMinMs))
+    json.field("bench", "ldi")
+        .field("voxels", grid.size())
+        .field("grid", o.resolution)
+        .field("output", std::to_string(o.size) + "x" + std::to_string(o.size))
+        .field("frames", o.frames)
+        .field("threads", o.threads)
+        .field("tolerance_levels", kTolerance)
+        .field("depth_sort_ms_per_frame", rounded(sortMs))
+        .field("depth_sort_min_ms", rounded(sortMinMs))
         .field("depth_sort_cpu_ms_per_frame", rounded(sortCpuMs))
         .field("depth_sort_order_ms_per_frame", rounded(sortOrderMs));
     json.beginArray("ldi");
@@ -246,17 +253,17 @@ int benchLdi(const Options& o) {
     return kExitOk;
 }
 
-const bool registered = registerCommand({"ldi", "Translucent point clouds: McMillan order over 1-7 LDIs vs depth sort",
-                                       [](CommandLine& line) {
-                                           auto o = std::make_shared<Options>();
-                                           line.option("--out", o->out, "folder for the PNG strips").showDefault();
-                                           line.option("--frames", o->frames, "views on the circle").showDefault();
-                                           line.option("--res", o->resolution, "voxel grid resolution").showDefault();
-                                           line.option("--size", o->size, "output width and height").showDefault();
-                                           line.option("--threads", o->threads, "renderer threads").showDefault();
-                                           return [o] { return benchLdi(*o); };
-                                       }});
+const bool registered = registerCommand(
+    {"ldi", "Translucent point clouds: McMillan order over 1-7 LDIs vs depth sort", [](CommandLine& line) {
+         auto o = std::make_shared<Options>();
+         line.option("--out", o->out, "folder for the PNG strips").showDefault();
+         line.option("--frames", o->frames, "views on the circle").showDefault();
+         line.option("--res", o->resolution, "voxel grid resolution").showDefault();
+         line.option("--size", o->size, "output width and height").showDefault();
+         line.option("--threads", o->threads, "renderer threads").showDefault();
+         return [o] { return benchLdi(*o); };
+     }});
 
-} // namespace
+}  // namespace
 
-} // namespace arcomp
+}  // namespace arcomp

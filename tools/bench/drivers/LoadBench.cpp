@@ -3,9 +3,9 @@
 // (the baseline: what validation, vertex sharing and normals cost).
 
 #include "graph/io/ModelLoader.hpp"
-#include "tools/cli/Command.hpp"
 #include "tools/bench/report/BenchJson.hpp"
 #include "tools/bench/report/Stats.hpp"
+#include "tools/cli/Command.hpp"
 
 #include <tiny_obj_loader.h>
 
@@ -44,7 +44,8 @@ int loadBench(const std::string& model, int repeats) {
     }
     BenchJson j;
     j.field("bench", "load").field("model", model).field("repeats", repeats);
-    j.field("load_ms", Fixed{median(ours), 3}).field("load_ms_min", Fixed{*std::min_element(ours.begin(), ours.end()), 3});
+    j.field("load_ms", Fixed{median(ours), 3})
+        .field("load_ms_min", Fixed{*std::min_element(ours.begin(), ours.end()), 3});
     j.field("triangles", triangles).field("vertices", vertices);
     if (isObj)
         j.field("baseline", "tinyobjloader parse only")
@@ -54,14 +55,14 @@ int loadBench(const std::string& model, int repeats) {
     return kExitOk;
 }
 
-const bool registered = registerCommand({"load", "Time loading a model", [](CommandLine& line) {
-                                           auto model = std::make_shared<std::string>();
-                                           auto repeats = std::make_shared<int>(5);
-                                           line.option("--model", *model, "Model file").required();
-                                           line.option("--repeats", *repeats, "Loads to time")
-                                               .range(1, 1000).showDefault();
-                                           return [model, repeats] { return loadBench(*model, *repeats); };
-                                       }});
+const bool registered =
+    registerCommand({"load", "Time loading a model", [](CommandLine& line) {
+                         auto model = std::make_shared<std::string>();
+                         auto repeats = std::make_shared<int>(5);
+                         line.option("--model", *model, "Model file").required();
+                         line.option("--repeats", *repeats, "Loads to time").range(1, 1000).showDefault();
+                         return [model, repeats] { return loadBench(*model, *repeats); };
+                     }});
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

@@ -19,12 +19,12 @@
 //   arcomp-bench matte --sequence ../shared/data/video/busStation --out build/bench-matte
 
 #include "graph/core/ElapsedTime.hpp"
-#include "tools/cli/Command.hpp"
 #include "tools/bench/report/BenchJson.hpp"
 #include "tools/bench/report/LinePlot.hpp"
+#include "tools/bench/report/MatteScore.hpp"
 #include "tools/bench/report/Stats.hpp"
 #include "tools/bench/scenes/CdnetSequence.hpp"
-#include "tools/bench/report/MatteScore.hpp"
+#include "tools/cli/Command.hpp"
 #include "video/matte/MatteSpec.hpp"
 
 #include <opencv2/bgsegm.hpp>
@@ -94,7 +94,8 @@ std::vector<Method> methods(double fps) {
             auto raw = std::make_shared<cv::Mat>();
             return Running{[model, raw](const cv::Mat& frame) { model->apply(frame, *raw); },
                            [raw](cv::Mat& mask) {
-                               cv::threshold(*raw, mask, 200, 255, cv::THRESH_BINARY);  // shadows (127) are not the person
+                               cv::threshold(*raw, mask, 200, 255,
+                                             cv::THRESH_BINARY);  // shadows (127) are not the person
                            }};
         };
     };
@@ -118,8 +119,8 @@ const char* methodName(BackgroundMethod m) {
 struct Result {
     MatteScore score;
     double msPerFrame = 0;
-    std::vector<double> frameIndex, frameF;   // scored frames with people or false alarms
-    std::vector<cv::Mat> stripMasks;           // at the strip frames
+    std::vector<double> frameIndex, frameF;  // scored frames with people or false alarms
+    std::vector<cv::Mat> stripMasks;         // at the strip frames
     std::vector<double> ms768Runs;
     double ms768 = 0, ms1080 = 0;
 };
@@ -167,8 +168,10 @@ double timeAtSize(const Method& method, const std::string& clip, cv::Size size, 
             cap.set(cv::CAP_PROP_POS_FRAMES, 0);
             if (!cap.read(decoded)) throw InputError(clip + ": cannot read frames for the speed runs");
         }
-        if (decoded.size() != size) cv::resize(decoded, frame, size, 0, 0, cv::INTER_LINEAR);
-        else frame = decoded;
+        if (decoded.size() != size)
+            cv::resize(decoded, frame, size, 0, 0, cv::INTER_LINEAR);
+        else
+            frame = decoded;
         const auto t0 = Clock::now();
         run.apply(frame);
         if (i >= skip) ms += msSince(t0), ++timed;
@@ -193,15 +196,18 @@ void writeStrip(const fs::path& file, const CdnetSequence& seq, const std::vecto
 }
 
 int matteBench(const Options& o) {
-    if (o.speedFrames < 1 || o.speedSkip < 0 || o.speedRuns < 1) throw InputError("--speed-frames and --speed-runs must be >= 1");
+    if (o.speedFrames < 1 || o.speedSkip < 0 || o.speedRuns < 1)
+        throw InputError("--speed-frames and --speed-runs must be >= 1");
     const CdnetSequence seq = openCdnetSequence(o.sequence);  // VideoError: exit 2
     const bool haveClip = fs::exists(o.speedClip);
-    if (!haveClip) std::fprintf(stderr, "bench matte: %s absent; no timing at 768x576 and 1920x1080\n", o.speedClip.c_str());
+    if (!haveClip)
+        std::fprintf(stderr, "bench matte: %s absent; no timing at 768x576 and 1920x1080\n", o.speedClip.c_str());
     const std::vector<int> strips = stripFrames(seq);
     const std::vector<Method> all = methods(o.fps);
     std::vector<Result> results(all.size());
     for (std::size_t m = 0; m < all.size(); ++m) {
-        std::fprintf(stderr, "bench matte: %s on %s (%d frames)\n", all[m].name.c_str(), seq.dir.c_str(), seq.frameCount);
+        std::fprintf(stderr, "bench matte: %s on %s (%d frames)\n", all[m].name.c_str(), seq.dir.c_str(),
+                     seq.frameCount);
         scoreSequence(seq, all[m], strips, results[m]);
         if (!haveClip) continue;
         // Runs interleaved with the other methods would spread a busy spell of
@@ -275,7 +281,8 @@ const bool registered = registerCommand(
     {"matte", "Person mattes on a CDnet sequence: P, R, F, IoU and ms/frame against OpenCV's subtractors",
      [](CommandLine& line) {
          auto o = std::make_shared<Options>();
-         line.option("--sequence", o->sequence, "CDnet sequence folder (input/, groundtruth/, temporalROI.txt)").required();
+         line.option("--sequence", o->sequence, "CDnet sequence folder (input/, groundtruth/, temporalROI.txt)")
+             .required();
          line.option("--out", o->out, "folder for the strips and the per-frame F plot");
          line.option("--fps", o->fps, "the sequence's frame rate, for the settings given in seconds").showDefault();
          line.option("--speed-clip", o->speedClip, "clip timed at 768x576 and 1920x1080").showDefault();
@@ -285,5 +292,5 @@ const bool registered = registerCommand(
          return [o] { return matteBench(*o); };
      }});
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

@@ -4,12 +4,12 @@
 // Masks come from the CPU coverage rasterizer, so the figures are
 // deterministic and need no GL.
 
+#include "graph/core/View.hpp"
 #include "graph/silhouette/CoverageRaster.hpp"
 #include "graph/silhouette/FlatMesh.hpp"
 #include "graph/silhouette/SilhouetteMesh.hpp"
-#include "graph/core/View.hpp"
-#include "tools/cli/Command.hpp"
 #include "tools/bench/report/BenchJson.hpp"
+#include "tools/cli/Command.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -61,8 +61,7 @@ int run(const Options& o) {
         const auto indices = mesh.indicesOf(mesh.ranges[r]);
         reduced.push_back(indices.size() / 3);
         reductionSum += 100.0 * (1.0 - double(indices.size() / 3) / double(trianglesFull));
-        const std::vector<std::uint32_t> baseline =
-            simplifyToTriangles(mesh.positions, full, indices.size() / 3);
+        const std::vector<std::uint32_t> baseline = simplifyToTriangles(mesh.positions, full, indices.size() / 3);
         baselineTris.push_back(baseline.size() / 3);
         const Box box = mesh.regions[r].box();
         std::uniform_real_distribution<float> u(0.0f, 1.0f);
@@ -71,10 +70,12 @@ int run(const Options& o) {
             if (mesh.rangeFor(eye).firstIndex != mesh.ranges[r].firstIndex) ++wrongRange;
             const float distance = glm::length(eye - bound.center);
             const float fovy = glm::degrees(2.0f * std::atan(1.1f * bound.radius / distance));
-            const View view = View::lookAt(eye, bound.center, {0, 1, 0}, fovy, {o.size, o.size},
-                                           0.05f * bound.radius, distance + 2.0f * bound.radius);
+            const View view = View::lookAt(eye, bound.center, {0, 1, 0}, fovy, {o.size, o.size}, 0.05f * bound.radius,
+                                           distance + 2.0f * bound.radius);
             const glm::mat4 vp = view.viewProjection();
-            fullMask.clear(); mask.clear(); baseMask.clear();
+            fullMask.clear();
+            mask.clear();
+            baseMask.clear();
             skipped += rasterizeCoverage(mesh.positions, full, vp, fullMask);
             skipped += rasterizeCoverage(mesh.positions, indices, vp, mask);
             skipped += rasterizeCoverage(mesh.positions, baseline, vp, baseMask);
@@ -87,45 +88,52 @@ int run(const Options& o) {
         }
         const SilhouetteRegionReport& rep = report[r];
         std::cerr << "region " << r << ": FM " << rep.front << " BM " << rep.back << " (kept " << rep.backKept
-                  << ") SM " << rep.silhouette << ", triangles " << rep.trianglesBefore << " -> "
-                  << rep.trianglesAfter << ", FM locked " << rep.frontLocked << ", rejected tries "
-                  << rep.rejectedTries << "; worst so far: differing " << worst.differing << " far "
-                  << worst.differingFarFromOutline << " | baseline " << worstBaseline.differing << " far "
-                  << worstBaseline.differingFarFromOutline << "\n";
+                  << ") SM " << rep.silhouette << ", triangles " << rep.trianglesBefore << " -> " << rep.trianglesAfter
+                  << ", FM locked " << rep.frontLocked << ", rejected tries " << rep.rejectedTries
+                  << "; worst so far: differing " << worst.differing << " far " << worst.differingFarFromOutline
+                  << " | baseline " << worstBaseline.differing << " far " << worstBaseline.differingFarFromOutline
+                  << "\n";
     }
     std::size_t reducedSum = 0;
     for (std::size_t n : reduced) reducedSum += n;
     const double meanReduced = double(reducedSum) / double(reduced.size());
     const double reductionMean = reductionSum / double(reduced.size());
-    const bool pass = worst.differingFarFromOutline == 0 && reductionMean >= 50.0 &&
-                      worstBaseline.differing > 0 && bakeMs <= 2000.0 && skipped == 0 && wrongRange == 0;
+    const bool pass = worst.differingFarFromOutline == 0 && reductionMean >= 50.0 && worstBaseline.differing > 0 &&
+                      bakeMs <= 2000.0 && skipped == 0 && wrongRange == 0;
     BenchJson j;
-    j.field("bench", "silhouette").field("model", o.model).field("regions", mesh.regions.size())
-        .field("views_per_region", o.views).field("mask_size", o.size).field("triangles_full", trianglesFull);
+    j.field("bench", "silhouette")
+        .field("model", o.model)
+        .field("regions", mesh.regions.size())
+        .field("views_per_region", o.views)
+        .field("mask_size", o.size)
+        .field("triangles_full", trianglesFull);
     writeList(j, "triangles_reduced", reduced);
-    j.field("triangles_reduced_mean", meanReduced).field("reduction_pct_mean", reductionMean)
+    j.field("triangles_reduced_mean", meanReduced)
+        .field("reduction_pct_mean", reductionMean)
         .field("mask_pixels_differing_max", worst.differing)
         .field("mask_pixels_differing_far_from_outline_max", worst.differingFarFromOutline);
     writeList(j, "baseline_triangles", baselineTris);
     j.field("baseline_mask_pixels_differing_max", worstBaseline.differing)
         .field("baseline_mask_pixels_differing_far_from_outline_max", worstBaseline.differingFarFromOutline)
-        .field("bake_ms", bakeMs).field("triangles_skipped", skipped).field("views_with_wrong_region", wrongRange)
+        .field("bake_ms", bakeMs)
+        .field("triangles_skipped", skipped)
+        .field("views_with_wrong_region", wrongRange)
         .field("targets_met", pass);
     std::cout << j.str() << std::endl;
     return kExitOk;
 }
 
-const bool registered = registerCommand({"silhouette", "Silhouette-preserving reduction: masks of full vs reduced mesh",
-    [](CommandLine& line) {
-        auto o = std::make_shared<Options>();
-        line.option("--model", o->model, "OBJ model").required();
-        line.option("--regions", o->regions, "number of default boxes around the model");
-        line.option("--views", o->views, "random viewpoints per region");
-        line.option("--size", o->size, "mask width and height in pixels");
-        line.option("--seed", o->seed, "random seed for the viewpoints");
-        return [o] { return run(*o); };
-    }});
+const bool registered = registerCommand(
+    {"silhouette", "Silhouette-preserving reduction: masks of full vs reduced mesh", [](CommandLine& line) {
+         auto o = std::make_shared<Options>();
+         line.option("--model", o->model, "OBJ model").required();
+         line.option("--regions", o->regions, "number of default boxes around the model");
+         line.option("--views", o->views, "random viewpoints per region");
+         line.option("--size", o->size, "mask width and height in pixels");
+         line.option("--seed", o->seed, "random seed for the viewpoints");
+         return [o] { return run(*o); };
+     }});
 
-} // namespace
+}  // namespace
 
-} // namespace arcomp
+}  // namespace arcomp

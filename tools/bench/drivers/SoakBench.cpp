@@ -15,15 +15,14 @@
 // outputs are dropped, so a soak never fills a disk.
 
 #include "graph/core/ElapsedTime.hpp"
+#include "runtime/app/StationRunner.hpp"
 #include "runtime/gl/GlContext.hpp"
 #include "runtime/operator/ProcessMemory.hpp"
 #include "runtime/station/ReplayInput.hpp"
-#include "runtime/app/StationRunner.hpp"
-#include "tools/cli/Command.hpp"
 #include "tools/bench/report/BenchJson.hpp"
-#include "tools/bench/scenes/DemoStation.hpp"
 #include "tools/bench/report/Stats.hpp"
-
+#include "tools/bench/scenes/DemoStation.hpp"
+#include "tools/cli/Command.hpp"
 
 #include <time.h>
 #include <unistd.h>
@@ -123,7 +122,8 @@ int soak(const SoakOptions& o) {
     while (done < o.frames) {
         const auto t0 = Clock::now();
         const double c0 = processCpuMs();
-        if (!runner.step()) throw std::runtime_error("the looping input ended after " + std::to_string(done) + " frames");
+        if (!runner.step())
+            throw std::runtime_error("the looping input ended after " + std::to_string(done) + " frames");
         record(wallMs, done, std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
         record(cpuMs, done, processCpuMs() - c0);
         ++done;
@@ -164,7 +164,10 @@ int soak(const SoakOptions& o) {
 
     // Rounded as this bench has always reported them: memory to 10 kB, times to the microsecond.
     BenchJson j;
-    j.field("bench", "soak").field("frames", o.frames).field("warmup_frames", warmup).field("window_frames", window)
+    j.field("bench", "soak")
+        .field("frames", o.frames)
+        .field("warmup_frames", warmup)
+        .field("window_frames", window)
         .field("seconds", Fixed{seconds, 1})
         .field("input", o.config.empty() ? fs::path(video).filename().string() : o.config);
     j.beginArray("size").value(runner.station().size().x).value(runner.station().size().y).end();
@@ -206,5 +209,5 @@ const bool registered = registerCommand(
          return [o] { return soak(*o); };
      }});
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

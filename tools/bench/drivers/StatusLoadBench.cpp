@@ -24,14 +24,14 @@
 // and the station's median frame time in the loaded slices within 5 % of
 // the quiet slices' median. The last line is one JSON object.
 
+#include "runtime/app/StationRunner.hpp"
 #include "runtime/gl/GlContext.hpp"
 #include "runtime/station/ReplayInput.hpp"
-#include "runtime/app/StationRunner.hpp"
-#include "tools/cli/Command.hpp"
-#include "tools/bench/report/BenchJson.hpp"
-#include "tools/bench/scenes/DemoStation.hpp"
 #include "tools/bench/probes/HttpProbe.hpp"
+#include "tools/bench/report/BenchJson.hpp"
 #include "tools/bench/report/Stats.hpp"
+#include "tools/bench/scenes/DemoStation.hpp"
+#include "tools/cli/Command.hpp"
 
 #include <poll.h>
 #include <pthread.h>
@@ -299,7 +299,8 @@ int statusLoad(const StatusLoadOptions& o) {
                     std::lock_guard lock(samplesMutex);
                     samples[slice % 2].frameMs.push_back(ms);
                 }
-                if (o.fps > 0.0) std::this_thread::sleep_until(t0 + std::chrono::duration_cast<Clock::duration>(framePeriod));
+                if (o.fps > 0.0)
+                    std::this_thread::sleep_until(t0 + std::chrono::duration_cast<Clock::duration>(framePeriod));
             }
         }
     } catch (...) {
@@ -332,7 +333,9 @@ int statusLoad(const StatusLoadOptions& o) {
                          s == &quiet ? "while quiet" : "under load", s->firstFailure.c_str());
 
     BenchJson j;
-    j.field("bench", "status-load").field("fps", o.fps).field("loaded_seconds", loadedSlices * static_cast<int>(kSlice.count()))
+    j.field("bench", "status-load")
+        .field("fps", o.fps)
+        .field("loaded_seconds", loadedSlices * static_cast<int>(kSlice.count()))
         .field("quiet_seconds", (loadedSlices + 1) * static_cast<int>(kSlice.count()));
     j.beginObject("hostile_clients")
         .field("connects", hostile.connects())
@@ -382,13 +385,17 @@ const bool registered = registerCommand(
     {"status-load", "Scrape the status endpoint while idle, slow and garbage clients hold connections to it",
      [](CommandLine& line) {
          auto o = std::make_shared<StatusLoadOptions>();
-         line.option("--seconds", o->seconds, "Seconds under load, in 2 s slices between quiet ones").showDefault().range(2, 600);
+         line.option("--seconds", o->seconds, "Seconds under load, in 2 s slices between quiet ones")
+             .showDefault()
+             .range(2, 600);
          line.option("--idle", o->idle, "Clients that connect and send nothing").showDefault().range(0, 20000);
          line.option("--slow", o->slow, "Clients that send a request one byte a second").showDefault().range(0, 5000);
          line.option("--garbage", o->garbage, "Clients that send random bytes").showDefault().range(0, 5000);
-         line.option("--fps", o->fps, "The station's frame rate, as a camera paces it (0: as fast as it can)").showDefault().range(0.0, 240.0);
+         line.option("--fps", o->fps, "The station's frame rate, as a camera paces it (0: as fast as it can)")
+             .showDefault()
+             .range(0.0, 240.0);
          return [o] { return statusLoad(*o); };
      }});
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

@@ -13,13 +13,13 @@
 //    frame, so everything in between is dropped and counted, never queued.
 
 #include "graph/core/ElapsedTime.hpp"
-#include "tools/cli/Command.hpp"
 #include "tools/bench/report/BenchJson.hpp"
 #include "tools/bench/report/Stats.hpp"
+#include "tools/cli/Command.hpp"
+#include "video/pixels/YuvConversion.hpp"
 #include "video/sources/CaptureThread.hpp"
 #include "video/sources/FileSource.hpp"
 #include "video/sources/TestPatternSource.hpp"
-#include "video/pixels/YuvConversion.hpp"
 
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
@@ -40,7 +40,7 @@ namespace fs = std::filesystem;
 
 struct DecodeTiming {
     int frames = 0;
-    double oursMs = 0, baselineMs = 0; // per frame
+    double oursMs = 0, baselineMs = 0;  // per frame
 };
 
 DecodeTiming timeDecode(const std::string& path) {
@@ -76,8 +76,10 @@ struct DeliveryStats {
     double meanMs = 0, p95Ms = 0, maxMs = 0;
 };
 
-DeliveryStats measureDelivery(const std::string& path, std::chrono::milliseconds pollEvery, std::chrono::seconds runFor) {
-    CaptureThread src(path, [path] { return std::make_unique<FileSource>(FileOptions{.path = path, .paced = true, .loop = true}); });
+DeliveryStats measureDelivery(const std::string& path, std::chrono::milliseconds pollEvery,
+                              std::chrono::seconds runFor) {
+    CaptureThread src(
+        path, [path] { return std::make_unique<FileSource>(FileOptions{.path = path, .paced = true, .loop = true}); });
     src.open();
     std::vector<double> lat;
     const auto end = Clock::now() + runFor;
@@ -182,12 +184,13 @@ int videoBench(const std::string& vtest) {
     return kExitOk;
 }
 
-const bool registered = registerCommand(
-    {"video", "Decode+convert cost, newest-frame latency and drops", [](CommandLine& line) {
-         auto vtest = std::make_shared<std::string>("/usr/share/doc/opencv-doc/examples/data/vtest.avi");
-         line.option("--vtest", *vtest, "The 768x576 reference clip").showDefault();
-         return [vtest] { return videoBench(*vtest); };
-     }});
+const bool registered =
+    registerCommand({"video", "Decode+convert cost, newest-frame latency and drops", [](CommandLine& line) {
+                         auto vtest =
+                             std::make_shared<std::string>("/usr/share/doc/opencv-doc/examples/data/vtest.avi");
+                         line.option("--vtest", *vtest, "The 768x576 reference clip").showDefault();
+                         return [vtest] { return videoBench(*vtest); };
+                     }});
 
-} // namespace
-} // namespace arcomp
+}  // namespace
+}  // namespace arcomp

@@ -6,10 +6,12 @@
 
 int main(int argc, char** argv) {
     using namespace arcomp;
-    return runCommandLine(argc, argv, {
-        .program = "arcomp-bench",
-        .summary = "arcomp-bench: benchmarks; each prints one JSON object as its last line",
-        .footer = "Each bench drives the station binary, arcomp, found beside this one or on PATH.",
-        .groups = {},
-    });
+    return runCommandLine(
+        argc, argv,
+        {
+            .program = "arcomp-bench",
+            .summary = "arcomp-bench: benchmarks; each prints one JSON object as its last line",
+            .footer = "Each bench drives the station binary, arcomp, found beside this one or on PATH.",
+            .groups = {},
+        });
 }

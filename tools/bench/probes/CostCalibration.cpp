@@ -1,10 +1,10 @@
 #include "tools/bench/probes/CostCalibration.hpp"
 #include "graph/budget/OnScreenPixels.hpp"
 
-#include "graph/lod/LodAlternatives.hpp"
 #include "graph/budget/CostTableFit.hpp"
 #include "graph/budget/RecursiveLeastSquares.hpp"
 #include "graph/core/View.hpp"
+#include "graph/lod/LodAlternatives.hpp"
 
 #include <algorithm>
 #include <array>
@@ -46,10 +46,10 @@ std::discrete_distribution<int> randomMix(std::size_t kinds, std::mt19937& rng) 
     return std::discrete_distribution<int>(weights.begin(), weights.end());
 }
 
-} // namespace
+}  // namespace
 
-CostModel calibrateCosts(const Scene& scene, std::span<const NodeId> levelMeshes, Renderer& renderer,
-                         FrameTimer& timer, const CalibrationOptions& o) {
+CostModel calibrateCosts(const Scene& scene, std::span<const NodeId> levelMeshes, Renderer& renderer, FrameTimer& timer,
+                         const CalibrationOptions& o) {
     CostModel model(levelMeshes.size());
     if (levelMeshes.empty()) return model;
     const Sphere bound = scene.worldBound(levelMeshes[0]);
@@ -130,4 +130,4 @@ CostModel fitCostsOnFrames(const Scene& scene, std::span<const DrawList> lists, 
     return fit.table();
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -38,8 +38,8 @@ struct CalibrationOptions {
 // levelMeshes: the object's mesh node per level, finest first (all under the
 // same world matrix). The render target must be bound and sized
 // options.viewport. The result has levelMeshes.size() levels.
-CostModel calibrateCosts(const Scene& scene, std::span<const NodeId> levelMeshes, Renderer& renderer,
-                         FrameTimer& timer, const CalibrationOptions& options);
+CostModel calibrateCosts(const Scene& scene, std::span<const NodeId> levelMeshes, Renderer& renderer, FrameTimer& timer,
+                         const CalibrationOptions& options);
 
 // Sharpens a table with whole frames of the station's own scene, so that
 // objects hiding one another, overdraw and the real mix of meshes are in
@@ -53,4 +53,4 @@ CostModel fitCostsOnFrames(const Scene& scene, std::span<const DrawList> lists, 
                            Renderer& renderer, FrameTimer& timer, const CostModel& prior, int frames,
                            const CalibrationOptions& options, unsigned seed = 1);
 
-} // namespace arcomp
+}  // namespace arcomp

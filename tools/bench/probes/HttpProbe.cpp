@@ -84,4 +84,4 @@ HttpProbeReply httpGet(int port, const std::string& path, const HttpProbeRequest
     return reply;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -35,4 +35,4 @@ struct HttpProbeReply {
 
 HttpProbeReply httpGet(int port, const std::string& path, const HttpProbeRequest& request = {});
 
-} // namespace arcomp
+}  // namespace arcomp

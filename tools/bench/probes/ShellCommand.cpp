@@ -42,7 +42,8 @@ std::string stationBinary() {
     const fs::path beside = fs::read_symlink("/proc/self/exe", error).parent_path() / "arcomp";
     if (!error && fs::exists(beside)) return beside.string();
     if (onPath("arcomp")) return "arcomp";
-    throw std::runtime_error("no arcomp binary beside this one or on PATH: the bench drives the station's own commands");
+    throw std::runtime_error(
+        "no arcomp binary beside this one or on PATH: the bench drives the station's own commands");
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -29,4 +29,4 @@ std::string shellQuote(const std::string& text);
 // them, else the one on PATH. Throws std::runtime_error when there is none.
 std::string stationBinary();
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -25,7 +25,7 @@ std::string shortest(Real x) {
     return std::string(digits, last);
 }
 
-} // namespace
+}  // namespace
 
 std::string BenchJson::number(double x) { return shortest(x); }
 std::string BenchJson::number(float x) { return shortest(x); }
@@ -34,7 +34,8 @@ std::string BenchJson::number(Fixed x) {
     if (!std::isfinite(x.value)) return "null";
     if (x.decimals < 0 || x.decimals > 17) throw std::logic_error("BenchJson: Fixed takes 0..17 decimals");
     char digits[400];  // DBL_MAX in fixed notation with 17 decimals
-    const auto [last, error] = std::to_chars(digits, digits + sizeof digits, x.value, std::chars_format::fixed, x.decimals);
+    const auto [last, error] =
+        std::to_chars(digits, digits + sizeof digits, x.value, std::chars_format::fixed, x.decimals);
     if (error != std::errc{}) throw std::logic_error("BenchJson: a number did not fit its buffer");
     return std::string(digits, last);
 }
@@ -50,7 +51,7 @@ nlohmann::ordered_json asJson(const std::string& text) {
     return x;
 }
 
-} // namespace
+}  // namespace
 
 BenchJson& BenchJson::put(std::string_view key, Json value) {
     if (open_.back()->is_array()) throw std::logic_error("BenchJson: a key outside an object");
@@ -110,4 +111,4 @@ std::string BenchJson::str() const {
     return root_.dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -33,6 +33,10 @@ struct Fixed {
     int decimals;
 };
 
+// An integer, not a bool: a bool is written as true or false.
+template <class T>
+concept WholeNumber = std::integral<T> && !std::same_as<T, bool>;
+
 class BenchJson {
 public:
     BenchJson();  // the outer object, open
@@ -48,8 +52,7 @@ public:
     BenchJson& field(std::string_view key, double x);
     BenchJson& field(std::string_view key, float x);  // 0.011f reads "0.011", not its double's digits
     BenchJson& field(std::string_view key, Fixed x);
-    template <std::integral Int>
-        requires(!std::same_as<Int, bool>)
+    template <WholeNumber Int>
     BenchJson& field(std::string_view key, Int n) {
         return put(key, n);
     }
@@ -65,8 +68,7 @@ public:
     BenchJson& value(double x);
     BenchJson& value(float x);
     BenchJson& value(Fixed x);
-    template <std::integral Int>
-        requires(!std::same_as<Int, bool>)
+    template <WholeNumber Int>
     BenchJson& value(Int n) {
         return push(n);
     }
@@ -96,4 +98,4 @@ private:
     std::vector<Json*> open_;  // the innermost last; a child is open only while its parent takes nothing else
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -22,4 +22,4 @@ double psnr(const Image& reference, const Image& test) {
     return 10.0 * std::log10(255.0 * 255.0 / mse);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

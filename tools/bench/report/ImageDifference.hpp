@@ -12,4 +12,4 @@ namespace arcomp {
 // Throws std::invalid_argument when the sizes differ.
 double psnr(const Image& reference, const Image& test);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -13,7 +13,8 @@ namespace arcomp {
 
 namespace {
 
-const cv::Scalar kPalette[] = {{200, 90, 40}, {40, 60, 210}, {60, 160, 60}, {160, 60, 160}, {30, 150, 200}, {90, 90, 90}};
+const cv::Scalar kPalette[] = {{200, 90, 40},  {40, 60, 210},  {60, 160, 60},
+                               {160, 60, 160}, {30, 150, 200}, {90, 90, 90}};
 const cv::Scalar kInk{30, 30, 30};
 
 // 1, 2 or 5 times a power of ten, so that about `ticks` gridlines fit.
@@ -31,7 +32,7 @@ std::string label(double v) {
     return text;
 }
 
-} // namespace
+}  // namespace
 
 LinePlot::LinePlot(std::string title, std::string xLabel, std::string yLabel)
     : title_(std::move(title)), xLabel_(std::move(xLabel)), yLabel_(std::move(yLabel)) {}
@@ -110,4 +111,4 @@ void LinePlot::writePng(const std::filesystem::path& file, int width, int height
     if (!cv::imwrite(file.string(), image)) throw std::runtime_error("cannot write plot " + file.string());
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -40,4 +40,4 @@ private:
     std::vector<Level> levels_;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -6,7 +6,7 @@ namespace {
 
 double ratio(std::int64_t a, std::int64_t b) { return b > 0 ? static_cast<double>(a) / static_cast<double>(b) : 0.0; }
 
-} // namespace
+}  // namespace
 
 void MatteScore::add(const cv::Mat& mask, const cv::Mat& labels, const cv::Mat& roi) {
     CV_Assert(mask.type() == CV_8UC1 && labels.type() == CV_8UC1 && mask.size() == labels.size());
@@ -21,8 +21,10 @@ void MatteScore::add(const cv::Mat& mask, const cv::Mat& labels, const cv::Mat& 
             const bool background = l[x] == 0 || l[x] == 50;
             if (!person && !background) continue;  // 85, 170 and anything else: not counted
             const bool found = m[x] > 127;
-            if (person) (found ? truePositives : falseNegatives) += 1;
-            else (found ? falsePositives : trueNegatives) += 1;
+            if (person)
+                (found ? truePositives : falseNegatives) += 1;
+            else
+                (found ? falsePositives : trueNegatives) += 1;
         }
     }
 }
@@ -46,7 +48,8 @@ double MatteScore::fMeasure() const {
 double MatteScore::iou() const { return ratio(truePositives, truePositives + falsePositives + falseNegatives); }
 
 double MatteScore::percentWrong() const {
-    return 100.0 * ratio(falsePositives + falseNegatives, truePositives + falsePositives + falseNegatives + trueNegatives);
+    return 100.0 *
+           ratio(falsePositives + falseNegatives, truePositives + falsePositives + falseNegatives + trueNegatives);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -33,4 +33,4 @@ struct MatteScore {
     double percentWrong() const;
 };
 
-} // namespace arcomp
+}  // namespace arcomp

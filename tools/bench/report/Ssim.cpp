@@ -13,9 +13,10 @@ double ssim(const cv::Mat& a, const cv::Mat& b, const cv::Mat& mask) {
     constexpr double kSigma = 1.5, kL = 255.0;
     constexpr double C1 = (0.01 * kL) * (0.01 * kL), C2 = (0.03 * kL) * (0.03 * kL);
     if (a.size() != b.size() || a.type() != b.type() || a.depth() != CV_8U)
-        throw std::invalid_argument("ssim: the images must both be 8-bit and alike; got " + std::to_string(a.cols) + "x" +
-                                    std::to_string(a.rows) + " type " + std::to_string(a.type()) + " and " +
-                                    std::to_string(b.cols) + "x" + std::to_string(b.rows) + " type " + std::to_string(b.type()));
+        throw std::invalid_argument("ssim: the images must both be 8-bit and alike; got " + std::to_string(a.cols) +
+                                    "x" + std::to_string(a.rows) + " type " + std::to_string(a.type()) + " and " +
+                                    std::to_string(b.cols) + "x" + std::to_string(b.rows) + " type " +
+                                    std::to_string(b.type()));
     if (a.cols < kWindow || a.rows < kWindow)
         throw std::invalid_argument("ssim: images of " + std::to_string(a.cols) + "x" + std::to_string(a.rows) +
                                     " are smaller than the 11x11 window");
@@ -54,4 +55,4 @@ double ssim(const cv::Mat& a, const cv::Mat& b, const cv::Mat& mask) {
     return sum / static_cast<double>(channelsA.size());
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -25,4 +25,4 @@ namespace arcomp {
 // pixel inside the border.
 double ssim(const cv::Mat& a, const cv::Mat& b, const cv::Mat& mask = cv::Mat());
 
-} // namespace arcomp
+}  // namespace arcomp

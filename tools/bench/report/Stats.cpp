@@ -10,7 +10,8 @@
 namespace arcomp {
 
 double percentile(std::span<const double> samples, double p) {
-    if (!(p >= 0.0 && p <= 100.0)) throw std::invalid_argument("percentile: p must lie in 0..100, not " + std::to_string(p));
+    if (!(p >= 0.0 && p <= 100.0))
+        throw std::invalid_argument("percentile: p must lie in 0..100, not " + std::to_string(p));
     if (samples.empty()) return std::numeric_limits<double>::quiet_NaN();
     std::vector<double> v(samples.begin(), samples.end());
     std::sort(v.begin(), v.end());
@@ -23,4 +24,4 @@ double percentile(std::span<const double> samples, double p) {
 
 double median(std::span<const double> samples) { return percentile(samples, 50.0); }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -19,4 +19,4 @@ namespace arcomp {
 double percentile(std::span<const double> samples, double p);
 double median(std::span<const double> samples);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -23,10 +23,10 @@ namespace arcomp {
 
 struct CdnetSequence {
     std::filesystem::path dir;
-    int frameCount = 0;          // input/in000001.jpg .. in<frameCount>.jpg all exist
-    int firstScored = 1;         // temporalROI.txt, inclusive
+    int frameCount = 0;   // input/in000001.jpg .. in<frameCount>.jpg all exist
+    int firstScored = 1;  // temporalROI.txt, inclusive
     int lastScored = 0;
-    cv::Mat roi;                 // CV_8UC1, 255 = scored; all 255 when ROI.bmp is absent
+    cv::Mat roi;  // CV_8UC1, 255 = scored; all 255 when ROI.bmp is absent
 
     bool scored(int index) const { return index >= firstScored && index <= lastScored; }
     // CV_8UC3 BGR; throws VideoError when the file is missing or unreadable.
@@ -40,4 +40,4 @@ struct CdnetSequence {
 // ROI.bmp of the wrong size.
 CdnetSequence openCdnetSequence(const std::filesystem::path& dir);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -39,7 +39,7 @@ struct QuadtreeBuilder {
     }
 };
 
-} // namespace
+}  // namespace
 
 CullScene makeCullScene(std::uint32_t objects, CullLayout layout) {
     CullScene s;
@@ -67,4 +67,4 @@ CullCamera cullCamera(const CullScene& s, int frame, int frames) {
     return {eye, eye + glm::vec3(35.36f, -10.0f, 35.36f)};
 }
 
-} // namespace arcomp
+}  // namespace arcomp

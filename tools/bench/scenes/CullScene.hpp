@@ -60,8 +60,8 @@ struct CullFrameCounts {
 };
 
 struct CullRun {
-    std::vector<double> msPerFrame;            // measured frames only
-    std::vector<CullFrameCounts> counts;       // per measured frame
+    std::vector<double> msPerFrame;       // measured frames only
+    std::vector<CullFrameCounts> counts;  // per measured frame
 };
 
-} // namespace arcomp
+}  // namespace arcomp

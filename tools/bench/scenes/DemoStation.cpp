@@ -27,7 +27,8 @@ std::string demoVideo(const std::filesystem::path& dir, const std::string& bench
 }
 
 std::string demoStationYaml(const std::string& video) {
-    return "video:\n  source: file\n  path: \"" + video + "\"\n  loop: true\n"
+    return "video:\n  source: file\n  path: \"" + video +
+           "\"\n  loop: true\n"
            "matte:\n  kind: background\n  background:\n    method: mog2\n    scale: 0.5\n    feather_px: 3\n"
            "compositor:\n  person_plane_m: 12\n  backdrop: video\n"
            "scene:\n  objects:\n"
@@ -38,4 +39,4 @@ std::string demoStationYaml(const std::string& video) {
            "render:\n  shading: phong\n";
 }
 
-} // namespace arcomp
+}  // namespace arcomp

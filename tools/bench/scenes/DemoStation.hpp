@@ -14,7 +14,8 @@ namespace arcomp {
 inline constexpr const char* kDemoVideo = "/usr/share/doc/opencv-doc/examples/data/vtest.avi";
 
 // `preferred` when it exists; otherwise a generated clip in `dir`.
-std::string demoVideo(const std::filesystem::path& dir, const std::string& bench, const std::string& preferred = kDemoVideo);
+std::string demoVideo(const std::filesystem::path& dir, const std::string& bench,
+                      const std::string& preferred = kDemoVideo);
 std::string demoStationYaml(const std::string& video);
 
-} // namespace arcomp
+}  // namespace arcomp

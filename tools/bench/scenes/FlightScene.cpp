@@ -1,7 +1,7 @@
 #include "tools/bench/scenes/FlightScene.hpp"
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/constants.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
 #include <random>
@@ -33,7 +33,7 @@ Geometry mountainMesh(int cells, float ridgePhase) {
     return g;
 }
 
-} // namespace
+}  // namespace
 
 FlightScene buildFlightScene(const FlightOptions& o) {
     FlightScene f;
@@ -50,8 +50,8 @@ FlightScene buildFlightScene(const FlightOptions& o) {
         geometry[static_cast<std::size_t>(l)] = s.addGeometry(std::move(g));
     }
     std::uint32_t materials[4];
-    const glm::vec4 colors[4] = {{0.32f, 0.45f, 0.22f, 1}, {0.45f, 0.40f, 0.30f, 1}, {0.38f, 0.42f, 0.30f, 1},
-                                 {0.55f, 0.52f, 0.48f, 1}};
+    const glm::vec4 colors[4] = {
+        {0.32f, 0.45f, 0.22f, 1}, {0.45f, 0.40f, 0.30f, 1}, {0.38f, 0.42f, 0.30f, 1}, {0.55f, 0.52f, 0.48f, 1}};
     for (int i = 0; i < 4; ++i) {
         Material m;
         m.baseColor = colors[i];
@@ -68,9 +68,9 @@ FlightScene buildFlightScene(const FlightOptions& o) {
         const glm::vec3 at = dense ? glm::vec3(150.0f + range(rng), 0.0f, -150.0f + range(rng))
                                    : glm::vec3(plain(rng), 0.0f, plain(rng));
         const float r = radius(rng);
-        const glm::mat4 m = glm::scale(glm::rotate(glm::translate(glm::mat4(1.0f), at), u(rng) * glm::two_pi<float>(),
-                                                   {0, 1, 0}),
-                                       {r, r * height(rng), r});
+        const glm::mat4 m =
+            glm::scale(glm::rotate(glm::translate(glm::mat4(1.0f), at), u(rng) * glm::two_pi<float>(), {0, 1, 0}),
+                       {r, r * height(rng), r});
         const NodeId t = s.addTransform(s.root(), m);
         const NodeId lod = s.addNode(t, NodeKind::Lod, f.world.lods.add(LodNode{}));
         const std::uint32_t material = materials[k % 4];
@@ -97,10 +97,11 @@ View flightView(double t, glm::ivec2 viewport) {
     glm::vec3 tangent = at(a + 0.01) - at(a);
     tangent.y = 0.0f;
     glm::vec3 toRange = glm::vec3(150.0f, 0.0f, -150.0f) - glm::vec3(eye.x, 0.0f, eye.z);
-    const glm::vec3 dir = glm::normalize(glm::normalize(tangent) + (1.5f + 0.7f * static_cast<float>(std::cos(a))) * glm::normalize(toRange));
+    const glm::vec3 dir = glm::normalize(glm::normalize(tangent) +
+                                         (1.5f + 0.7f * static_cast<float>(std::cos(a))) * glm::normalize(toRange));
     glm::vec3 target = eye + 100.0f * dir;
     target.y = eye.y - 25.0f;
     return View::lookAt(eye, target, {0, 1, 0}, 55.0f, viewport, 1.0f, 2000.0f);
 }
 
-} // namespace arcomp
+}  // namespace arcomp

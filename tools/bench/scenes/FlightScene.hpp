@@ -7,8 +7,8 @@
 //   FlightScene f = buildFlightScene({.mountains = 60});
 //   View v = flightView(f, frame / double(frames - 1), {1280, 720});
 
-#include "graph/core/World.hpp"
 #include "graph/core/View.hpp"
+#include "graph/core/World.hpp"
 
 #include <array>
 #include <vector>
@@ -33,4 +33,4 @@ FlightScene buildFlightScene(const FlightOptions& options);
 // The camera at path position t in [0, 1].
 View flightView(double t, glm::ivec2 viewport);
 
-} // namespace arcomp
+}  // namespace arcomp

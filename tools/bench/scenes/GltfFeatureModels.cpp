@@ -157,7 +157,8 @@ std::string primitiveData(GltfBuilder& b, const MeshData& m) {
 }
 
 int mesh(GltfBuilder& b, const std::string& data, int material) {
-    return GltfBuilder::add(b.meshes, "{\"primitives\":[{" + data + ",\"material\":" + std::to_string(material) + "}]}");
+    return GltfBuilder::add(b.meshes,
+                            "{\"primitives\":[{" + data + ",\"material\":" + std::to_string(material) + "}]}");
 }
 
 int meshNode(GltfBuilder& b, const std::string& name, int meshIndex, const glm::vec3& translation = glm::vec3(0.0f)) {
@@ -171,8 +172,9 @@ const std::string kClampSampler = R"({"magFilter":9729,"minFilter":9987,"wrapS":
 
 std::string emissive() {
     GltfBuilder b;
-    const int m = GltfBuilder::add(b.materials, R"({"name":"glow","pbrMetallicRoughness":{"baseColorFactor":[0,0,0,1],)"
-                                                R"("metallicFactor":0,"roughnessFactor":1},"emissiveFactor":[1,0.45,0.1]})");
+    const int m =
+        GltfBuilder::add(b.materials, R"({"name":"glow","pbrMetallicRoughness":{"baseColorFactor":[0,0,0,1],)"
+                                      R"("metallicFactor":0,"roughnessFactor":1},"emissiveFactor":[1,0.45,0.1]})");
     b.sceneNodes.push_back(meshNode(b, "sphere", mesh(b, primitiveData(b, sphere(0.8f)), m)));
     return b.text();
 }
@@ -183,12 +185,15 @@ std::string emissive() {
 std::string emissiveUnlit() {
     GltfBuilder b;
     b.extensionsUsed.push_back("KHR_materials_unlit");
-    const int m = GltfBuilder::add(b.materials, R"({"name":"lamp","pbrMetallicRoughness":{"baseColorFactor":[0,0,0,1]},)"
-                                                R"("emissiveFactor":[1,0.05,0.02],"extensions":{"KHR_materials_unlit":{}}})");
-    const int body = GltfBuilder::add(b.materials, R"({"name":"body","pbrMetallicRoughness":{"baseColorFactor":[0.6,0.6,0.65,1],)"
-                                                   R"("metallicFactor":0,"roughnessFactor":0.5}})");
+    const int m =
+        GltfBuilder::add(b.materials, R"({"name":"lamp","pbrMetallicRoughness":{"baseColorFactor":[0,0,0,1]},)"
+                                      R"("emissiveFactor":[1,0.05,0.02],"extensions":{"KHR_materials_unlit":{}}})");
+    const int body =
+        GltfBuilder::add(b.materials, R"({"name":"body","pbrMetallicRoughness":{"baseColorFactor":[0.6,0.6,0.65,1],)"
+                                      R"("metallicFactor":0,"roughnessFactor":0.5}})");
     b.sceneNodes.push_back(meshNode(b, "body", mesh(b, primitiveData(b, box({0.9f, 0.5f, 0.3f})), body)));
-    b.sceneNodes.push_back(meshNode(b, "lamp", mesh(b, primitiveData(b, box({0.25f, 0.12f, 0.05f})), m), {0.45f, 0.1f, 0.32f}));
+    b.sceneNodes.push_back(
+        meshNode(b, "lamp", mesh(b, primitiveData(b, box({0.25f, 0.12f, 0.05f})), m), {0.45f, 0.1f, 0.32f}));
     return b.text();
 }
 
@@ -220,9 +225,10 @@ std::string normalMap() {
         }
     GltfBuilder b;
     const int t = b.texture(normals, kRepeatSampler);
-    const int m = GltfBuilder::add(b.materials, R"({"name":"bumps","pbrMetallicRoughness":{"baseColorFactor":[0.8,0.8,0.8,1],)"
-                                                R"("metallicFactor":0,"roughnessFactor":0.45},"normalTexture":{"index":)" +
-                                                    std::to_string(t) + "}}");
+    const int m =
+        GltfBuilder::add(b.materials, R"({"name":"bumps","pbrMetallicRoughness":{"baseColorFactor":[0.8,0.8,0.8,1],)"
+                                      R"("metallicFactor":0,"roughnessFactor":0.45},"normalTexture":{"index":)" +
+                                          std::to_string(t) + "}}");
     b.sceneNodes.push_back(meshNode(b, "plane", mesh(b, primitiveData(b, plane(2.0f)), m)));
     return b.text();
 }
@@ -240,10 +246,10 @@ std::string alphaMask() {
         }
     GltfBuilder b;
     const int t = b.texture(texture, kClampSampler);
-    const int m = GltfBuilder::add(b.materials, R"({"name":"cutout","pbrMetallicRoughness":{"baseColorTexture":{"index":)" +
-                                                    std::to_string(t) +
-                                                    R"(},"metallicFactor":0,"roughnessFactor":0.7},)"
-                                                    R"("alphaMode":"MASK","alphaCutoff":0.5,"doubleSided":true})");
+    const int m = GltfBuilder::add(
+        b.materials, R"({"name":"cutout","pbrMetallicRoughness":{"baseColorTexture":{"index":)" + std::to_string(t) +
+                         R"(},"metallicFactor":0,"roughnessFactor":0.7},)"
+                         R"("alphaMode":"MASK","alphaCutoff":0.5,"doubleSided":true})");
     b.sceneNodes.push_back(meshNode(b, "plane", mesh(b, primitiveData(b, plane(2.0f)), m)));
     return b.text();
 }
@@ -251,11 +257,14 @@ std::string alphaMask() {
 // A half-transparent blue plane over part of an opaque yellow sphere.
 std::string alphaBlend() {
     GltfBuilder b;
-    const int opaque = GltfBuilder::add(b.materials, R"({"name":"opaque","pbrMetallicRoughness":{"baseColorFactor":[0.9,0.7,0.1,1],)"
-                                                     R"("metallicFactor":0,"roughnessFactor":0.5}})");
-    const int glass = GltfBuilder::add(b.materials, R"({"name":"glass","pbrMetallicRoughness":{"baseColorFactor":[0.1,0.3,0.9,0.5],)"
-                                                    R"("metallicFactor":0,"roughnessFactor":0.5},"alphaMode":"BLEND","doubleSided":true})");
-    b.sceneNodes.push_back(meshNode(b, "sphere", mesh(b, primitiveData(b, sphere(0.7f)), opaque), {-0.2f, 0.0f, -0.4f}));
+    const int opaque =
+        GltfBuilder::add(b.materials, R"({"name":"opaque","pbrMetallicRoughness":{"baseColorFactor":[0.9,0.7,0.1,1],)"
+                                      R"("metallicFactor":0,"roughnessFactor":0.5}})");
+    const int glass = GltfBuilder::add(
+        b.materials, R"({"name":"glass","pbrMetallicRoughness":{"baseColorFactor":[0.1,0.3,0.9,0.5],)"
+                     R"("metallicFactor":0,"roughnessFactor":0.5},"alphaMode":"BLEND","doubleSided":true})");
+    b.sceneNodes.push_back(
+        meshNode(b, "sphere", mesh(b, primitiveData(b, sphere(0.7f)), opaque), {-0.2f, 0.0f, -0.4f}));
     b.sceneNodes.push_back(meshNode(b, "pane", mesh(b, primitiveData(b, plane(1.4f)), glass), {0.45f, -0.1f, 0.4f}));
     return b.text();
 }
@@ -269,16 +278,18 @@ std::string textureTransform() {
     for (int y = 0; y < size; ++y)
         for (int x = 0; x < size; ++x) {
             const bool light = ((x / cell) + (y / cell)) % 2 == 0;
-            checker(y, x) = x < cell && y < cell ? cv::Vec3b(30, 30, 220) : light ? cv::Vec3b(235, 235, 235)
-                                                                                    : cv::Vec3b(120, 50, 30);
+            checker(y, x) = x < cell && y < cell ? cv::Vec3b(30, 30, 220)
+                            : light              ? cv::Vec3b(235, 235, 235)
+                                                 : cv::Vec3b(120, 50, 30);
         }
     GltfBuilder b;
     b.extensionsUsed.push_back("KHR_texture_transform");
     const int t = b.texture(checker, kRepeatSampler);
     const int m = GltfBuilder::add(
-        b.materials, R"({"name":"checker","pbrMetallicRoughness":{"baseColorTexture":{"index":)" + std::to_string(t) +
-                         R"(,"extensions":{"KHR_texture_transform":{"offset":[0.1,0.2],"rotation":0.3,"scale":[1.5,1.5]}}},)"
-                         R"("metallicFactor":0,"roughnessFactor":0.8}})");
+        b.materials,
+        R"({"name":"checker","pbrMetallicRoughness":{"baseColorTexture":{"index":)" + std::to_string(t) +
+            R"(,"extensions":{"KHR_texture_transform":{"offset":[0.1,0.2],"rotation":0.3,"scale":[1.5,1.5]}}},)"
+            R"("metallicFactor":0,"roughnessFactor":0.8}})");
     b.sceneNodes.push_back(meshNode(b, "plane", mesh(b, primitiveData(b, plane(2.0f)), m)));
     return b.text();
 }
@@ -291,11 +302,12 @@ std::string metalRoughSweep() {
     for (int row = 0; row < 2; ++row)
         for (int column = 0; column < 5; ++column) {
             const float roughness = static_cast<float>(column) / 4.0f;
-            const int m = GltfBuilder::add(b.materials, "{\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.9,0.6,0.3,1],"
-                                                        "\"metallicFactor\":" + std::to_string(row) +
-                                                            ",\"roughnessFactor\":" + num(roughness) + "}}");
+            const int m = GltfBuilder::add(b.materials,
+                                           "{\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.9,0.6,0.3,1],"
+                                           "\"metallicFactor\":" +
+                                               std::to_string(row) + ",\"roughnessFactor\":" + num(roughness) + "}}");
             b.sceneNodes.push_back(meshNode(b, "sphere", mesh(b, data, m),
-                                       {static_cast<float>(column - 2), row == 0 ? 0.5f : -0.5f, 0.0f}));
+                                            {static_cast<float>(column - 2), row == 0 ? 0.5f : -0.5f, 0.0f}));
         }
     return b.text();
 }
@@ -305,8 +317,9 @@ std::string vertexColors() {
     MeshData s = sphere(0.8f);
     for (const glm::vec3& n : s.normals) s.colors.push_back(n * 0.5f + 0.5f);
     GltfBuilder b;
-    const int m = GltfBuilder::add(b.materials, R"({"name":"white","pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1],)"
-                                                R"("metallicFactor":0,"roughnessFactor":0.6}})");
+    const int m =
+        GltfBuilder::add(b.materials, R"({"name":"white","pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1],)"
+                                      R"("metallicFactor":0,"roughnessFactor":0.6}})");
     b.sceneNodes.push_back(meshNode(b, "sphere", mesh(b, primitiveData(b, s), m)));
     return b.text();
 }
@@ -315,8 +328,9 @@ std::string vertexColors() {
 // turn about a tilted axis over 2 s; LINEAR keys at 0, 1 and 2 s.
 std::string animatedNode() {
     GltfBuilder b;
-    const int m = GltfBuilder::add(b.materials, R"({"name":"slab","pbrMetallicRoughness":{"baseColorFactor":[0.2,0.6,0.3,1],)"
-                                                R"("metallicFactor":0,"roughnessFactor":0.5}})");
+    const int m =
+        GltfBuilder::add(b.materials, R"({"name":"slab","pbrMetallicRoughness":{"baseColorFactor":[0.2,0.6,0.3,1],)"
+                                      R"("metallicFactor":0,"roughnessFactor":0.5}})");
     const int node = meshNode(b, "slab", mesh(b, primitiveData(b, box({0.6f, 0.3f, 0.15f})), m), {-0.8f, 0.0f, 0.0f});
     b.sceneNodes.push_back(node);
     const int times = b.scalars({0.0f, 1.0f, 2.0f}, true);
@@ -328,12 +342,16 @@ std::string animatedNode() {
         rotations.push_back({q.x, q.y, q.z, q.w});
     }
     const int translation = b.vec3s(translations, false, 0), rotation = b.vec4s(rotations, 0);
-    GltfBuilder::add(b.animations,
-                     "{\"name\":\"move\",\"samplers\":[{\"input\":" + std::to_string(times) + ",\"output\":" +
-                         std::to_string(translation) + ",\"interpolation\":\"LINEAR\"},{\"input\":" + std::to_string(times) +
-                         ",\"output\":" + std::to_string(rotation) + ",\"interpolation\":\"LINEAR\"}],\"channels\":["
-                         "{\"sampler\":0,\"target\":{\"node\":" + std::to_string(node) + ",\"path\":\"translation\"}},"
-                         "{\"sampler\":1,\"target\":{\"node\":" + std::to_string(node) + ",\"path\":\"rotation\"}}]}");
+    GltfBuilder::add(b.animations, "{\"name\":\"move\",\"samplers\":[{\"input\":" + std::to_string(times) +
+                                       ",\"output\":" + std::to_string(translation) +
+                                       ",\"interpolation\":\"LINEAR\"},{\"input\":" + std::to_string(times) +
+                                       ",\"output\":" + std::to_string(rotation) +
+                                       ",\"interpolation\":\"LINEAR\"}],\"channels\":["
+                                       "{\"sampler\":0,\"target\":{\"node\":" +
+                                       std::to_string(node) +
+                                       ",\"path\":\"translation\"}},"
+                                       "{\"sampler\":1,\"target\":{\"node\":" +
+                                       std::to_string(node) + ",\"path\":\"rotation\"}}]}");
     return b.text();
 }
 
@@ -354,17 +372,19 @@ std::string skinnedBend() {
         }
     }
     GltfBuilder b;
-    const int m = GltfBuilder::add(b.materials, R"({"name":"tube","pbrMetallicRoughness":{"baseColorFactor":[0.8,0.3,0.5,1],)"
-                                                R"("metallicFactor":0,"roughnessFactor":0.5},"doubleSided":true})");
+    const int m =
+        GltfBuilder::add(b.materials, R"({"name":"tube","pbrMetallicRoughness":{"baseColorFactor":[0.8,0.3,0.5,1],)"
+                                      R"("metallicFactor":0,"roughnessFactor":0.5},"doubleSided":true})");
     const int meshIndex = mesh(b, primitiveData(b, c), m);
     // Nodes: 0 the skinned mesh, 1 the base joint at y = -1, 2 the bending joint at y = 0.
     b.sceneNodes = {0, 1};
     GltfBuilder::add(b.nodes, "{\"name\":\"tube\",\"mesh\":" + std::to_string(meshIndex) + ",\"skin\":0}");
     GltfBuilder::add(b.nodes, R"({"name":"base","translation":[0,-1,0],"children":[2]})");
     GltfBuilder::add(b.nodes, R"({"name":"bend","translation":[0,1,0]})");
-    const int inverseBind = b.mat4s({glm::inverse(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -1.0f, 0.0f))),
-                                     glm::mat4(1.0f)});
-    GltfBuilder::add(b.skins, "{\"inverseBindMatrices\":" + std::to_string(inverseBind) + ",\"joints\":[1,2],\"skeleton\":1}");
+    const int inverseBind =
+        b.mat4s({glm::inverse(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -1.0f, 0.0f))), glm::mat4(1.0f)});
+    GltfBuilder::add(b.skins,
+                     "{\"inverseBindMatrices\":" + std::to_string(inverseBind) + ",\"joints\":[1,2],\"skeleton\":1}");
     const int times = b.scalars({0.0f, 2.0f}, true);
     const glm::quat start(1.0f, 0.0f, 0.0f, 0.0f), end = glm::angleAxis(kPi / 2.0f, glm::vec3(0.0f, 0.0f, 1.0f));
     const int rotation = b.vec4s({{start.x, start.y, start.z, start.w}, {end.x, end.y, end.z, end.w}}, 0);
@@ -390,35 +410,61 @@ const std::vector<Entry>& entries() {
     static const std::vector<Entry> all = {
         {{"emissive", "black base colour, orange emissiveFactor, lit", {{0, 0, 3}, {0, 0, 0}}, kKeyLight, "neutral"},
          emissive},
-        {{"emissive-unlit", "KHR_materials_unlit lamp with black base colour and its colour in emissiveFactor (drawn black)",
-          {{1.2f, 0.8f, 3.0f}, {0, 0, 0}}, kKeyLight, "neutral"},
+        {{"emissive-unlit",
+          "KHR_materials_unlit lamp with black base colour and its colour in emissiveFactor (drawn black)",
+          {{1.2f, 0.8f, 3.0f}, {0, 0, 0}},
+          kKeyLight,
+          "neutral"},
          emissiveUnlit},
-        {{"normal-map", "bump normal map on a plane, tangents generated", {{0, 1.0f, 2.8f}, {0, 0, 0}}, kGrazingLight,
+        {{"normal-map",
+          "bump normal map on a plane, tangents generated",
+          {{0, 1.0f, 2.8f}, {0, 0, 0}},
+          kGrazingLight,
           "neutral"},
          normalMap},
-        {{"alpha-mask", "MASK with cutoff 0.5 over a diagonal alpha gradient", {{0, 0, 3}, {0, 0, 0}}, kKeyLight, "neutral"},
+        {{"alpha-mask",
+          "MASK with cutoff 0.5 over a diagonal alpha gradient",
+          {{0, 0, 3}, {0, 0, 0}},
+          kKeyLight,
+          "neutral"},
          alphaMask},
         {{"alpha-blend", "BLEND pane in front of an opaque sphere", {{0, 0.3f, 3.2f}, {0, 0, 0}}, kKeyLight, "neutral"},
          alphaBlend},
-        {{"texture-transform", "KHR_texture_transform: offset, rotation, uniform scale", {{0, 0, 3}, {0, 0, 0}},
-          kKeyLight, "neutral"},
+        {{"texture-transform",
+          "KHR_texture_transform: offset, rotation, uniform scale",
+          {{0, 0, 3}, {0, 0, 0}},
+          kKeyLight,
+          "neutral"},
          textureTransform},
-        {{"metal-rough", "metallic 0 (top) and 1 (bottom), roughness 0 to 1 (left to right)", {{0, 0, 5.5f}, {0, 0, 0}},
-          kKeyLight, "neutral"},
+        {{"metal-rough",
+          "metallic 0 (top) and 1 (bottom), roughness 0 to 1 (left to right)",
+          {{0, 0, 5.5f}, {0, 0, 0}},
+          kKeyLight,
+          "neutral"},
          metalRoughSweep},
         {{"vertex-colors", "COLOR_0 times a white base colour", {{0, 0, 3}, {0, 0, 0}}, kKeyLight, "neutral"},
          vertexColors},
-        {{"animated-node", "translation and rotation, LINEAR, over 2 s", {{0, 0.8f, 3.2f}, {0, 0.1f, 0}}, kKeyLight,
-          "neutral", 1.0f, {0.0f, 0.5f, 1.25f, 2.0f}},
+        {{"animated-node",
+          "translation and rotation, LINEAR, over 2 s",
+          {{0, 0.8f, 3.2f}, {0, 0.1f, 0}},
+          kKeyLight,
+          "neutral",
+          1.0f,
+          {0.0f, 0.5f, 1.25f, 2.0f}},
          animatedNode},
-        {{"skinned-bend", "two-joint skin bending a cylinder a quarter turn over 2 s", {{0, 0, 3.6f}, {-0.3f, 0, 0}},
-          kKeyLight, "neutral", 1.0f, {0.0f, 1.0f, 2.0f}},
+        {{"skinned-bend",
+          "two-joint skin bending a cylinder a quarter turn over 2 s",
+          {{0, 0, 3.6f}, {-0.3f, 0, 0}},
+          kKeyLight,
+          "neutral",
+          1.0f,
+          {0.0f, 1.0f, 2.0f}},
          skinnedBend},
     };
     return all;
 }
 
-} // namespace
+}  // namespace
 
 const std::vector<FeatureModel>& featureModels() {
     static const std::vector<FeatureModel> models = [] {
@@ -447,4 +493,4 @@ fs::path writeFeatureModel(const FeatureModel& model, const fs::path& folder) {
     return file;
 }
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -32,7 +32,7 @@ struct FeatureCamera {
 // Lambertian surface facing a light of intensity I (lux) reflects I / pi.
 struct FeatureLight {
     glm::vec3 direction{0.0f, 0.0f, 1.0f};  // towards the light, world space
-    glm::vec3 color{1.0f};                   // linear
+    glm::vec3 color{1.0f};                  // linear
     float intensity = 3.0f;
 };
 
@@ -57,4 +57,4 @@ std::string featureModelGltf(const std::string& name);
 // throws std::runtime_error naming the file when it cannot be written.
 std::filesystem::path writeFeatureModel(const FeatureModel& model, const std::filesystem::path& folder);
 
-} // namespace arcomp
+}  // namespace arcomp

@@ -54,14 +54,16 @@ public:
             for (int x = 0; x < big.width; ++x) {
                 const int i = x / kStep, j = y / kStep;
                 const double a = static_cast<double>(x % kStep) / kStep, b = static_cast<double>(y % kStep) / kStep;
-                const auto node = [&](int di, int dj) { return nodeRays[static_cast<std::size_t>((j + dj) * nodesX + i + di)]; };
+                const auto node = [&](int di, int dj) {
+                    return nodeRays[static_cast<std::size_t>((j + dj) * nodesX + i + di)];
+                };
                 rays_.at<cv::Point2d>(y, x) =
                     (node(0, 0) * (1 - a) + node(1, 0) * a) * (1 - b) + (node(0, 1) * (1 - a) + node(1, 1) * a) * b;
             }
     }
 
-    cv::Mat photograph(const cv::Mat& texture, double metresPerTexel, cv::Point2d origin, const cv::Matx33d& planeToCamera,
-                       cv::Scalar background = cv::Scalar::all(70)) const {
+    cv::Mat photograph(const cv::Mat& texture, double metresPerTexel, cv::Point2d origin,
+                       const cv::Matx33d& planeToCamera, cv::Scalar background = cv::Scalar::all(70)) const {
         const cv::Matx33d cameraToPlane = planeToCamera.inv();
         cv::Mat mapX(rays_.size(), CV_32F), mapY(rays_.size(), CV_32F);
         for (int y = 0; y < rays_.rows; ++y)
@@ -70,8 +72,10 @@ public:
                 const cv::Vec3d p = cameraToPlane * cv::Vec3d(r.x, r.y, 1.0);
                 // The ray meets the plane behind the lens, or not at all: no target there.
                 const bool seen = p[2] > 1e-12;
-                mapX.at<float>(y, x) = seen ? static_cast<float>((p[0] / p[2] - origin.x) / metresPerTexel - 0.5) : -1e6f;
-                mapY.at<float>(y, x) = seen ? static_cast<float>((p[1] / p[2] - origin.y) / metresPerTexel - 0.5) : -1e6f;
+                mapX.at<float>(y, x) =
+                    seen ? static_cast<float>((p[0] / p[2] - origin.x) / metresPerTexel - 0.5) : -1e6f;
+                mapY.at<float>(y, x) =
+                    seen ? static_cast<float>((p[1] / p[2] - origin.y) / metresPerTexel - 0.5) : -1e6f;
             }
         cv::Mat big, photo;
         cv::remap(texture, big, mapX, mapY, cv::INTER_LINEAR, cv::BORDER_CONSTANT, background);
@@ -160,8 +164,9 @@ struct FloorMarkerSpec {
 // markers of `size` metres lying on it as printed: top edge towards -z.
 // Texel (column, row) covers (x, z) = -extent / 2 + (column, row) /
 // texelsPerMetre onwards. BGR.
-inline cv::Mat floorWithMarkers(const cv::Ptr<cv::aruco::Dictionary>& dictionary, const std::vector<FloorMarkerSpec>& markers,
-                                double size, double extent, double texelsPerMetre) {
+inline cv::Mat floorWithMarkers(const cv::Ptr<cv::aruco::Dictionary>& dictionary,
+                                const std::vector<FloorMarkerSpec>& markers, double size, double extent,
+                                double texelsPerMetre) {
     const int side = static_cast<int>(std::lround(extent * texelsPerMetre));
     cv::Mat floor(side, side, CV_8UC3, cv::Scalar::all(200));
     const int markerSide = static_cast<int>(std::lround(size * texelsPerMetre));
@@ -176,4 +181,4 @@ inline cv::Mat floorWithMarkers(const cv::Ptr<cv::aruco::Dictionary>& dictionary
     return floor;
 }
 
-} // namespace arcomp
+}  // namespace arcomp
