@@ -10,16 +10,6 @@ namespace arcomp {
 
 namespace {
 
-std::size_t componentsOf(std::string_view type) {
-    if (type == "SCALAR") return 1;
-    if (type == "VEC2") return 2;
-    if (type == "VEC3") return 3;
-    if (type == "VEC4" || type == "MAT2") return 4;
-    if (type == "MAT3") return 9;
-    if (type == "MAT4") return 16;
-    throw std::invalid_argument("glTF writer: no accessor type " + std::string(type));
-}
-
 std::size_t bytesOf(int componentType) {
     switch (componentType) {
     case GltfWriter::kByte:
@@ -34,6 +24,16 @@ std::size_t bytesOf(int componentType) {
 
 }  // namespace
 
+std::size_t GltfWriter::components(std::string_view type) {
+    if (type == "SCALAR") return 1;
+    if (type == "VEC2") return 2;
+    if (type == "VEC3") return 3;
+    if (type == "VEC4" || type == "MAT2") return 4;
+    if (type == "MAT3") return 9;
+    if (type == "MAT4") return 16;
+    throw std::invalid_argument("glTF writer: no accessor type " + std::string(type));
+}
+
 int GltfWriter::add(Json& list, std::string_view json) {
     list.push_back(Json::parse(json));
     return static_cast<int>(list.size()) - 1;
@@ -41,7 +41,7 @@ int GltfWriter::add(Json& list, std::string_view json) {
 
 int GltfWriter::accessor(const void* data, std::size_t count, std::string_view type, int componentType,
                          GltfAccessorOptions options) {
-    const std::size_t components = componentsOf(type);
+    const std::size_t components = GltfWriter::components(type);
     const std::size_t bytes = count * components * bytesOf(componentType);
     buffer_.resize((buffer_.size() + 3) / 4 * 4, 0);
     const std::size_t offset = buffer_.size();

@@ -58,6 +58,10 @@ public:
     // own that starts 4-byte aligned (3.6.2.4). Gives the accessor's index.
     int accessor(const void* data, std::size_t count, std::string_view type, int componentType,
                  GltfAccessorOptions options = {});
+    // How many components an element of `type` has (SCALAR 1 ... MAT4 16);
+    // throws std::invalid_argument for a type glTF does not have.
+    static std::size_t components(std::string_view type);
+
     // An image from the bytes of a PNG, or an image the JSON gives (a URI).
     int pngImage(const std::vector<std::uint8_t>& png);
     int image(std::string_view json);

@@ -33,10 +33,7 @@ struct GltfFile {
 
     // Floats, as many elements of `type` as `values` holds.
     int add(const std::vector<float>& values, const char* type) {
-        const std::size_t width = std::string(type) == "SCALAR" ? 1
-                                  : std::string(type) == "VEC3" ? 3
-                                  : std::string(type) == "VEC4" ? 4
-                                                                : 16;
+        const std::size_t width = GltfWriter::components(type);
         return writer.accessor(values.data(), values.size() / width, type, GltfWriter::kFloat);
     }
 
