@@ -28,7 +28,7 @@ std::string oneChannel(int input, int output, const std::string& path, const std
            R"("}}]}])";
 }
 
-void expectRejected(const GltfFile& f, const std::string& where, const std::string& reasonPart) {
+void expectAnimationRejected(const GltfFile& f, const std::string& where, const std::string& reasonPart) {
     TempDir dir;
     const auto file = dir.write("bad.gltf", f.json());
     Scene scene;
@@ -48,12 +48,12 @@ LoadedModel loadText(const GltfFile& f, Scene& scene) {
     return loadModel(dir.write("model.gltf", f.json()), scene, scene.root());
 }
 
-glm::vec4 aboutZ(float degrees) {
+glm::vec4 turnAboutZ(float degrees) {
     const float half = glm::radians(degrees) / 2.0f;
     return {0.0f, 0.0f, std::sin(half), std::cos(half)};
 }
 
-void expectMatrix(const glm::mat4& got, const glm::mat4& want) {
+void expectSameMatrix(const glm::mat4& got, const glm::mat4& want) {
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r) EXPECT_NEAR(got[c][r], want[c][r], 1e-5f) << "column " << c << " row " << r;
 }
@@ -70,7 +70,7 @@ TEST(GltfAnimation, aNodeTurnsAndSlidesWhenPlayed) {
     const int slide = f.add({0, 0, 0, 4, 0, 0}, "VEC3");
     // 180° in one step would be as near one way round as the other.
     const int turnTimes = f.add({0, 1, 2}, "SCALAR");
-    const glm::vec4 a = aboutZ(0), b = aboutZ(90), c = aboutZ(180);
+    const glm::vec4 a = turnAboutZ(0), b = turnAboutZ(90), c = turnAboutZ(180);
     const int turn = f.add({a.x, a.y, a.z, a.w, b.x, b.y, b.z, b.w, c.x, c.y, c.z, c.w}, "VEC4");
     f.animations = R"([{"name": "spin", "samplers": [{"input": )" + std::to_string(times) + R"(, "output": )" +
                    std::to_string(slide) + R"(}, {"input": )" + std::to_string(turnTimes) + R"(, "output": )" +
@@ -96,7 +96,7 @@ TEST(GltfAnimation, aNodeTurnsAndSlidesWhenPlayed) {
         scene.update();
         const glm::mat4 want = glm::scale(
             glm::rotate(glm::translate(glm::mat4(1.0f), {x, 0, 0}), glm::radians(degrees), {0, 0, 1}), glm::vec3(2.0f));
-        expectMatrix(scene.world(node), want);
+        expectSameMatrix(scene.world(node), want);
         // The bound moved and turned with the node: centred on the turned,
         // scaled triangle's centre, twice its radius.
         const glm::vec3 centre = glm::vec3(want * glm::vec4(local.center, 1.0f));
@@ -120,7 +120,7 @@ TEST(GltfAnimation, authoredTrsIsKeptBesideTheMatrix) {
     EXPECT_EQ(p.nodes[0].trs->translation, glm::vec3(1, 2, 3));
     EXPECT_FLOAT_EQ(p.nodes[0].trs->rotation.z, 1.0f);
     EXPECT_EQ(p.nodes[0].trs->scale, glm::vec3(1, 1, 5));
-    expectMatrix(p.nodes[0].trs->matrix(), p.nodes[0].local);
+    expectSameMatrix(p.nodes[0].trs->matrix(), p.nodes[0].local);
     EXPECT_FALSE(p.nodes[1].trs);  // a matrix node has no TRS to animate
 }
 
@@ -163,7 +163,7 @@ TEST(GltfAnimation, normalizedIntegerRotationsAreAllowed) {
     EXPECT_NEAR(sample(m.animations[0].clip.channels[0], 1.0f).z, 1.0f, 1e-6f);
     const int raw = f.addBytes(q, 2, "VEC4", 5122, false);
     f.animations = oneChannel(times, raw, "rotation");
-    expectRejected(f, "/accessors/" + std::to_string(raw) + "/normalized", "must be normalized");
+    expectAnimationRejected(f, "/accessors/" + std::to_string(raw) + "/normalized", "must be normalized");
 }
 
 TEST(GltfAnimation, samplerInputMustBeFloatScalarTimesThatIncrease) {
@@ -171,21 +171,21 @@ TEST(GltfAnimation, samplerInputMustBeFloatScalarTimesThatIncrease) {
     const int out = f.add({0, 0, 0, 1, 1, 1}, "VEC3");
     const int vec = f.add({0, 1, 2, 3, 4, 5}, "VEC3");
     f.animations = oneChannel(vec, out, "translation");
-    expectRejected(f, "/accessors/" + std::to_string(vec) + "/type",
-                   "expected SCALAR (used by /animations/0/samplers/0/input)");
+    expectAnimationRejected(f, "/accessors/" + std::to_string(vec) + "/type",
+                            "expected SCALAR (used by /animations/0/samplers/0/input)");
     const std::uint16_t shorts[2] = {0, 1};
     const int ints = f.addBytes(shorts, 2, "SCALAR", 5123);
     f.animations = oneChannel(ints, out, "translation");
-    expectRejected(f, "/accessors/" + std::to_string(ints) + "/componentType",
-                   "not allowed for /animations/0/samplers/0/input");
+    expectAnimationRejected(f, "/accessors/" + std::to_string(ints) + "/componentType",
+                            "not allowed for /animations/0/samplers/0/input");
     const int flat = f.add({0, 0}, "SCALAR");
     f.animations = oneChannel(flat, out, "translation");
-    expectRejected(f, "/animations/0/samplers/0/input", "key times must increase: key 1");
+    expectAnimationRejected(f, "/animations/0/samplers/0/input", "key times must increase: key 1");
     const int falling = f.add({1, 0.5f}, "SCALAR");
     f.animations = oneChannel(falling, out, "translation");
-    expectRejected(f, "/animations/0/samplers/0/input", "key times must increase");
+    expectAnimationRejected(f, "/animations/0/samplers/0/input", "key times must increase");
     f.animations = oneChannel(99, out, "translation");
-    expectRejected(f, "/animations/0/samplers/0/input", "accessor 99 does not exist");
+    expectAnimationRejected(f, "/animations/0/samplers/0/input", "accessor 99 does not exist");
 }
 
 TEST(GltfAnimation, outputCountMustMatchTheKeysThreeTimesForCubicSpline) {
@@ -193,13 +193,13 @@ TEST(GltfAnimation, outputCountMustMatchTheKeysThreeTimesForCubicSpline) {
     const int times = f.add({0, 1}, "SCALAR");
     const int three = f.add({0, 0, 0, 1, 1, 1, 2, 2, 2}, "VEC3");
     f.animations = oneChannel(times, three, "translation");
-    expectRejected(f, "/animations/0/samplers/0/output", "has 3 elements; expected 2 (2 key times)");
+    expectAnimationRejected(f, "/animations/0/samplers/0/output", "has 3 elements; expected 2 (2 key times)");
     const int two = f.add({0, 0, 0, 1, 1, 1}, "VEC3");
     f.animations = oneChannel(times, two, "scale", "CUBICSPLINE");
-    expectRejected(f, "/animations/0/samplers/0/output",
-                   "has 2 elements; expected 6 (2 key times × 3 for CUBICSPLINE)");
+    expectAnimationRejected(f, "/animations/0/samplers/0/output",
+                            "has 2 elements; expected 6 (2 key times × 3 for CUBICSPLINE)");
     f.animations = oneChannel(times, two, "scale", "BEZIER");
-    expectRejected(f, "/animations/0/samplers/0/interpolation", "unknown interpolation 'BEZIER'");
+    expectAnimationRejected(f, "/animations/0/samplers/0/interpolation", "unknown interpolation 'BEZIER'");
 }
 
 TEST(GltfAnimation, outputTypeFollowsThePath) {
@@ -208,17 +208,17 @@ TEST(GltfAnimation, outputTypeFollowsThePath) {
     const int vec4 = f.add({0, 0, 0, 1, 0, 0, 0, 1}, "VEC4");
     const int vec3 = f.add({0, 0, 0, 1, 1, 1}, "VEC3");
     f.animations = oneChannel(times, vec4, "translation");
-    expectRejected(f, "/accessors/" + std::to_string(vec4) + "/type",
-                   "is VEC4, expected VEC3 (used by /animations/0/samplers/0/output)");
+    expectAnimationRejected(f, "/accessors/" + std::to_string(vec4) + "/type",
+                            "is VEC4, expected VEC3 (used by /animations/0/samplers/0/output)");
     f.animations = oneChannel(times, vec3, "rotation");
-    expectRejected(f, "/accessors/" + std::to_string(vec3) + "/type", "is VEC3, expected VEC4");
+    expectAnimationRejected(f, "/accessors/" + std::to_string(vec3) + "/type", "is VEC3, expected VEC4");
     const std::uint8_t bytes[6] = {0, 0, 0, 1, 1, 1};
     const int byteScale = f.addBytes(bytes, 2, "VEC3", 5121, true);
     f.animations = oneChannel(times, byteScale, "scale");
-    expectRejected(f, "/accessors/" + std::to_string(byteScale) + "/componentType", "not allowed");
+    expectAnimationRejected(f, "/accessors/" + std::to_string(byteScale) + "/componentType", "not allowed");
     const int zero = f.add({0, 0, 0, 0, 0, 0, 0, 1}, "VEC4");
     f.animations = oneChannel(times, zero, "rotation");
-    expectRejected(f, "/animations/0/samplers/0/output", "key 0 is not a rotation");
+    expectAnimationRejected(f, "/animations/0/samplers/0/output", "key 0 is not a rotation");
 }
 
 TEST(GltfAnimation, channelsMustTargetExistingNodesWithoutAMatrix) {
@@ -226,19 +226,19 @@ TEST(GltfAnimation, channelsMustTargetExistingNodesWithoutAMatrix) {
     const int times = f.add({0, 1}, "SCALAR");
     const int out = f.add({0, 0, 0, 1, 1, 1}, "VEC3");
     f.animations = oneChannel(times, out, "translation", "LINEAR", 5);
-    expectRejected(f, "/animations/0/channels/0/target/node", "node 5 does not exist (1 nodes)");
+    expectAnimationRejected(f, "/animations/0/channels/0/target/node", "node 5 does not exist (1 nodes)");
     f.nodes = R"([{"mesh": 0, "matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}])";
     f.animations = oneChannel(times, out, "translation");
-    expectRejected(f, "/animations/0/channels/0/target/node", "node 0 gives a matrix");
+    expectAnimationRejected(f, "/animations/0/channels/0/target/node", "node 0 gives a matrix");
     f.nodes = R"([{"mesh": 0}])";
     f.animations = R"([{"samplers": [{"input": )" + std::to_string(times) + R"(, "output": )" + std::to_string(out) +
                    R"(}], "channels": [{"sampler": 1, "target": {"node": 0, "path": "translation"}}]})" + "]";
-    expectRejected(f, "/animations/0/channels/0/sampler", "sampler 1 does not exist (1 samplers)");
+    expectAnimationRejected(f, "/animations/0/channels/0/sampler", "sampler 1 does not exist (1 samplers)");
     f.animations = R"([{"samplers": [{"input": )" + std::to_string(times) + R"(, "output": )" + std::to_string(out) +
                    R"(}], "channels": [{"sampler": 0, "target": {"node": 0, "path": "translation"}},
                                        {"sampler": 0, "target": {"node": 0, "path": "translation"}}]})" +
                    "]";
-    expectRejected(f, "/animations/0/channels/1", "a second channel for the translation of node 0");
+    expectAnimationRejected(f, "/animations/0/channels/1", "a second channel for the translation of node 0");
 }
 
 TEST(GltfAnimation, morphWeightsAreSkippedWithAWarningNamingTheAnimation) {
@@ -299,14 +299,14 @@ TEST(GltfSkin, badSkinsAreRejectedWithTheirPointer) {
     GltfFile f;
     f.nodes = R"([{"mesh": 0, "skin": 0, "children": [1]}, {}])";
     f.skins = R"([{"joints": [1, 4]}])";
-    expectRejected(f, "/skins/0/joints/1", "node 4 does not exist");
+    expectAnimationRejected(f, "/skins/0/joints/1", "node 4 does not exist");
     f.skins = R"([{"joints": [1], "skeleton": 9}])";
-    expectRejected(f, "/skins/0/skeleton", "node 9 does not exist");
+    expectAnimationRejected(f, "/skins/0/skeleton", "node 9 does not exist");
     f.nodes = R"([{"mesh": 0, "skin": 3, "children": [1]}, {}])";
     f.skins = R"([{"joints": [1]}])";
-    expectRejected(f, "/nodes/0/skin", "skin 3 does not exist (1 skins)");
+    expectAnimationRejected(f, "/nodes/0/skin", "skin 3 does not exist (1 skins)");
     f.nodes = R"([{"mesh": 0, "skin": 0, "children": [1]}, {}, {}])";
     const int one = f.add(std::vector<float>(16, 0.0f), "MAT4");
     f.skins = R"([{"joints": [1, 2], "inverseBindMatrices": )" + std::to_string(one) + "}]";
-    expectRejected(f, "/skins/0/inverseBindMatrices", "has 1 matrices for 2 joints");
+    expectAnimationRejected(f, "/skins/0/inverseBindMatrices", "has 1 matrices for 2 joints");
 }

@@ -44,7 +44,7 @@ std::unique_ptr<Loaded> load(const QuadGltf& q) {
     return out;
 }
 
-void expectRejected(const QuadGltf& q, const std::string& where, const std::string& reasonPart) {
+void expectMaterialRejected(const QuadGltf& q, const std::string& where, const std::string& reasonPart) {
     TempDir dir;
     const auto file = dir.write("bad.gltf", q.json());
     Scene scene;
@@ -260,47 +260,49 @@ TEST(GltfMaterials, badReferencesFailWithTheirPointer) {
         q.materials = "[" + material + "]";
         return q;
     };
-    expectRejected(withMaterial(R"({"normalTexture": {"index": 3}})"), "/materials/0/normalTexture/index",
-                   "texture 3 does not exist (1 textures)");
-    expectRejected(withMaterial(R"({"occlusionTexture": {"index": 1}})"), "/materials/0/occlusionTexture/index",
-                   "texture 1 does not exist");
-    expectRejected(withMaterial(R"({"emissiveTexture": {"index": 9}})"), "/materials/0/emissiveTexture/index",
-                   "does not exist");
-    expectRejected(withMaterial(R"({"pbrMetallicRoughness": {"metallicRoughnessTexture": {"index": 2}}})"),
-                   "/materials/0/pbrMetallicRoughness/metallicRoughnessTexture/index", "does not exist");
-    expectRejected(withMaterial(R"({"pbrMetallicRoughness": {"baseColorTexture": {"index": 0, "texCoord": -1}}})"),
-                   "/materials/0/pbrMetallicRoughness/baseColorTexture/texCoord", "expected 0 or more");
-    expectRejected(
+    expectMaterialRejected(withMaterial(R"({"normalTexture": {"index": 3}})"), "/materials/0/normalTexture/index",
+                           "texture 3 does not exist (1 textures)");
+    expectMaterialRejected(withMaterial(R"({"occlusionTexture": {"index": 1}})"), "/materials/0/occlusionTexture/index",
+                           "texture 1 does not exist");
+    expectMaterialRejected(withMaterial(R"({"emissiveTexture": {"index": 9}})"), "/materials/0/emissiveTexture/index",
+                           "does not exist");
+    expectMaterialRejected(withMaterial(R"({"pbrMetallicRoughness": {"metallicRoughnessTexture": {"index": 2}}})"),
+                           "/materials/0/pbrMetallicRoughness/metallicRoughnessTexture/index", "does not exist");
+    expectMaterialRejected(
+        withMaterial(R"({"pbrMetallicRoughness": {"baseColorTexture": {"index": 0, "texCoord": -1}}})"),
+        "/materials/0/pbrMetallicRoughness/baseColorTexture/texCoord", "expected 0 or more");
+    expectMaterialRejected(
         withMaterial(R"({"emissiveTexture": {"index": 0, "extensions": {"KHR_texture_transform": {"offset": [1]}}}})"),
         "/materials/0/emissiveTexture/extensions/KHR_texture_transform/offset", "2 numbers");
-    expectRejected(
+    expectMaterialRejected(
         withMaterial(
             R"({"emissiveTexture": {"index": 0, "extensions": {"KHR_texture_transform": {"texCoord": 0.5}}}})"),
         "/materials/0/emissiveTexture/extensions/KHR_texture_transform/texCoord", "integer");
-    expectRejected(withMaterial(R"({"extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": -1}}})"),
-                   "/materials/0/extensions/KHR_materials_emissive_strength/emissiveStrength", "negative");
+    expectMaterialRejected(
+        withMaterial(R"({"extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": -1}}})"),
+        "/materials/0/extensions/KHR_materials_emissive_strength/emissiveStrength", "negative");
 
     // Textures and samplers are checked whether a material uses them or not.
     QuadGltf q;
     q.textures = R"([{"source": 0}, {"source": 4}])";
-    expectRejected(q, "/textures/1/source", "image 4 does not exist (1 images)");
+    expectMaterialRejected(q, "/textures/1/source", "image 4 does not exist (1 images)");
     q.textures = R"([{"source": 0, "sampler": 2}])";
     q.samplers = "[{}]";
-    expectRejected(q, "/textures/0/sampler", "sampler 2 does not exist (1 samplers)");
+    expectMaterialRejected(q, "/textures/0/sampler", "sampler 2 does not exist (1 samplers)");
     q.samplers = R"([{"magFilter": 9984}])";  // a mipmap filter cannot magnify
-    expectRejected(q, "/samplers/0/magFilter", "is 9984, expected 9728 (NEAREST) or 9729 (LINEAR)");
+    expectMaterialRejected(q, "/samplers/0/magFilter", "is 9984, expected 9728 (NEAREST) or 9729 (LINEAR)");
     q.samplers = R"([{"minFilter": 1}])";
-    expectRejected(q, "/samplers/0/minFilter", "is 1");
+    expectMaterialRejected(q, "/samplers/0/minFilter", "is 1");
     q.samplers = R"([{"wrapT": 10496}])";
-    expectRejected(q, "/samplers/0/wrapT", "is 10496, expected 10497 (REPEAT)");
+    expectMaterialRejected(q, "/samplers/0/wrapT", "is 10496, expected 10497 (REPEAT)");
 }
 
 TEST(GltfMaterials, colourOfIntegersMustBeNormalized) {
     QuadGltf q;
     q.primitives = R"([{"attributes": {"POSITION": 0, "COLOR_0": 8}, "indices": 9}])";
-    expectRejected(q, "/accessors/8/normalized", "must be normalized");
+    expectMaterialRejected(q, "/accessors/8/normalized", "must be normalized");
     q.primitives = R"([{"attributes": {"POSITION": 0, "COLOR_0": 2}, "indices": 9}])";
-    expectRejected(q, "/accessors/2/type", "is VEC2, expected VEC3 or VEC4");
+    expectMaterialRejected(q, "/accessors/2/type", "is VEC2, expected VEC3 or VEC4");
 }
 
 TEST(GltfMaterials, theNewExtensionsMayBeRequired) {
@@ -310,5 +312,5 @@ TEST(GltfMaterials, theNewExtensionsMayBeRequired) {
     q.materials = R"([{"extensions": {"KHR_materials_unlit": {}}}])";
     EXPECT_TRUE(load(q)->materialOfMesh().unlit);
     q.extensionsRequired = R"(["KHR_materials_volume"])";
-    expectRejected(q, "/extensionsRequired/0", "KHR_materials_volume");
+    expectMaterialRejected(q, "/extensionsRequired/0", "KHR_materials_volume");
 }

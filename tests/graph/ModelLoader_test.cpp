@@ -39,7 +39,7 @@ std::string dataUri(const std::vector<unsigned char>& bytes) {
     return "data:application/octet-stream;base64," + arcomp::base64(bytes);
 }
 
-void expectRejected(const std::filesystem::path& file, const std::string& where, const std::string& reasonPart) {
+void expectModelRejected(const std::filesystem::path& file, const std::string& where, const std::string& reasonPart) {
     Scene scene;
     const std::size_t before = scene.nodeCount();
     try {
@@ -83,23 +83,23 @@ TEST(GltfLoader, refusesUrisThatLeaveTheModelFolder) {
     const auto bytes = triangleBytes();
     dir.write("outside.bin", std::string(bytes.begin(), bytes.end()));
     const auto up = dir.write("models/up.gltf", triangleGltf("../outside.bin"));
-    expectRejected(up, "", "outside the model's folder");
+    expectModelRejected(up, "", "outside the model's folder");
     const auto absolute = dir.write("models/abs.gltf", triangleGltf((dir.path() / "outside.bin").string()));
-    expectRejected(absolute, "", "");
+    expectModelRejected(absolute, "", "");
     const auto scheme = dir.write("models/scheme.gltf", triangleGltf("file:///etc/passwd"));
-    expectRejected(scheme, "", "scheme");
+    expectModelRejected(scheme, "", "scheme");
 }
 
 TEST(GltfLoader, rejectsAnIndexOutOfRangeNamingTheAccessor) {
     TempDir dir;
     const auto file = dir.write("oob.gltf", triangleGltf(dataUri(triangleBytes(7))));
-    expectRejected(file, "/accessors/1", "index 7 at element 2 is out of range for 3 vertices");
+    expectModelRejected(file, "/accessors/1", "index 7 at element 2 is out of range for 3 vertices");
 }
 
 TEST(GltfLoader, rejectsAnAccessorLongerThanItsBufferView) {
     TempDir dir;
     const auto file = dir.write("long.gltf", triangleGltf(dataUri(triangleBytes()), "", 4));
-    expectRejected(file, "/accessors/0", "do not fit in buffer view 0");
+    expectModelRejected(file, "/accessors/0", "do not fit in buffer view 0");
 }
 
 TEST(GltfLoader, rejectsACycleInTheNodeGraph) {
@@ -107,7 +107,7 @@ TEST(GltfLoader, rejectsACycleInTheNodeGraph) {
     const auto file = dir.write(
         "cycle.gltf", triangleGltf(dataUri(triangleBytes()), "", 3,
                                    R"([{"mesh": 0, "children": [1]}, {"children": [2]}, {"children": [1]}])"));
-    expectRejected(file, "/nodes/2/children/0", "already has parent");
+    expectModelRejected(file, "/nodes/2/children/0", "already has parent");
 }
 
 TEST(GltfLoader, rejectsUnsupportedRequiredExtensionsByName) {
@@ -117,7 +117,7 @@ TEST(GltfLoader, rejectsUnsupportedRequiredExtensionsByName) {
         triangleGltf(
             dataUri(triangleBytes()),
             R"(, "extensionsUsed": ["KHR_draco_mesh_compression"], "extensionsRequired": ["KHR_draco_mesh_compression"])"));
-    expectRejected(file, "/extensionsRequired/0", "KHR_draco_mesh_compression");
+    expectModelRejected(file, "/extensionsRequired/0", "KHR_draco_mesh_compression");
 }
 
 TEST(GltfLoader, rejectsGarbageAndEmptyFiles) {

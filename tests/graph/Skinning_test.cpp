@@ -45,7 +45,7 @@ NodeId firstMesh(const Scene& scene) {
     return kNoNode;
 }
 
-void expectRejected(const GltfFile& f, const std::string& where, const std::string& reasonPart) {
+void expectSkinRejected(const GltfFile& f, const std::string& where, const std::string& reasonPart) {
     TempDir dir;
     Scene scene;
     try {
@@ -122,29 +122,29 @@ TEST(SkinInfluences, weightsAreRescaledToSumToOneAndOnlyAFarSumIsReported) {
 TEST(SkinInfluences, badInfluencesAreRejectedWithTheirPointer) {
     const std::vector<std::uint8_t> joints{0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0};
     const std::vector<float> weights{0.5f, 0.5f, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0};
-    expectRejected(skinnedTriangle({0, 2, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0}, weights),
-                   "/meshes/0/primitives/0/attributes/JOINTS_0",
-                   "vertex 0 uses joint 2, but skin 0 'legs' of /nodes/0 has 2 joints");
-    expectRejected(skinnedTriangle(joints, {0.5f, 0.5f, 0, 0, 1, -0.5f, 0, 0, 1, 0, 0, 0}),
-                   "/meshes/0/primitives/0/attributes/WEIGHTS_0", "vertex 1 has a negative weight");
-    expectRejected(skinnedTriangle(joints, {0.5f, 0.5f, 0, 0, 1, 0, 0, 0}),
-                   "/meshes/0/primitives/0/attributes/WEIGHTS_0", "has 2 elements, POSITION has 3");
+    expectSkinRejected(skinnedTriangle({0, 2, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0}, weights),
+                       "/meshes/0/primitives/0/attributes/JOINTS_0",
+                       "vertex 0 uses joint 2, but skin 0 'legs' of /nodes/0 has 2 joints");
+    expectSkinRejected(skinnedTriangle(joints, {0.5f, 0.5f, 0, 0, 1, -0.5f, 0, 0, 1, 0, 0, 0}),
+                       "/meshes/0/primitives/0/attributes/WEIGHTS_0", "vertex 1 has a negative weight");
+    expectSkinRejected(skinnedTriangle(joints, {0.5f, 0.5f, 0, 0, 1, 0, 0, 0}),
+                       "/meshes/0/primitives/0/attributes/WEIGHTS_0", "has 2 elements, POSITION has 3");
 
     GltfFile floatJoints = skinnedTriangle(joints, weights);
     const int j = floatJoints.add({0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0}, "VEC4");
     floatJoints.attributes = R"(, "JOINTS_0": )" + std::to_string(j) + R"(, "WEIGHTS_0": 3)";
-    expectRejected(floatJoints, "/accessors/" + std::to_string(j) + "/componentType",
-                   "not allowed for /meshes/0/primitives/0/attributes/JOINTS_0");
+    expectSkinRejected(floatJoints, "/accessors/" + std::to_string(j) + "/componentType",
+                       "not allowed for /meshes/0/primitives/0/attributes/JOINTS_0");
 
     GltfFile rawBytes = skinnedTriangle(joints, weights);
     const std::uint8_t bytes[12] = {255, 0, 0, 0, 255, 0, 0, 0, 255, 0, 0, 0};
     const int w = rawBytes.addBytes(bytes, 3, "VEC4", kUnsignedByte);
     rawBytes.attributes = R"(, "JOINTS_0": 2, "WEIGHTS_0": )" + std::to_string(w);
-    expectRejected(rawBytes, "/accessors/" + std::to_string(w) + "/normalized", "weights must be normalized");
+    expectSkinRejected(rawBytes, "/accessors/" + std::to_string(w) + "/normalized", "weights must be normalized");
 
     GltfFile alone = skinnedTriangle(joints, weights);
     alone.attributes = R"(, "JOINTS_0": 2)";
-    expectRejected(alone, "/meshes/0/primitives/0/attributes", "has JOINTS_0 without WEIGHTS_0");
+    expectSkinRejected(alone, "/meshes/0/primitives/0/attributes", "has JOINTS_0 without WEIGHTS_0");
 }
 
 TEST(SkinInfluences, aVertexWithoutWeightLeavesThePrimitiveUnskinned) {

@@ -20,7 +20,7 @@ VoxelGrid sample() {
     return g;
 }
 
-void expectRejected(const std::vector<std::uint8_t>& bytes, const std::string& what) {
+void expectVoxelsRejected(const std::vector<std::uint8_t>& bytes, const std::string& what) {
     try {
         decodeVoxels(bytes, "x.arvox");
         ADD_FAILURE() << "accepted a file with " << what;
@@ -61,54 +61,54 @@ TEST(VoxelFile, writesAndReadsAFile) {
 
 TEST(VoxelFile, rejectsEveryBrokenField) {
     const std::vector<std::uint8_t> good = encodeVoxels(sample());
-    expectRejected({}, "no bytes");
-    expectRejected(std::vector<std::uint8_t>(good.begin(), good.begin() + 39), "a short header");
+    expectVoxelsRejected({}, "no bytes");
+    expectVoxelsRejected(std::vector<std::uint8_t>(good.begin(), good.begin() + 39), "a short header");
     auto b = good;
     b[0] = 'X';
-    expectRejected(b, "a wrong magic");
+    expectVoxelsRejected(b, "a wrong magic");
     b = good;
     b[8] = 2;
-    expectRejected(b, "version 2");
+    expectVoxelsRejected(b, "version 2");
     b = good;
     std::memset(&b[12], 0, 4);
-    expectRejected(b, "resolution 0");
+    expectVoxelsRejected(b, "resolution 0");
     b = good;
     b[12] = 0x01;
     b[13] = 0x10;
-    expectRejected(b, "resolution 4097");
+    expectVoxelsRejected(b, "resolution 4097");
     b = good;
     std::memset(&b[28], 0xff, 4);
-    expectRejected(b, "a NaN voxel size");
+    expectVoxelsRejected(b, "a NaN voxel size");
     b = good;
     std::memset(&b[28], 0, 4);
-    expectRejected(b, "a zero voxel size");
+    expectVoxelsRejected(b, "a zero voxel size");
     b = good;
     b[19] = 0x7f;
     b[18] = 0x80;
     b[17] = 0;
     b[16] = 0;
-    expectRejected(b, "an infinite origin");
+    expectVoxelsRejected(b, "an infinite origin");
     b = good;
     putU64(b, 32, ~std::uint64_t{0});
-    expectRejected(b, "a count of 2^64 - 1");
+    expectVoxelsRejected(b, "a count of 2^64 - 1");
     b = good;
     putU64(b, 32, 5);
-    expectRejected(b, "a count beyond the records");
+    expectVoxelsRejected(b, "a count beyond the records");
     b = good;
     putU64(b, 32, 3);
-    expectRejected(b, "trailing bytes");
+    expectVoxelsRejected(b, "trailing bytes");
     b = good;
     b.pop_back();
-    expectRejected(b, "a cut record");
+    expectVoxelsRejected(b, "a cut record");
     b = good;
     b[40] = 4;
-    expectRejected(b, "a coordinate outside the grid");
+    expectVoxelsRejected(b, "a coordinate outside the grid");
     b = good;
     b[50] = 0;
-    expectRejected(b, "a voxel out of order");
+    expectVoxelsRejected(b, "a voxel out of order");
     b = good;
     std::memcpy(&b[50], &b[40], 6);
-    expectRejected(b, "a repeated voxel");
+    expectVoxelsRejected(b, "a repeated voxel");
 }
 
 TEST(VoxelFile, acceptsAnEmptyModel) {

@@ -11,7 +11,7 @@ using namespace arcomp;
 using arcomp::test::TempDir;
 
 namespace {
-const char* const kScene = "scene:\n  objects:\n    - shape: box\n";
+const char* const kUnplacedBox = "scene:\n  objects:\n    - shape: box\n";
 
 std::string describe(const ConfigError& e) {
     std::string s;
@@ -22,7 +22,7 @@ std::string describe(const ConfigError& e) {
 
 TEST(BudgetConfig, absentSectionLeavesTheControllerOff) {
     TempDir dir;
-    const StationConfig cfg = loadStationConfig(dir.write("s.yaml", kScene));
+    const StationConfig cfg = loadStationConfig(dir.write("s.yaml", kUnplacedBox));
     EXPECT_FALSE(cfg.budget.enabled);
 }
 
@@ -30,7 +30,7 @@ TEST(BudgetConfig, turnsTheControllerOnWithATargetAndACalibration) {
     TempDir dir;
     dir.write("calib.yaml",
               "overhead_ms: 1\nlevels:\n  - {unlit: [0, 1], flat: [0, 1], gouraud: [0, 1], phong: [0, 1]}\n");
-    const StationConfig cfg = loadStationConfig(dir.write("s.yaml", std::string(kScene) + R"(budget:
+    const StationConfig cfg = loadStationConfig(dir.write("s.yaml", std::string(kUnplacedBox) + R"(budget:
   enabled: true
   target_ms: 16.7
   change: [shading]
@@ -51,7 +51,7 @@ TEST(BudgetConfig, turnsTheControllerOnWithATargetAndACalibration) {
 
 TEST(BudgetConfig, reportsEveryMistakeWithItsPlace) {
     TempDir dir;
-    const auto file = dir.write("s.yaml", std::string(kScene) + R"(budget:
+    const auto file = dir.write("s.yaml", std::string(kUnplacedBox) + R"(budget:
   enabled: true
   target_ms: -3
   change: [level, colour]

@@ -13,7 +13,7 @@ using arcomp::test::TempDir;
 
 namespace {
 
-const char* const kScene = "scene:\n  objects:\n    - shape: box\n";
+const char* const kCompositedBox = "scene:\n  objects:\n    - shape: box\n";
 
 std::string issuesOf(const std::filesystem::path& file) {
     try {
@@ -30,7 +30,7 @@ std::string issuesOf(const std::filesystem::path& file) {
 
 TEST(CompositingConfig, absentSectionsMeanNoVideoNoMatteNoOutput) {
     TempDir dir;
-    const StationConfig cfg = loadStationConfig(dir.write("s.yaml", kScene));
+    const StationConfig cfg = loadStationConfig(dir.write("s.yaml", kCompositedBox));
     EXPECT_FALSE(cfg.compositing.video.has_value());
     EXPECT_EQ(cfg.compositing.matte.kind, MatteKind::None);
     EXPECT_TRUE(cfg.compositing.output.pngDir.empty());
@@ -40,7 +40,7 @@ TEST(CompositingConfig, absentSectionsMeanNoVideoNoMatteNoOutput) {
 
 TEST(CompositingConfig, readsEverySectionAndResolvesPathsAgainstTheConfig) {
     TempDir dir;
-    const auto file = dir.write("site/s.yaml", std::string(kScene) + R"(
+    const auto file = dir.write("site/s.yaml", std::string(kCompositedBox) + R"(
 video:
   source: file
   path: clips/walk.avi
@@ -87,7 +87,7 @@ output:
 
 TEST(CompositingConfig, reportsMistakesWithTheirPlace) {
     TempDir dir;
-    const auto file = dir.write("s.yaml", std::string(kScene) + R"(video:
+    const auto file = dir.write("s.yaml", std::string(kCompositedBox) + R"(video:
   source: webcam
 matte:
   kind: background
@@ -111,7 +111,7 @@ output:
 
 TEST(CompositingConfig, backgroundMatteDefaultsToConsensusWithItsSettingsInSeconds) {
     TempDir dir;
-    const StationConfig plain = loadStationConfig(dir.write("plain.yaml", std::string(kScene) + R"(video:
+    const StationConfig plain = loadStationConfig(dir.write("plain.yaml", std::string(kCompositedBox) + R"(video:
   source: pattern
   fps: 12
 matte:
@@ -121,7 +121,7 @@ matte:
     EXPECT_EQ(d.method, BackgroundMethod::Consensus);
     EXPECT_DOUBLE_EQ(d.consensus.fps, 12.0) << "seconds turn into frames at the video's rate";
 
-    const StationConfig tuned = loadStationConfig(dir.write("tuned.yaml", std::string(kScene) + R"(matte:
+    const StationConfig tuned = loadStationConfig(dir.write("tuned.yaml", std::string(kCompositedBox) + R"(matte:
   kind: background
   background:
     samples: 16
@@ -141,7 +141,7 @@ matte:
     EXPECT_DOUBLE_EQ(c.fps, 15.0);
     EXPECT_EQ(c.edgeRadiusPx, 0);
 
-    const std::string issues = issuesOf(dir.write("bad.yaml", std::string(kScene) + R"(matte:
+    const std::string issues = issuesOf(dir.write("bad.yaml", std::string(kCompositedBox) + R"(matte:
   kind: background
   background:
     samples: 8
@@ -158,10 +158,10 @@ matte:
 TEST(CompositingConfig, masksPersonDepthAndShadowAreReadWithTheirDefaults) {
     TempDir dir;
     std::filesystem::create_directories(dir.path() / "masks");
-    const StationConfig plain = loadStationConfig(dir.write("plain.yaml", kScene));
+    const StationConfig plain = loadStationConfig(dir.write("plain.yaml", kCompositedBox));
     EXPECT_TRUE(plain.compositing.compositor.personDepthFromFeet);
     EXPECT_FALSE(plain.compositing.compositor.shadow.enabled.has_value());  // decided by the camera
-    const StationConfig cfg = loadStationConfig(dir.write("s.yaml", std::string(kScene) + R"(matte:
+    const StationConfig cfg = loadStationConfig(dir.write("s.yaml", std::string(kCompositedBox) + R"(matte:
   kind: masks
   masks: {folder: masks}
 compositor:
@@ -178,7 +178,7 @@ compositor:
 
 TEST(CompositingConfig, aMasksFolderThatIsNotThereAndALightBelowTheFloorAreRefused) {
     TempDir dir;
-    const std::string issues = issuesOf(dir.write("s.yaml", std::string(kScene) + R"(matte:
+    const std::string issues = issuesOf(dir.write("s.yaml", std::string(kCompositedBox) + R"(matte:
   kind: masks
   masks: {folder: nowhere}
 compositor:
@@ -186,6 +186,6 @@ compositor:
 )"));
     EXPECT_NE(issues.find("matte.masks.folder"), std::string::npos) << issues;
     EXPECT_NE(issues.find("compositor.shadow.light"), std::string::npos) << issues;
-    const std::string noFolder = issuesOf(dir.write("t.yaml", std::string(kScene) + "matte:\n  kind: masks\n"));
+    const std::string noFolder = issuesOf(dir.write("t.yaml", std::string(kCompositedBox) + "matte:\n  kind: masks\n"));
     EXPECT_NE(noFolder.find("matte.masks"), std::string::npos) << noFolder;
 }

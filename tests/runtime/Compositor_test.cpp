@@ -13,7 +13,7 @@ using namespace arcomp::gl;
 
 namespace {
 
-cv::Vec4b at(const Image& img, int x, int y) {
+cv::Vec4b rgbaAt(const Image& img, int x, int y) {
     const std::size_t i =
         (static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(x)) * 4;
     return {img.rgba[i], img.rgba[i + 1], img.rgba[i + 2], img.rgba[i + 3]};
@@ -61,11 +61,11 @@ TEST_P(CompositorOnEachApi, layersPersonOverCgOverVideoExceptWhereHeldOut) {
     c.endHoldout();
     c.person(person, onePlane(), kProjection);
     const Image out = c.output().read();
-    EXPECT_EQ(at(out, 10, 10), cv::Vec4b(0, 0, 255, 255));    // held out: the CG in front
-    EXPECT_EQ(at(out, 10, 80), cv::Vec4b(200, 0, 0, 255));    // person over the video
-    EXPECT_EQ(at(out, 100, 10), cv::Vec4b(0, 0, 255, 255));   // CG over the video
-    EXPECT_EQ(at(out, 100, 80), cv::Vec4b(90, 90, 90, 255));  // the video alone
-    EXPECT_EQ(c.personTiles(), 8u * 12u);                     // 64x96 of 8-pixel tiles
+    EXPECT_EQ(rgbaAt(out, 10, 10), cv::Vec4b(0, 0, 255, 255));    // held out: the CG in front
+    EXPECT_EQ(rgbaAt(out, 10, 80), cv::Vec4b(200, 0, 0, 255));    // person over the video
+    EXPECT_EQ(rgbaAt(out, 100, 10), cv::Vec4b(0, 0, 255, 255));   // CG over the video
+    EXPECT_EQ(rgbaAt(out, 100, 80), cv::Vec4b(90, 90, 90, 255));  // the video alone
+    EXPECT_EQ(c.personTiles(), 8u * 12u);                         // 64x96 of 8-pixel tiles
 }
 
 // Two people in slots of their own, on a slot image at half size, and a
@@ -97,11 +97,11 @@ TEST_P(CompositorOnEachApi, eachPersonIsCutOnlyByHoldoutsNearerThanThem) {
     c.endHoldout();
     c.person(person, depths, kProjection);
     const Image out = c.output().read();
-    EXPECT_EQ(at(out, 10, 10), cv::Vec4b(200, 0, 0, 255));   // near person over the CG
-    EXPECT_EQ(at(out, 100, 10), cv::Vec4b(0, 0, 255, 255));  // far person behind it
-    EXPECT_EQ(at(out, 10, 80), cv::Vec4b(200, 0, 0, 255));
-    EXPECT_EQ(at(out, 100, 80), cv::Vec4b(0, 200, 0, 255));
-    EXPECT_EQ(at(out, 51, 91), cv::Vec4b(90, 90, 90, 255));  // the plane's pixel is behind the 15 m holdout
+    EXPECT_EQ(rgbaAt(out, 10, 10), cv::Vec4b(200, 0, 0, 255));   // near person over the CG
+    EXPECT_EQ(rgbaAt(out, 100, 10), cv::Vec4b(0, 0, 255, 255));  // far person behind it
+    EXPECT_EQ(rgbaAt(out, 10, 80), cv::Vec4b(200, 0, 0, 255));
+    EXPECT_EQ(rgbaAt(out, 100, 80), cv::Vec4b(0, 200, 0, 255));
+    EXPECT_EQ(rgbaAt(out, 51, 91), cv::Vec4b(90, 90, 90, 255));  // the plane's pixel is behind the 15 m holdout
 }
 
 INSTANTIATE_TEST_SUITE_P(Gl, CompositorOnEachApi, ::testing::Values(GlRequest::Gl33, GlRequest::Es3),
@@ -120,8 +120,8 @@ TEST(Compositor, personCoversCgBehindWhereNotHeldOut) {
     c.endHoldout();
     c.person(person, onePlane(), kProjection);
     const Image out = c.output().read();
-    EXPECT_EQ(at(out, 37, 5), cv::Vec4b(30, 20, 10, 255));
-    EXPECT_EQ(at(out, 36, 5), cv::Vec4b(0, 255, 0, 255));
+    EXPECT_EQ(rgbaAt(out, 37, 5), cv::Vec4b(30, 20, 10, 255));
+    EXPECT_EQ(rgbaAt(out, 36, 5), cv::Vec4b(0, 255, 0, 255));
 }
 
 // Only the rows of the occupied tiles are uploaded: a tile drawn again must
@@ -136,18 +136,18 @@ TEST(Compositor, aTileShowsNothingOfTheLastFramesPerson) {
     person(cv::Rect(0, 32, 96, 32)).setTo(cv::Scalar(0, 0, 200, 255));  // a band of tile rows, solid red
     c.begin(frame, {});
     c.person(person, onePlane(), kProjection);
-    EXPECT_EQ(at(c.output().read(), 40, 40), cv::Vec4b(200, 0, 0, 255));
+    EXPECT_EQ(rgbaAt(c.output().read(), 40, 40), cv::Vec4b(200, 0, 0, 255));
     person.setTo(cv::Scalar(0, 0, 0, 0));
     person.at<cv::Vec4b>(60, 40) = cv::Vec4b(0, 200, 0, 255);  // one green pixel, low in the band's last tile row
     c.begin(frame, {});
     c.person(person, onePlane(), kProjection);
     const Image out = c.output().read();
     EXPECT_EQ(c.personTiles(), 1u);
-    EXPECT_EQ(at(out, 40, 60), cv::Vec4b(0, 200, 0, 255));
+    EXPECT_EQ(rgbaAt(out, 40, 60), cv::Vec4b(0, 200, 0, 255));
     for (const int y : {32, 40, 56, 59, 61, 63})  // the band; its tile (rows 56-63) above and below the pixel
-        EXPECT_EQ(at(out, 40, y), cv::Vec4b(90, 90, 90, 255)) << "row " << y;
-    EXPECT_EQ(at(out, 10, 40), cv::Vec4b(90, 90, 90, 255));  // a tile of the last frame's person, empty now
-    EXPECT_EQ(at(out, 47, 60), cv::Vec4b(90, 90, 90, 255));  // the tile's last column
+        EXPECT_EQ(rgbaAt(out, 40, y), cv::Vec4b(90, 90, 90, 255)) << "row " << y;
+    EXPECT_EQ(rgbaAt(out, 10, 40), cv::Vec4b(90, 90, 90, 255));  // a tile of the last frame's person, empty now
+    EXPECT_EQ(rgbaAt(out, 47, 60), cv::Vec4b(90, 90, 90, 255));  // the tile's last column
 }
 
 // The tiles a pipelined station finds on its capture thread: only where
@@ -187,7 +187,7 @@ TEST(Compositor, halfTransparentPersonBlendsPremultiplied) {
     c.beginHoldout();
     c.endHoldout();
     c.person(person, onePlane(), kProjection);
-    const cv::Vec4b p = at(c.output().read(), 8, 8);
+    const cv::Vec4b p = rgbaAt(c.output().read(), 8, 8);
     EXPECT_EQ(p[1], 100);
     EXPECT_NEAR(p[2], 127, 1);  // blue * (1 - 128/255)
     EXPECT_EQ(p[3], 255);
@@ -201,7 +201,7 @@ TEST(Compositor, colourBackdropReplacesTheVideo) {
     cv::Mat person(size.y, size.x, CV_8UC4, cv::Scalar(0, 0, 0, 0));
     c.begin(frame, {.backdropVideo = false, .backdropColor = {0.2f, 0.2f, 0.2f, 1.0f}});
     c.person(person, onePlane(), kProjection);
-    EXPECT_EQ(at(c.output().read(), 3, 3), cv::Vec4b(51, 51, 51, 255));
+    EXPECT_EQ(rgbaAt(c.output().read(), 3, 3), cv::Vec4b(51, 51, 51, 255));
     EXPECT_EQ(c.personTiles(), 0u);
 }
 
@@ -214,8 +214,8 @@ TEST(Compositor, videoRowsKeepTheirOrder) {
     c.begin(frame, {});
     c.person(cv::Mat(size.y, size.x, CV_8UC4, cv::Scalar::all(0)), onePlane(), kProjection);
     const Image out = c.output().read();
-    EXPECT_EQ(at(out, 4, 0), cv::Vec4b(0, 0, 255, 255));
-    EXPECT_EQ(at(out, 4, 5), cv::Vec4b(0, 0, 0, 255));
+    EXPECT_EQ(rgbaAt(out, 4, 0), cv::Vec4b(0, 0, 255, 255));
+    EXPECT_EQ(rgbaAt(out, 4, 5), cv::Vec4b(0, 0, 0, 255));
 }
 
 }  // namespace

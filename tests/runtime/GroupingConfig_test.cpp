@@ -15,7 +15,7 @@ using arcomp::test::TempDir;
 
 namespace {
 
-const char* const kScene = R"(scene:
+const char* const kGroupingScene = R"(scene:
   objects:
     - shape: box
       size: [100, 100, 100]
@@ -25,16 +25,16 @@ const char* const kScene = R"(scene:
 
 TEST(GroupingConfig, absentSectionGroupsNothing) {
     TempDir dir;
-    const StationConfig cfg = loadStationConfig(dir.write("a.yaml", kScene));
+    const StationConfig cfg = loadStationConfig(dir.write("a.yaml", kGroupingScene));
     EXPECT_FALSE(cfg.grouping.enabled);
-    SceneFile f = loadSceneFile(dir.write("b.yaml", kScene));
+    SceneFile f = loadSceneFile(dir.write("b.yaml", kGroupingScene));
     EXPECT_TRUE(f.world.grouping.nodes.empty());
     for (NodeId n = 0; n < f.world.scene.nodeCount(); ++n) EXPECT_NE(f.world.scene.kind(n), NodeKind::Grouping);
 }
 
 TEST(GroupingConfig, defaultsAreThePapersParameters) {
     TempDir dir;
-    const StationConfig cfg = loadStationConfig(dir.write("a.yaml", std::string(kScene) + "grouping: {}\n"));
+    const StationConfig cfg = loadStationConfig(dir.write("a.yaml", std::string(kGroupingScene) + "grouping: {}\n"));
     EXPECT_TRUE(cfg.grouping.enabled);
     const GroupingParams& p = cfg.grouping.params;
     EXPECT_EQ(p.l0, 5000.0f);
@@ -51,7 +51,7 @@ TEST(GroupingConfig, defaultsAreThePapersParameters) {
 
 TEST(GroupingConfig, readsEveryKey) {
     TempDir dir;
-    const StationConfig cfg = loadStationConfig(dir.write("a.yaml", std::string(kScene) + R"(grouping:
+    const StationConfig cfg = loadStationConfig(dir.write("a.yaml", std::string(kGroupingScene) + R"(grouping:
   l0: 100
   alpha_p: 1
   alpha_s: 2
@@ -81,7 +81,7 @@ TEST(GroupingConfig, readsEveryKey) {
 
 TEST(GroupingConfig, badValuesAreReportedWithTheirLine) {
     TempDir dir;
-    const auto file = dir.write("a.yaml", std::string(kScene) + R"(grouping:
+    const auto file = dir.write("a.yaml", std::string(kGroupingScene) + R"(grouping:
   alpha_p: -1
   proxy: sphere
   forset: mixed

@@ -9,6 +9,7 @@
 #include "runtime/render/ImageBasedLight.hpp"
 #include "runtime/render/Renderer.hpp"
 #include "runtime/station/ImageFile.hpp"
+#include "tests/support/ImagePixels.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -22,25 +23,9 @@ using namespace arcomp;
 
 namespace {
 
-constexpr glm::ivec2 kSize{96, 96};
+constexpr glm::ivec2 kPbrSize{96, 96};
 
-struct Pixel {
-    int r, g, b, a;
-};
-
-Pixel at(const Image& img, int x, int y) {
-    const std::size_t i =
-        (static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(x)) * 4;
-    return {img.rgba[i], img.rgba[i + 1], img.rgba[i + 2], img.rgba[i + 3]};
-}
-
-int brightness(const Pixel& p) { return (p.r + p.g + p.b) / 3; }
-
-std::size_t covered(const Image& img) {
-    std::size_t n = 0;
-    for (std::size_t i = 3; i < img.rgba.size(); i += 4) n += img.rgba[i] > 0;
-    return n;
-}
+int brightness(const test::Pixel& p) { return (p.r + p.g + p.b) / 3; }
 
 // The sRGB encoding of a linear value, as 0..255.
 int encoded(float linear) {
@@ -72,7 +57,7 @@ Image makeImage(int w, int h, const std::function<glm::u8vec4(int, int)>& texel)
 
 // The square seen head-on, filling the middle of the image (48x48 of 96x96
 // at distance 4.83 with 45 degrees).
-const View kFront = View::lookAt({0, 0, 4.828f}, {0, 0, 0}, {0, 1, 0}, 45.0f, kSize);
+const View kFront = View::lookAt({0, 0, 4.828f}, {0, 0, 0}, {0, 1, 0}, 45.0f, kPbrSize);
 
 // The API the running test renders with: every test runs on both.
 GlRequest g_api = GlRequest::Gl33;
@@ -105,7 +90,7 @@ void addAt(Scene& scene, const glm::vec3& position, Geometry g, Material m) {
     scene.addMesh(t, {scene.addGeometry(std::move(g)), scene.addMaterial(std::move(m))});
 }
 
-void saveOnFailure(const Image& img, const std::string& name) {
+void savePbrOnFailure(const Image& img, const std::string& name) {
     if (::testing::Test::HasFailure())
         writePng(std::string(ARCOMP_TEST_OUTPUT) + "/" + name + (g_api == GlRequest::Es3 ? "-es3" : "-gl33") + ".png",
                  img);
@@ -144,13 +129,13 @@ TEST_P(PbrShading, blackBaseWithEmissionDrawsTheEmissiveColourUnlessUnlit) {
                           {.name = "test", .baseColor = {0, 0, 0, 1}, .emissive = emissive, .unlit = unlit});
                 },
                 {.shading = level, .settings = {.lightIntensity = 0.0f, .environmentIntensity = 0.0f}});
-            const Pixel p = at(img, 48, 48);
+            const test::Pixel p = test::pixelAt(img, 48, 48);
             const glm::vec3 expected = unlit ? glm::vec3(0.0f) : emissive;
             EXPECT_NEAR(p.r, encoded(expected.r), 2) << toString(level) << (unlit ? ", unlit" : "");
             EXPECT_NEAR(p.g, encoded(expected.g), 2) << toString(level) << (unlit ? ", unlit" : "");
             EXPECT_NEAR(p.b, encoded(expected.b), 2) << toString(level) << (unlit ? ", unlit" : "");
             EXPECT_EQ(p.a, 255);
-            saveOnFailure(img, unlit ? "pbr-unlit-emissive" : "pbr-lit-emissive");
+            savePbrOnFailure(img, unlit ? "pbr-unlit-emissive" : "pbr-lit-emissive");
         }
     }
 }
@@ -168,10 +153,10 @@ TEST_P(PbrShading, emissionTimesStrengthAndTextureShowsAtEveryLevel) {
                 addAt(s, {}, makeSquare(), m);
             },
             {.shading = level, .settings = {.lightIntensity = 0.0f, .environmentIntensity = 0.0f}});
-        EXPECT_EQ(at(img, 36, 48).g, 255) << toString(level) << ": 0.25 * 4 is full green";
-        EXPECT_LT(at(img, 36, 48).r, 10) << toString(level);
-        EXPECT_LT(at(img, 60, 48).g, 10) << toString(level) << ": the texture's black half emits nothing";
-        saveOnFailure(img, "pbr-emission-levels");
+        EXPECT_EQ(test::pixelAt(img, 36, 48).g, 255) << toString(level) << ": 0.25 * 4 is full green";
+        EXPECT_LT(test::pixelAt(img, 36, 48).r, 10) << toString(level);
+        EXPECT_LT(test::pixelAt(img, 60, 48).g, 10) << toString(level) << ": the texture's black half emits nothing";
+        savePbrOnFailure(img, "pbr-emission-levels");
     }
 }
 
@@ -190,17 +175,17 @@ TEST_P(PbrShading, highlightPeakFallsAndSpreadsAsRoughnessRises) {
                           .lightIntensity = 1.0f,
                           .environmentIntensity = 0.0f}});
         int peak = 0;
-        for (int y = 0; y < kSize.y; ++y)
-            for (int x = 0; x < kSize.x; ++x) peak = std::max(peak, brightness(at(img, x, y)));
+        for (int y = 0; y < kPbrSize.y; ++y)
+            for (int x = 0; x < kPbrSize.x; ++x) peak = std::max(peak, brightness(test::pixelAt(img, x, y)));
         std::size_t spread = 0;
-        for (int y = 0; y < kSize.y; ++y)
-            for (int x = 0; x < kSize.x; ++x) spread += brightness(at(img, x, y)) * 2 > peak;
+        for (int y = 0; y < kPbrSize.y; ++y)
+            for (int x = 0; x < kPbrSize.x; ++x) spread += brightness(test::pixelAt(img, x, y)) * 2 > peak;
         EXPECT_LT(peak, 255) << "roughness " << roughness << ": a clipped peak hides the fall";
         EXPECT_LT(peak, lastPeak) << "roughness " << roughness;
         EXPECT_GT(spread, lastSpread) << "roughness " << roughness;
         lastPeak = peak;
         lastSpread = spread;
-        saveOnFailure(img, "pbr-roughness");
+        savePbrOnFailure(img, "pbr-roughness");
     }
 }
 
@@ -214,13 +199,13 @@ TEST_P(PbrShading, metalReflectionsTakeTheBaseColourDielectricOnesStayWhite) {
                       {.name = "test", .baseColor = base, .metallic = metallic, .roughness = 0.5f});
             },
             {.settings = {.lightIntensity = 0.4f, .environmentIntensity = 0.2f}});
-        Pixel best{0, 0, 0, 0};
-        for (int y = 0; y < kSize.y; ++y)
-            for (int x = 0; x < kSize.x; ++x)
-                if (brightness(at(img, x, y)) > brightness(best)) best = at(img, x, y);
+        test::Pixel best{0, 0, 0, 0};
+        for (int y = 0; y < kPbrSize.y; ++y)
+            for (int x = 0; x < kPbrSize.x; ++x)
+                if (brightness(test::pixelAt(img, x, y)) > brightness(best)) best = test::pixelAt(img, x, y);
         return best;
     };
-    const Pixel metal = highlight({1.0f, 0.4f, 0.1f, 1}, 1.0f), plastic = highlight({0, 0, 0, 1}, 0.0f);
+    const test::Pixel metal = highlight({1.0f, 0.4f, 0.1f, 1}, 1.0f), plastic = highlight({0, 0, 0, 1}, 0.0f);
     EXPECT_LT(metal.b, metal.r * 6 / 10) << "metal highlight " << metal.r << "," << metal.g << "," << metal.b;
     EXPECT_GT(plastic.r, 20) << "the dielectric reflects something";
     EXPECT_NEAR(plastic.b, plastic.r, plastic.r / 10 + 1)
@@ -244,17 +229,17 @@ TEST_P(PbrShading, aWhiteSurfaceInAWhiteFurnaceReflectsAllItsLightAtAnyRoughness
                 },
                 {.settings = {.lightIntensity = 0.0f, .environmentIntensity = 1.0f}, .environment = &furnace});
             int darkest = 255, brightest = 0;
-            for (int y = 0; y < kSize.y; ++y)
-                for (int x = 0; x < kSize.x; ++x) {
-                    const Pixel p = at(img, x, y);
+            for (int y = 0; y < kPbrSize.y; ++y)
+                for (int x = 0; x < kPbrSize.x; ++x) {
+                    const test::Pixel p = test::pixelAt(img, x, y);
                     if (p.a != 255) continue;
                     darkest = std::min({darkest, p.r, p.g, p.b});
                     brightest = std::max({brightest, p.r, p.g, p.b});
                 }
-            EXPECT_GT(covered(img), 1000u);
+            EXPECT_GT(test::coveredPixels(img), 1000u);
             EXPECT_NEAR(darkest, encoded(0.5f), 4) << "metallic " << metallic << ", roughness " << roughness;
             EXPECT_NEAR(brightest, encoded(0.5f), 4) << "metallic " << metallic << ", roughness " << roughness;
-            saveOnFailure(img, "pbr-furnace");
+            savePbrOnFailure(img, "pbr-furnace");
         }
 }
 
@@ -286,8 +271,8 @@ int brightnessRange(const Image& img) {
     int lo = 255, hi = 0;
     for (int y = 30; y < 66; ++y)
         for (int x = 30; x < 66; ++x) {
-            lo = std::min(lo, brightness(at(img, x, y)));
-            hi = std::max(hi, brightness(at(img, x, y)));
+            lo = std::min(lo, brightness(test::pixelAt(img, x, y)));
+            hi = std::max(hi, brightness(test::pixelAt(img, x, y)));
         }
     return hi - lo;
 }
@@ -302,8 +287,8 @@ TEST_P(PbrShading, normalMapShowsItsPatternUnderAGrazingLight) {
     EXPECT_GT(brightnessRange(mapped), 60) << "the stripes lean towards and away from the light";
     EXPECT_GT(brightnessRange(derived), 60) << "without tangents, the frame from derivatives shows them too";
     // The stripes are 6 pixels wide: neighbouring columns three apart differ.
-    EXPECT_GT(std::abs(brightness(at(mapped, 45, 48)) - brightness(at(mapped, 51, 48))), 40);
-    saveOnFailure(mapped, "pbr-normal-map");
+    EXPECT_GT(std::abs(brightness(test::pixelAt(mapped, 45, 48)) - brightness(test::pixelAt(mapped, 51, 48))), 40);
+    savePbrOnFailure(mapped, "pbr-normal-map");
 }
 
 TEST_P(PbrShading, occlusionDarkensTheAmbientOnly) {
@@ -321,11 +306,12 @@ TEST_P(PbrShading, occlusionDarkensTheAmbientOnly) {
     };
     const Image direct = squareWithOcclusion(1.5f, 0.0f);
     const Image ambient = squareWithOcclusion(0.0f, 1.0f);
-    EXPECT_GT(brightness(at(direct, 36, 48)), 100);
-    EXPECT_NEAR(brightness(at(direct, 36, 48)), brightness(at(direct, 60, 48)), 2) << "direct light is not occluded";
-    EXPECT_GT(brightness(at(ambient, 60, 48)), 60);
-    EXPECT_LT(brightness(at(ambient, 36, 48)), 5) << "the occluded half gets no environment light";
-    saveOnFailure(ambient, "pbr-occlusion");
+    EXPECT_GT(brightness(test::pixelAt(direct, 36, 48)), 100);
+    EXPECT_NEAR(brightness(test::pixelAt(direct, 36, 48)), brightness(test::pixelAt(direct, 60, 48)), 2)
+        << "direct light is not occluded";
+    EXPECT_GT(brightness(test::pixelAt(ambient, 60, 48)), 60);
+    EXPECT_LT(brightness(test::pixelAt(ambient, 36, 48)), 5) << "the occluded half gets no environment light";
+    savePbrOnFailure(ambient, "pbr-occlusion");
 }
 
 TEST_P(PbrShading, maskCutoffKeepsTheTexelsAboveIt) {
@@ -344,10 +330,10 @@ TEST_P(PbrShading, maskCutoffKeepsTheTexelsAboveIt) {
                 addAt(s, {}, makeSquare(), m);
             },
             {.shading = Shading::Unlit, .settings = {.clearColor = glm::vec4(0)}});
-        counts[i++] = covered(img);
-        for (int y = 0; y < kSize.y; ++y)
-            for (int x = 0; x < kSize.x; ++x) {
-                const Pixel p = at(img, x, y);
+        counts[i++] = test::coveredPixels(img);
+        for (int y = 0; y < kPbrSize.y; ++y)
+            for (int x = 0; x < kPbrSize.x; ++x) {
+                const test::Pixel p = test::pixelAt(img, x, y);
                 ASSERT_TRUE(p.a == 0 || p.a == 255) << "a masked texel is opaque or gone";
             }
     }
@@ -364,12 +350,12 @@ TEST_P(PbrShading, blendedSquareMixesWithTheOpaqueOneBehind) {
                   {.name = "test", .baseColor = {0, 0, 1, 0.5f}, .alphaMode = AlphaMode::Blend});
         },
         {.shading = Shading::Unlit});
-    const Pixel p = at(img, 48, 48);
+    const test::Pixel p = test::pixelAt(img, 48, 48);
     // Premultiplied "over" of the encoded colours: half blue, half red.
     EXPECT_NEAR(p.r, 128, 3);
     EXPECT_NEAR(p.b, 128, 3);
     EXPECT_EQ(p.a, 255);
-    saveOnFailure(img, "pbr-blend");
+    savePbrOnFailure(img, "pbr-blend");
 }
 
 namespace {
@@ -395,7 +381,7 @@ double fractionDiffering(const Image& a, const Image& b) {
     for (int y = 26; y < 70; ++y)
         for (int x = 26; x < 70; ++x) {
             ++inside;
-            differ += std::abs(brightness(at(a, x, y)) - brightness(at(b, x, y))) > 128;
+            differ += std::abs(brightness(test::pixelAt(a, x, y)) - brightness(test::pixelAt(b, x, y))) > 128;
         }
     return static_cast<double>(differ) / static_cast<double>(inside);
 }
@@ -408,14 +394,15 @@ TEST_P(PbrShading, textureTransformMovesTheCheckerByItsOffset) {
     const Image byTwoCells = texturedSquare(checker(8), kNearest, {.offset = {0.25f, 0}});
     EXPECT_GT(fractionDiffering(plain, byOneCell), 0.8) << "one cell over swaps black and white";
     EXPECT_LT(fractionDiffering(plain, byTwoCells), 0.1) << "two cells over is the same pattern";
-    saveOnFailure(byOneCell, "pbr-transform");
+    savePbrOnFailure(byOneCell, "pbr-transform");
 }
 
 TEST_P(PbrShading, nearestSamplingKeepsEdgesSharpLinearBlursThem) {
     auto midTones = [](const Image& img) {
         std::size_t n = 0;
         for (int y = 26; y < 70; ++y)
-            for (int x = 26; x < 70; ++x) n += brightness(at(img, x, y)) > 40 && brightness(at(img, x, y)) < 215;
+            for (int x = 26; x < 70; ++x)
+                n += brightness(test::pixelAt(img, x, y)) > 40 && brightness(test::pixelAt(img, x, y)) < 215;
         return static_cast<double>(n) / (44.0 * 44.0);
     };
     const Image nearest = texturedSquare(checker(2), kNearest);
@@ -437,14 +424,14 @@ TEST_P(PbrShading, aMinifiedColourTextureAveragesInLinearLight) {
     int lo = 255, hi = 0, sum = 0;
     for (int y = 30; y < 66; ++y)
         for (int x = 30; x < 66; ++x) {
-            const int b = brightness(at(img, x, y));
+            const int b = brightness(test::pixelAt(img, x, y));
             lo = std::min(lo, b);
             hi = std::max(hi, b);
             sum += b;
         }
     EXPECT_NEAR(sum / (36 * 36), encoded(0.5f * 0.2158f), 8);
     EXPECT_LT(hi - lo, 16);
-    saveOnFailure(img, "pbr-minified");
+    savePbrOnFailure(img, "pbr-minified");
 }
 
 TEST_P(PbrShading, clampRepeatsTheEdgeTexelRepeatWrapsAround) {
@@ -456,10 +443,10 @@ TEST_P(PbrShading, clampRepeatsTheEdgeTexelRepeatWrapsAround) {
     const Image repeated = texturedSquare(redGreen, repeat, {}, 2.0f);
     const Image clamped = texturedSquare(redGreen, clamp, {}, 2.0f);
     const int thirdQuarter = 24 + 48 * 5 / 8;  // u = 1.25
-    EXPECT_GT(at(repeated, thirdQuarter, 48).r, 200);
-    EXPECT_LT(at(repeated, thirdQuarter, 48).g, 50);
-    EXPECT_GT(at(clamped, thirdQuarter, 48).g, 200);
-    EXPECT_LT(at(clamped, thirdQuarter, 48).r, 50);
+    EXPECT_GT(test::pixelAt(repeated, thirdQuarter, 48).r, 200);
+    EXPECT_LT(test::pixelAt(repeated, thirdQuarter, 48).g, 50);
+    EXPECT_GT(test::pixelAt(clamped, thirdQuarter, 48).g, 200);
+    EXPECT_LT(test::pixelAt(clamped, thirdQuarter, 48).r, 50);
 }
 
 TEST_P(PbrShading, aSlotReadsTheTexcoordSetItNames) {
@@ -479,9 +466,9 @@ TEST_P(PbrShading, aSlotReadsTheTexcoordSetItNames) {
             {.shading = Shading::Unlit});
     };
     const Image first = square(0), second = square(1);
-    EXPECT_GT(at(first, 60, 48).r, 200);
-    EXPECT_GT(at(second, 36, 48).r, 200);
-    EXPECT_GT(at(second, 60, 48).g, 200) << "TEXCOORD_1 spans the texture";
+    EXPECT_GT(test::pixelAt(first, 60, 48).r, 200);
+    EXPECT_GT(test::pixelAt(second, 36, 48).r, 200);
+    EXPECT_GT(test::pixelAt(second, 60, 48).g, 200) << "TEXCOORD_1 spans the texture";
 }
 
 TEST_P(PbrShading, vertexColoursMultiplyTheBaseColour) {
@@ -492,7 +479,7 @@ TEST_P(PbrShading, vertexColoursMultiplyTheBaseColour) {
             addAt(s, {}, std::move(g), {.name = "test", .baseColor = {1, 1, 0.5f, 1}});
         },
         {.shading = Shading::Unlit});
-    const Pixel left = at(img, 24, 48), right = at(img, 71, 48);
+    const test::Pixel left = test::pixelAt(img, 24, 48), right = test::pixelAt(img, 71, 48);
     EXPECT_GT(left.r, 240);
     EXPECT_LT(left.b, 40);
     EXPECT_NEAR(right.b, encoded(0.5f * 47.5f / 48.0f), 6) << "blue times the factor's 0.5";
@@ -500,7 +487,7 @@ TEST_P(PbrShading, vertexColoursMultiplyTheBaseColour) {
 }
 
 TEST_P(PbrShading, singleSidedBacksAreCulledDoubleSidedOnesLitWithTheNormalFlipped) {
-    const View behind = View::lookAt({0, 0, -4.828f}, {0, 0, 0}, {0, 1, 0}, 45.0f, kSize);
+    const View behind = View::lookAt({0, 0, -4.828f}, {0, 0, 0}, {0, 1, 0}, 45.0f, kPbrSize);
     auto back = [&](Shading level, bool doubleSided, const glm::vec3& light) {
         return render(
             [&](Scene& s) {
@@ -515,12 +502,12 @@ TEST_P(PbrShading, singleSidedBacksAreCulledDoubleSidedOnesLitWithTheNormalFlipp
              .view = behind});
     };
     for (Shading level : {Shading::Flat, Shading::Gouraud, Shading::Phong}) {
-        EXPECT_EQ(covered(back(level, false, {0, 0, -1})), 0u) << toString(level);
+        EXPECT_EQ(test::coveredPixels(back(level, false, {0, 0, -1})), 0u) << toString(level);
         const Image litFromViewerSide = back(level, true, {0, 0, -1});
         const Image litFromFront = back(level, true, {0, 0, 1});
-        EXPECT_EQ(covered(litFromViewerSide), 48u * 48u) << toString(level);
-        EXPECT_GT(brightness(at(litFromViewerSide, 48, 48)), 150) << toString(level);
-        EXPECT_LT(brightness(at(litFromFront, 48, 48)), 10)
+        EXPECT_EQ(test::coveredPixels(litFromViewerSide), 48u * 48u) << toString(level);
+        EXPECT_GT(brightness(test::pixelAt(litFromViewerSide, 48, 48)), 150) << toString(level);
+        EXPECT_LT(brightness(test::pixelAt(litFromFront, 48, 48)), 10)
             << toString(level) << ": the back's normal points away from a light in front";
     }
 }
@@ -542,13 +529,13 @@ TEST_P(PbrShading, unlitLevelIgnoresTheLightTopLevelFollowsTheEnvironment) {
     const ImageBasedLight redLight = prefilterEnvironment(red, 32, 4);
     const Image neutral = sphere(Shading::Phong, {.lightIntensity = 0.0f}, nullptr);
     const Image reddish = sphere(Shading::Phong, {.lightIntensity = 0.0f}, &redLight);
-    const Pixel n = at(neutral, 48, 48), r = at(reddish, 48, 48);
+    const test::Pixel n = test::pixelAt(neutral, 48, 48), r = test::pixelAt(reddish, 48, 48);
     EXPECT_NEAR(n.r, n.b, 4) << "the neutral studio is grey";
     EXPECT_GT(n.r, 80);
     EXPECT_GT(r.r, 150);
     EXPECT_LT(r.g, 20);
     EXPECT_LT(r.b, 20);
-    saveOnFailure(reddish, "pbr-red-environment");
+    savePbrOnFailure(reddish, "pbr-red-environment");
 }
 
 // A mirror sphere shows the environment the right way round: what lies
@@ -571,11 +558,11 @@ TEST_P(PbrShading, aMirrorSphereReflectsTheEnvironmentTheRightWayRound) {
     const Image behindCamera = mirror([](const glm::vec3& d) { return d.z > 0.0f; });
     const Image ahead = mirror([](const glm::vec3& d) { return d.z < 0.0f; });
     const Image right = mirror([](const glm::vec3& d) { return d.x > 0.0f; });
-    EXPECT_GT(brightness(at(behindCamera, 48, 48)), 200);
-    EXPECT_LT(brightness(at(ahead, 48, 48)), 30);
-    EXPECT_GT(brightness(at(right, 60, 48)), 200);
-    EXPECT_LT(brightness(at(right, 36, 48)), 30);
-    saveOnFailure(right, "pbr-mirror-right");
+    EXPECT_GT(brightness(test::pixelAt(behindCamera, 48, 48)), 200);
+    EXPECT_LT(brightness(test::pixelAt(ahead, 48, 48)), 30);
+    EXPECT_GT(brightness(test::pixelAt(right, 60, 48)), 200);
+    EXPECT_LT(brightness(test::pixelAt(right, 36, 48)), 30);
+    savePbrOnFailure(right, "pbr-mirror-right");
 }
 
 TEST(PbrShadingApis, desktopAndEsAgreeOnTheFullModel) {
@@ -589,7 +576,7 @@ TEST(PbrShadingApis, desktopAndEsAgreeOnTheFullModel) {
     double sum = 0;
     for (std::size_t i = 0; i < gl.rgba.size(); ++i) sum += std::abs(int(gl.rgba[i]) - int(es.rgba[i]));
     EXPECT_LT(sum / static_cast<double>(gl.rgba.size()), 0.5);
-    EXPECT_GT(covered(es), 1000u);
+    EXPECT_GT(test::coveredPixels(es), 1000u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Apis, PbrShading, ::testing::Values(GlRequest::Gl33, GlRequest::Es3),

@@ -15,7 +15,7 @@ using arcomp::test::TempDir;
 
 namespace {
 
-const char* const kScene = R"(scene:
+const char* const kCloudScene = R"(scene:
   objects:
     - shape: box
 )";
@@ -24,14 +24,14 @@ const char* const kScene = R"(scene:
 
 TEST(PointCloudConfig, absentSectionAddsNoClouds) {
     TempDir dir;
-    EXPECT_TRUE(loadStationConfig(dir.write("a.yaml", kScene)).pointClouds.clouds.empty());
-    SceneFile f = loadSceneFile(dir.write("b.yaml", kScene));
+    EXPECT_TRUE(loadStationConfig(dir.write("a.yaml", kCloudScene)).pointClouds.clouds.empty());
+    SceneFile f = loadSceneFile(dir.write("b.yaml", kCloudScene));
     EXPECT_EQ(f.world.pointClouds.size(), 0u);
 }
 
 TEST(PointCloudConfig, treeEntryBecomesAPointCloudNodeWithItsLdis) {
     TempDir dir;
-    SceneFile f = loadSceneFile(dir.write("a.yaml", std::string(kScene) + R"(point_clouds:
+    SceneFile f = loadSceneFile(dir.write("a.yaml", std::string(kCloudScene) + R"(point_clouds:
   - name: oak
     seed: 3
     resolution: 40
@@ -55,7 +55,7 @@ TEST(PointCloudConfig, treeEntryBecomesAPointCloudNodeWithItsLdis) {
 
 TEST(PointCloudConfig, badValuesAndUnknownKeysAreReportedWithTheirLine) {
     TempDir dir;
-    const auto file = dir.write("a.yaml", std::string(kScene) + R"(point_clouds:
+    const auto file = dir.write("a.yaml", std::string(kCloudScene) + R"(point_clouds:
   - ldis: 0
     source: mesh
     colour: red
@@ -74,7 +74,7 @@ TEST(PointCloudConfig, badValuesAndUnknownKeysAreReportedWithTheirLine) {
 TEST(PointCloudConfig, unreadableVoxelFileIsAWarningNotAFailure) {
     TempDir dir;
     dir.write("broken.arvox", "not a voxel file");
-    SceneFile f = loadSceneFile(dir.write("a.yaml", std::string(kScene) + R"(point_clouds:
+    SceneFile f = loadSceneFile(dir.write("a.yaml", std::string(kCloudScene) + R"(point_clouds:
   - name: broken
     source: voxels
     voxels: broken.arvox

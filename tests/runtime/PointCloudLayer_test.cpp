@@ -21,7 +21,7 @@ struct Renders {
     Image cgOnly, cloudsOnly, both;
 };
 
-glm::ivec4 at(const Image& img, glm::ivec2 p) {
+glm::ivec4 cloudPixelAt(const Image& img, glm::ivec2 p) {
     const std::size_t i =
         (static_cast<std::size_t>(p.y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(p.x)) * 4;
     return {img.rgba[i], img.rgba[i + 1], img.rgba[i + 2], img.rgba[i + 3]};
@@ -85,9 +85,9 @@ TEST_F(TranslucentTrees, configAddsBothCloudsAndTheLayerDrawsThem) {
 TEST_F(TranslucentTrees, boxInFrontHidesTheTrunk) {
     std::size_t overCloud = 0;
     for (glm::ivec2 p : pixelsAround(*file_->camera, {0.0f, 0.45f, 1.0f}, 0.15f)) {
-        if (at(renders_->cloudsOnly, p).a == 0) continue;
+        if (cloudPixelAt(renders_->cloudsOnly, p).a == 0) continue;
         ++overCloud;
-        EXPECT_EQ(at(renders_->both, p), at(renders_->cgOnly, p)) << "at " << p.x << "," << p.y;
+        EXPECT_EQ(cloudPixelAt(renders_->both, p), cloudPixelAt(renders_->cgOnly, p)) << "at " << p.x << "," << p.y;
     }
     EXPECT_GT(overCloud, 20u) << "the trunk must lie behind the box for this test to mean anything";
 }
@@ -95,8 +95,8 @@ TEST_F(TranslucentTrees, boxInFrontHidesTheTrunk) {
 TEST_F(TranslucentTrees, ballBehindTheCrownShowsThroughTheLeaves) {
     std::size_t blended = 0;
     for (glm::ivec2 p : pixelsAround(*file_->camera, {0.1f, 1.75f, -1.4f}, 0.3f)) {
-        const glm::ivec4 cloud = at(renders_->cloudsOnly, p), ball = at(renders_->cgOnly, p),
-                         both = at(renders_->both, p);
+        const glm::ivec4 cloud = cloudPixelAt(renders_->cloudsOnly, p), ball = cloudPixelAt(renders_->cgOnly, p),
+                         both = cloudPixelAt(renders_->both, p);
         if (cloud.a < 20 || cloud.a > 235) continue;  // translucent layer pixels only
         ++blended;
         // Not the ball alone, not the cloud alone: the cloud over the ball.

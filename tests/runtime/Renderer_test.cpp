@@ -6,6 +6,7 @@
 #include "runtime/gl/RenderTarget.hpp"
 #include "runtime/render/Renderer.hpp"
 #include "runtime/station/ImageFile.hpp"
+#include "tests/support/ImagePixels.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -16,20 +17,8 @@ using namespace arcomp;
 
 namespace {
 
-struct Pixel {
-    int r, g, b, a;
-};
-
-Pixel at(const Image& img, int x, int y) {
-    const std::size_t i =
-        (static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(x)) * 4;
-    return {img.rgba[i], img.rgba[i + 1], img.rgba[i + 2], img.rgba[i + 3]};
-}
-
 double coverage(const Image& img) {
-    std::size_t covered = 0;
-    for (std::size_t i = 3; i < img.rgba.size(); i += 4) covered += img.rgba[i] > 0;
-    return static_cast<double>(covered) / static_cast<double>(img.width * img.height);
+    return static_cast<double>(test::coveredPixels(img)) / static_cast<double>(img.width * img.height);
 }
 
 // Mean absolute difference per channel, 0..255.
@@ -81,15 +70,15 @@ class RendererOnEachApi : public ::testing::TestWithParam<GlRequest> {};
 
 TEST_P(RendererOnEachApi, drawsObjectsWhereTheyStandInTheirColours) {
     const Image img = renderTestScene(GetParam(), Shading::Phong);
-    const Pixel corner = at(img, 2, 2);
+    const test::Pixel corner = test::pixelAt(img, 2, 2);
     EXPECT_EQ(corner.a, 0) << "background stays transparent";
-    const Pixel box = at(img, 320 / 2 - 55, 120);
+    const test::Pixel box = test::pixelAt(img, 320 / 2 - 55, 120);
     EXPECT_EQ(box.a, 255);
     // Beside its colour, a dielectric reflects about 4% of the (grey) studio
     // in every channel: sRGB 30-40 where it has none of its own.
     EXPECT_GT(box.r, 100);
     EXPECT_LT(box.g, 45);
-    const Pixel sphere = at(img, 320 / 2 + 55, 120);
+    const test::Pixel sphere = test::pixelAt(img, 320 / 2 + 55, 120);
     EXPECT_EQ(sphere.a, 255);
     EXPECT_GT(sphere.g, 100);
     EXPECT_LT(sphere.r, 45);
@@ -109,7 +98,7 @@ TEST_P(RendererOnEachApi, eachShadingLevelGivesADifferentImageWithTheSameCoverag
             EXPECT_GT(meanDifference(images[i], images[j]), 0.05) << "levels " << i << " and " << j << " look the same";
     }
     // Unlit shows the base colour itself: full red on the box.
-    EXPECT_EQ(at(images[0], 320 / 2 - 55, 120).r, 255);
+    EXPECT_EQ(test::pixelAt(images[0], 320 / 2 - 55, 120).r, 255);
 }
 
 INSTANTIATE_TEST_SUITE_P(Apis, RendererOnEachApi, ::testing::Values(GlRequest::Gl33, GlRequest::Es3),

@@ -12,6 +12,7 @@
 
 #include "../support/GltfFile.hpp"
 #include "../support/TempDir.hpp"
+#include "tests/support/ImagePixels.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,7 +22,7 @@ using arcomp::test::TempDir;
 
 namespace {
 
-constexpr glm::ivec2 kSize{64, 64};
+constexpr glm::ivec2 kHoldoutSize{64, 64};
 
 // The support file's triangle, wholly on joint "bone" (a child of the mesh
 // node), which the clip "slide" moves 2 units along x over 1 s.
@@ -42,16 +43,10 @@ std::string slidingSkinnedTriangle() {
 }
 
 // Where something was drawn: the holdout's material is not the CG's.
-std::vector<bool> covered(const Image& img) {
+std::vector<bool> coverMask(const Image& img) {
     std::vector<bool> out;
     for (std::size_t i = 3; i < img.rgba.size(); i += 4) out.push_back(img.rgba[i] > 0);
     return out;
-}
-
-std::size_t coverage(const Image& img) {
-    std::size_t n = 0;
-    for (std::size_t i = 3; i < img.rgba.size(); i += 4) n += img.rgba[i] > 0;
-    return n;
 }
 
 class SkinnedHoldout : public ::testing::TestWithParam<GlRequest> {};
@@ -65,12 +60,12 @@ TEST_P(SkinnedHoldout, theHoldoutCoversWhatThePosedCgCovers) {
     world.animations.push_back(
         {.player = AnimationPlayer(model.animations.at(0), {.loop = false}), .node = model.root});
     world.scene.update();
-    const View view = View::lookAt({1.5f, 0.5f, 4.0f}, {1.5f, 0.5f, 0.0f}, {0, 1, 0}, 60.0f, kSize);
+    const View view = View::lookAt({1.5f, 0.5f, 4.0f}, {1.5f, 0.5f, 0.0f}, {0, 1, 0}, 60.0f, kHoldoutSize);
     bakeHoldouts(world, view, CompositorConfig{}, {}, {});
 
     auto ctx = HeadlessContext::create(GetParam());
     Renderer renderer;
-    RenderTarget target(kSize);
+    RenderTarget target(kHoldoutSize);
     const RenderSettings coverageOnly{.coverageOnly = true};
     const auto drawAt = [&](double seconds, bool holdout) {
         animateObjects(world, seconds);
@@ -89,12 +84,12 @@ TEST_P(SkinnedHoldout, theHoldoutCoversWhatThePosedCgCovers) {
     };
     const Image cgStart = drawAt(0.0, false), holdoutStart = drawAt(0.0, true);
     const Image cgEnd = drawAt(1.0, false), holdoutEnd = drawAt(1.0, true);
-    EXPECT_GT(coverage(cgStart), 50u);
-    EXPECT_EQ(covered(holdoutStart), covered(cgStart))
-        << "at rest: " << coverage(holdoutStart) << " vs " << coverage(cgStart);
-    EXPECT_EQ(covered(holdoutEnd), covered(cgEnd))
-        << "slid by the bone: " << coverage(holdoutEnd) << " vs " << coverage(cgEnd);
-    EXPECT_NE(covered(cgEnd), covered(cgStart)) << "the bone did not move the triangle";
+    EXPECT_GT(test::coveredPixels(cgStart), 50u);
+    EXPECT_EQ(coverMask(holdoutStart), coverMask(cgStart))
+        << "at rest: " << test::coveredPixels(holdoutStart) << " vs " << test::coveredPixels(cgStart);
+    EXPECT_EQ(coverMask(holdoutEnd), coverMask(cgEnd))
+        << "slid by the bone: " << test::coveredPixels(holdoutEnd) << " vs " << test::coveredPixels(cgEnd);
+    EXPECT_NE(coverMask(cgEnd), coverMask(cgStart)) << "the bone did not move the triangle";
     if (HasFailure()) {
         const std::string api = GetParam() == GlRequest::Es3 ? "-es3" : "-gl33";
         writePng(std::string(ARCOMP_TEST_OUTPUT) + "/skinned-holdout-cg" + api + ".png", cgEnd);

@@ -17,7 +17,7 @@ using namespace arcomp;
 
 namespace {
 
-constexpr glm::ivec2 kSize{64, 64};
+constexpr glm::ivec2 kShadedSize{64, 64};
 
 // A unit square facing +Z, seen from +X once turned a quarter about Y.
 Geometry square() {
@@ -52,8 +52,8 @@ Image render(GlRequest api, Shading shading, bool skinned) {
         scene.addMesh(scene.addTransform(scene.root(), kQuarterTurn), {scene.addGeometry(square()), material});
     }
     scene.update();
-    const View view = View::lookAt({4.0f, 0, 0}, {0, 0, 0}, {0, 1, 0}, 45.0f, kSize);
-    RenderTarget target(kSize);
+    const View view = View::lookAt({4.0f, 0, 0}, {0, 0, 0}, {0, 1, 0}, 45.0f, kShadedSize);
+    RenderTarget target(kShadedSize);
     target.bind();
     Renderer renderer;
     DrawList list;
@@ -68,7 +68,8 @@ TEST_P(SkinnedShading, aSquareTurnedByItsJointIsLitAsOneTurnedByItsNode) {
     for (const Shading shading : {Shading::Flat, Shading::Gouraud, Shading::Phong}) {
         const Image rigid = render(GetParam(), shading, false);
         const Image skinned = render(GetParam(), shading, true);
-        const std::size_t centre = (static_cast<std::size_t>(kSize.y / 2) * kSize.x + kSize.x / 2) * 4;
+        const std::size_t centre =
+            (static_cast<std::size_t>(kShadedSize.y / 2) * kShadedSize.x + kShadedSize.x / 2) * 4;
         ASSERT_GT(rigid.rgba[centre + 3], 0) << "the turned square faces the camera";
         int worst = 0;
         for (std::size_t i = 0; i < rigid.rgba.size(); ++i)

@@ -33,7 +33,7 @@ private:
     int left_;
 };
 
-const char* const kStation = R"(scene:
+const char* const kRunnerStation = R"(scene:
   objects:
     - shape: box
       position: [0, 0, -4]
@@ -53,7 +53,7 @@ StationConfig withStatus(const fs::path& file) {
 TEST(StationRunner, cameraFaultShowsInStatusAndMetrics) {
     auto ctx = HeadlessContext::create(GlRequest::Auto);
     test::TempDir dir;
-    StationRunner runner(withStatus(dir.write("station.yaml", kStation)), nullptr, [](const StationConfig&) {
+    StationRunner runner(withStatus(dir.write("station.yaml", kRunnerStation)), nullptr, [](const StationConfig&) {
         return StationInput::fromReplay(std::make_unique<FailingCamera>(3), 30.0);
     });
     ASSERT_GT(runner.statusPort(), 0);
@@ -82,7 +82,7 @@ TEST(StationRunner, aStatusPortAlreadyInUseIsReportedAndFramesGoOnWithoutTheEndp
     test::TempDir dir;
     StationMetrics otherMetrics;
     StatusServer squatter(otherMetrics, {.bind = "127.0.0.1", .port = 0});
-    StationConfig cfg = withStatus(dir.write("station.yaml", kStation));
+    StationConfig cfg = withStatus(dir.write("station.yaml", kRunnerStation));
     cfg.operation.status.port = squatter.port();
     StationRunner runner(std::move(cfg), nullptr, [](const StationConfig&) {
         return StationInput::fromReplay(std::make_unique<FailingCamera>(4), 30.0);
@@ -97,7 +97,7 @@ TEST(StationRunner, aStatusPortAlreadyInUseIsReportedAndFramesGoOnWithoutTheEndp
 TEST(StationRunner, reloadSwapsTheSceneAtAFrameBoundaryAndKeepsTheInput) {
     auto ctx = HeadlessContext::create(GlRequest::Auto);
     test::TempDir dir;
-    const fs::path file = dir.write("station.yaml", kStation);
+    const fs::path file = dir.write("station.yaml", kRunnerStation);
     int opened = 0;
     StationRunner runner(loadStationConfig(file), nullptr, [&opened](const StationConfig&) {
         ++opened;
@@ -114,7 +114,7 @@ TEST(StationRunner, reloadSwapsTheSceneAtAFrameBoundaryAndKeepsTheInput) {
     const glm::ivec3 red = centre();
     EXPECT_GT(red.r, 2 * red.g) << "the box is red before the reload";
 
-    std::string blue = kStation;
+    std::string blue = kRunnerStation;
     blue.replace(blue.find("[0.9, 0.1, 0.1, 1]"), 18, "[0.1, 0.1, 0.9, 1]");
     dir.write("station.yaml", blue);
     requestReload();
@@ -138,7 +138,7 @@ TEST(StationRunner, reloadSwapsTheSceneAtAFrameBoundaryAndKeepsTheInput) {
 TEST(StationRunner, commandLineOverridesSurviveAReload) {
     auto ctx = HeadlessContext::create(GlRequest::Auto);
     test::TempDir dir;
-    const fs::path file = dir.write("station.yaml", std::string(kStation) + "video: {source: pattern}\n");
+    const fs::path file = dir.write("station.yaml", std::string(kRunnerStation) + "video: {source: pattern}\n");
     int opened = 0;
     std::vector<std::string> openedPaths;
     StationRunner runner(
@@ -191,7 +191,7 @@ camera: {eye: [0, 0, 0], target: [0, 0, -1]}
 TEST(StationRunner, anOutputThatCannotBeWrittenIsCountedAndReportedWhileFramesGoOn) {
     auto ctx = HeadlessContext::create(GlRequest::Auto);
     test::TempDir dir;
-    StationConfig cfg = loadStationConfig(dir.write("station.yaml", kStation));
+    StationConfig cfg = loadStationConfig(dir.write("station.yaml", kRunnerStation));
     cfg.compositing.output.pngDir = dir.write("blocked", "a file where the output folder should be");
     StationRunner runner(cfg, nullptr, [](const StationConfig&) {
         return StationInput::fromReplay(std::make_unique<FailingCamera>(5), 30.0);

@@ -11,6 +11,7 @@
 #include "runtime/station/ReplayInput.hpp"
 #include "runtime/station/SceneFile.hpp"
 #include "runtime/station/Station.hpp"
+#include "tests/support/OpencvVideos.hpp"
 #include "tests/support/TempDir.hpp"
 #include "video/sources/FileSource.hpp"
 #include "video/sources/TestPatternSource.hpp"
@@ -28,8 +29,6 @@ using namespace arcomp;
 namespace fs = std::filesystem;
 
 namespace {
-
-const char* const kVtest = "/usr/share/doc/opencv-doc/examples/data/vtest.avi";
 
 StationConfig demoConfig() {
     StationConfig cfg = loadStationConfig(fs::path(ARCOMP_SOURCE_DIR) / "configs/demo-replay.yaml");
@@ -103,11 +102,12 @@ int maxDifference(const cv::Mat& a, const cv::Mat& b, const cv::Mat& mask) {
 // than their own feet, the same object stands in front of some walkers and
 // behind others, and the objects' shadows only darken the video.
 TEST(Station, vtestWalkersAreCutOnlyByObjectsNearerThanThemselves) {
-    if (!fs::exists(kVtest)) GTEST_SKIP() << kVtest << " absent (opencv-doc not installed)";
+    if (!fs::exists(test::kVtest)) GTEST_SKIP() << test::kVtest << " absent (opencv-doc not installed)";
     auto ctx = HeadlessContext::create(GlRequest::Auto);
     const StationConfig cfg = demoConfig();
-    Station station(cfg, StationInput::fromReplay(std::make_unique<FileSource>(FileOptions{.path = kVtest}), 10.0));
-    FileSource reference(FileOptions{.path = kVtest});
+    Station station(cfg,
+                    StationInput::fromReplay(std::make_unique<FileSource>(FileOptions{.path = test::kVtest}), 10.0));
+    FileSource reference(FileOptions{.path = test::kVtest});
     const View view = station.view();
 
     const cv::Mat cg = bgrOf(renderObjects(cfg, {0, 1, 2, 3}, view, cfg.render.shading));

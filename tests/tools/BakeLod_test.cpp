@@ -16,7 +16,7 @@ namespace {
 using arcomp::test::lastLine;
 
 // Only stdout: the JSON or summary the command prints.
-arcomp::test::ShellResult run(const std::string& args) { return arcomp::test::arcompCommand(args, false); }
+arcomp::test::ShellResult arcompRun(const std::string& args) { return arcomp::test::arcompCommand(args, false); }
 
 }  // namespace
 
@@ -25,7 +25,7 @@ TEST(BakeLod, bunnyLevelsWithinTenPercentAndFileReadsBack) {
     if (!std::filesystem::exists(bunny)) GTEST_SKIP() << "no shared data";
     const std::filesystem::path out = std::filesystem::path(ARCOMP_TEST_OUTPUT) / "bunny.lod";
     std::filesystem::create_directories(out.parent_path());
-    const auto r = run("bake lod " + bunny + " --ratios 1,0.25,0.05 --out " + out.string());
+    const auto r = arcompRun("bake lod " + bunny + " --ratios 1,0.25,0.05 --out " + out.string());
     ASSERT_EQ(r.code, 0) << r.out;
     EXPECT_NE(r.out.find("\"all_within_10_percent\":true"), std::string::npos) << r.out;
     const std::vector<arcomp::LodLevel> levels = arcomp::readLodFile(out);
@@ -34,8 +34,8 @@ TEST(BakeLod, bunnyLevelsWithinTenPercentAndFileReadsBack) {
 }
 
 TEST(BakeLod, badRatiosAreBadInput) {
-    EXPECT_EQ(run("bake lod /nonexistent.obj --ratios 1,2").code, 2);
-    EXPECT_EQ(run("bake lod /nonexistent.obj --ratios 1,0.5").code, 2);
+    EXPECT_EQ(arcompRun("bake lod /nonexistent.obj --ratios 1,2").code, 2);
+    EXPECT_EQ(arcompRun("bake lod /nonexistent.obj --ratios 1,0.5").code, 2);
 }
 
 TEST(BakeLod, mergedTangentsKeepTheirFrameUnderAMirroringNode) {
@@ -47,7 +47,8 @@ TEST(BakeLod, mergedTangentsKeepTheirFrameUnderAMirroringNode) {
     q.sceneNodes = "[0, 1]";
     arcomp::test::TempDir dir;
     const auto out = dir.path() / "quads.lod";
-    const auto r = run("bake lod " + dir.write("quads.gltf", q.json()).string() + " --ratios 1 --out " + out.string());
+    const auto r =
+        arcompRun("bake lod " + dir.write("quads.gltf", q.json()).string() + " --ratios 1 --out " + out.string());
     ASSERT_EQ(r.code, 0) << r.out;
     const arcomp::Geometry g = arcomp::readLodFile(out).at(0).geometry;
     ASSERT_EQ(g.tangents.size(), 8u);

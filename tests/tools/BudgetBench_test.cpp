@@ -15,7 +15,7 @@ namespace {
 using arcomp::test::lastLine;
 
 // Only stdout: the JSON or summary the command prints.
-arcomp::test::ShellResult run(const std::string& args) { return arcomp::test::benchCommand(args, false); }
+arcomp::test::ShellResult budgetBench(const std::string& args) { return arcomp::test::benchCommand(args, false); }
 
 // The text of `key`'s object, `"key":{...}` without nested objects.
 std::string object(const std::string& json, const std::string& key) {
@@ -44,8 +44,8 @@ std::size_t lines(const std::filesystem::path& file) {
 TEST(BudgetBench, tinyFlightWritesJsonWithTheIssuesFieldsAndCsvAndPlots) {
     const std::filesystem::path out = std::filesystem::path(ARCOMP_TEST_OUTPUT) / "bench-budget-tiny";
     std::filesystem::remove_all(out);
-    const auto r =
-        run("budget --frames 8 --size 160x90 --mountains 6 --scene-frames 4 --target-ms 5 --out " + out.string());
+    const auto r = budgetBench("budget --frames 8 --size 160x90 --mountains 6 --scene-frames 4 --target-ms 5 --out " +
+                               out.string());
     ASSERT_EQ(r.code, 0) << r.out;
     const std::string json = lastLine(r.out);
     ASSERT_EQ(json.front(), '{') << json;
@@ -75,11 +75,12 @@ TEST(BudgetBench, tinyFlightWritesJsonWithTheIssuesFieldsAndCsvAndPlots) {
 }
 
 TEST(BudgetBench, badOptionsAreBadInput) {
-    EXPECT_EQ(run("budget --frames 1 --out " + std::string(ARCOMP_TEST_OUTPUT) + "/bench-budget-bad").code, 2);
-    EXPECT_EQ(run("budget --timer sundial --out " + std::string(ARCOMP_TEST_OUTPUT) + "/bench-budget-bad").code, 2);
+    EXPECT_EQ(budgetBench("budget --frames 1 --out " + std::string(ARCOMP_TEST_OUTPUT) + "/bench-budget-bad").code, 2);
+    EXPECT_EQ(budgetBench("budget --timer sundial --out " + std::string(ARCOMP_TEST_OUTPUT) + "/bench-budget-bad").code,
+              2);
     for (const char* threads : {"-2", "65", "two"})
-        EXPECT_EQ(run(std::string("budget --raster-threads ") + threads + " --out " + ARCOMP_TEST_OUTPUT +
-                      "/bench-budget-bad")
+        EXPECT_EQ(budgetBench(std::string("budget --raster-threads ") + threads + " --out " + ARCOMP_TEST_OUTPUT +
+                              "/bench-budget-bad")
                       .code,
                   2)
             << threads;
@@ -88,15 +89,15 @@ TEST(BudgetBench, badOptionsAreBadInput) {
 TEST(BudgetBench, cpuTimerIsTheOneTheRunUsesAndReports) {
     const std::filesystem::path out = std::filesystem::path(ARCOMP_TEST_OUTPUT) / "bench-budget-cpu";
     const auto r =
-        run("budget --timer cpu --frames 4 --size 160x90 --mountains 4 --scene-frames 2 --target-ms 5 --out " +
-            out.string());
+        budgetBench("budget --timer cpu --frames 4 --size 160x90 --mountains 4 --scene-frames 2 --target-ms 5 --out " +
+                    out.string());
     ASSERT_EQ(r.code, 0) << r.out;
     EXPECT_NE(lastLine(r.out).find("\"timer\":\"process_cpu_glfinish\""), std::string::npos) << r.out;
 }
 
 TEST(BudgetBench, defaultTargetLiesUnderTheUnmanagedRunsFastestFrameAndNotUnderTheFloor) {
     const std::filesystem::path out = std::filesystem::path(ARCOMP_TEST_OUTPUT) / "bench-budget-default-target";
-    const auto r = run("budget --frames 6 --size 160x90 --mountains 6 --scene-frames 4 --out " + out.string());
+    const auto r = budgetBench("budget --frames 6 --size 160x90 --mountains 6 --scene-frames 4 --out " + out.string());
     ASSERT_EQ(r.code, 0) << r.out;
     const std::string json = lastLine(r.out);
     const double target = number(json, "target_ms"), floor = number(json, "floor_ms_max_estimate");

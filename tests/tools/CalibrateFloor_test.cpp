@@ -41,7 +41,7 @@ std::string pointsSeenBy(const CalibratedCamera& c, const std::vector<glm::dvec2
     return text;
 }
 
-test::ShellResult calibrate(const std::string& args) { return test::arcompCommand("calibrate floor " + args); }
+test::ShellResult calibrateFloor(const std::string& args) { return test::arcompCommand("calibrate floor " + args); }
 
 // A 50 degree lens 3 m above the floor at x = 0.4, looking along -z and 40
 // degrees down at the floor's origin, where marker 7 (0.5 m) lies; marker 3
@@ -66,8 +66,8 @@ TEST(CalibrateFloor, sixFloorMarksGiveBackTheCameraThatSawThem) {
     const CalibratedCamera truth = trueCamera();
     const std::string points = pointsSeenBy(truth, {{-2, 0}, {3, 0}, {-2, 4}, {3, 4}, {0, 7}, {1, 2}});
     const auto out = dir.path() / "camera.yaml";
-    const auto r = calibrate(image.string() + " --fovy-deg 60 --points \"" + points + "\" --out " + out.string() +
-                             " --preview " + (dir.path() / "preview.png").string());
+    const auto r = calibrateFloor(image.string() + " --fovy-deg 60 --points \"" + points + "\" --out " + out.string() +
+                                  " --preview " + (dir.path() / "preview.png").string());
     ASSERT_EQ(r.code, 0) << r.out;
     EXPECT_NE(r.out.find("4.20 m above the floor"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("tilted 25.0 degrees down"), std::string::npos) << r.out;
@@ -96,8 +96,8 @@ TEST_P(CalibrateFloorRefuses, withExitTwoAndTheReason) {
     TempDir dir;
     const auto image = dir.path() / "plate.png";
     cv::imwrite(image.string(), cv::Mat(480, 640, CV_8UC3, cv::Scalar::all(0)));
-    const auto r = calibrate(image.string() + " " + GetParam().lens + " --points \"" + GetParam().points + "\" --out " +
-                             (dir.path() / "camera.yaml").string());
+    const auto r = calibrateFloor(image.string() + " " + GetParam().lens + " --points \"" + GetParam().points +
+                                  "\" --out " + (dir.path() / "camera.yaml").string());
     EXPECT_EQ(r.code, 2) << r.out;
     EXPECT_NE(r.out.find(GetParam().expected), std::string::npos) << r.out;
     EXPECT_FALSE(std::filesystem::exists(dir.path() / "camera.yaml"));
@@ -118,8 +118,8 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(CalibrateFloor, anImageThatIsNotOneIsRefused) {
     TempDir dir;
-    const auto r = calibrate(dir.write("plate.png", "not a picture").string() +
-                             " --fovy-deg 60 --points \"1,1=0,0\" --out " + (dir.path() / "c.yaml").string());
+    const auto r = calibrateFloor(dir.write("plate.png", "not a picture").string() +
+                                  " --fovy-deg 60 --points \"1,1=0,0\" --out " + (dir.path() / "c.yaml").string());
     EXPECT_EQ(r.code, 2) << r.out;
     EXPECT_NE(r.out.find("neither an image nor a video"), std::string::npos) << r.out;
 }
@@ -129,7 +129,7 @@ TEST(CalibrateFloor, aMarkerOnTheFloorIsItsOriginAndGivesTheCameraOverIt) {
     const auto image = dir.path() / "plate.png";
     ASSERT_TRUE(cv::imwrite(image.string(), floorPhoto({{7, 0.0, 0.0}, {3, 1.0, 0.6}})));
     const auto out = dir.path() / "camera.yaml";
-    const auto r = calibrate(image.string() + " --fovy-deg 50 --marker 7 --marker-size 0.5 --out " + out.string());
+    const auto r = calibrateFloor(image.string() + " --fovy-deg 50 --marker 7 --marker-size 0.5 --out " + out.string());
     ASSERT_EQ(r.code, 0) << r.out;
     EXPECT_NE(r.out.find("floor: the corners of DICT_4X4_50 marker 7 (0.5 m)"), std::string::npos) << r.out;
 
@@ -147,8 +147,8 @@ TEST(CalibrateFloor, aMarkerTooSmallInThePictureToPlaceTheCameraWellIsWarnedAbou
     TempDir dir;
     const auto image = dir.path() / "plate.png";
     ASSERT_TRUE(cv::imwrite(image.string(), floorPhoto({{7, 0.0, 0.0}}, 0.2)));
-    const auto r = calibrate(image.string() + " --fovy-deg 50 --marker 7 --marker-size 0.2 --out " +
-                             (dir.path() / "c.yaml").string());
+    const auto r = calibrateFloor(image.string() + " --fovy-deg 50 --marker 7 --marker-size 0.2 --out " +
+                                  (dir.path() / "c.yaml").string());
     EXPECT_EQ(r.code, 0) << r.out;
     EXPECT_NE(r.out.find("warning: marker 7 spans only"), std::string::npos) << r.out;
 }
@@ -166,8 +166,8 @@ TEST_P(CalibrateFloorByMarkerRefuses, withExitTwoAndTheReason) {
     TempDir dir;
     const auto image = dir.path() / "plate.png";
     ASSERT_TRUE(cv::imwrite(image.string(), floorPhoto({{3, 0.0, 0.0}, {12, 1.0, 0.6}})));
-    const auto r = calibrate(image.string() + " --fovy-deg 50 " + GetParam().args + " --out " +
-                             (dir.path() / "camera.yaml").string());
+    const auto r = calibrateFloor(image.string() + " --fovy-deg 50 " + GetParam().args + " --out " +
+                                  (dir.path() / "camera.yaml").string());
     EXPECT_EQ(r.code, 2) << r.out;
     EXPECT_NE(r.out.find(std::string("arcomp calibrate floor: ") + GetParam().expected), std::string::npos) << r.out;
     EXPECT_FALSE(std::filesystem::exists(dir.path() / "camera.yaml"));

@@ -82,7 +82,9 @@ void writeChessboardPhotos(const std::filesystem::path& folder, int count, doubl
     }
 }
 
-test::ShellResult calibrate(const std::string& args) { return test::arcompCommand("calibrate intrinsics " + args); }
+test::ShellResult calibrateIntrinsics(const std::string& args) {
+    return test::arcompCommand("calibrate intrinsics " + args);
+}
 
 // The reprojection error the command printed, or -1.
 double printedRms(const std::string& out) {
@@ -118,8 +120,8 @@ TEST(CalibrateIntrinsics, chessboardPhotosInAFolderGiveBackTheLens) {
     TempDir dir;
     writeChessboardPhotos(dir.path() / "views", 12);
     const auto lens = dir.path() / "lens.yaml";
-    const auto r = calibrate((dir.path() / "views").string() +
-                             " --board chessboard --cols 9 --rows 6 --square 0.025 --out " + lens.string());
+    const auto r = calibrateIntrinsics((dir.path() / "views").string() +
+                                       " --board chessboard --cols 9 --rows 6 --square 0.025 --out " + lens.string());
     expectTwelveViewsGaveTheLens(r, lens);
 }
 
@@ -138,9 +140,9 @@ TEST(CalibrateIntrinsics, charucoVideoGivesBackTheLensFromEvenlySpreadFrames) {
         }
     }
     const auto lens = dir.path() / "lens.yaml";
-    const auto r =
-        calibrate(video.string() + " --board charuco --cols 9 --rows 6 --square 0.025 --marker-length 0.018 " +
-                  "--max-views 12 --out " + lens.string());
+    const auto r = calibrateIntrinsics(video.string() +
+                                       " --board charuco --cols 9 --rows 6 --square 0.025 --marker-length 0.018 " +
+                                       "--max-views 12 --out " + lens.string());
     expectTwelveViewsGaveTheLens(r, lens);
 }
 
@@ -150,8 +152,8 @@ TEST(CalibrateIntrinsics, theLensFileIsWhatCalibrateFloorTakesAsItsIntrinsics) {
     TempDir dir;
     writeChessboardPhotos(dir.path() / "views", 12);
     const auto lens = dir.path() / "lens.yaml";
-    const auto r = calibrate((dir.path() / "views").string() +
-                             " --board chessboard --cols 9 --rows 6 --square 0.025 --out " + lens.string());
+    const auto r = calibrateIntrinsics((dir.path() / "views").string() +
+                                       " --board chessboard --cols 9 --rows 6 --square 0.025 --out " + lens.string());
     ASSERT_EQ(r.code, 0) << r.out;
 
     // 2.5 m up at the floor's origin's x, 45 degrees down; a 0.5 m marker at the origin.
@@ -196,7 +198,8 @@ TEST_P(CalibrateIntrinsicsRefuses, withExitTwoAndTheReason) {
     case Pictures::ThreeViews: writeChessboardPhotos(views, 3); break;
     case Pictures::FarBoard: writeChessboardPhotos(views, 6, 2.8); break;
     }
-    const auto r = calibrate(views.string() + " " + GetParam().args + " --out " + (dir.path() / "lens.yaml").string());
+    const auto r =
+        calibrateIntrinsics(views.string() + " " + GetParam().args + " --out " + (dir.path() / "lens.yaml").string());
     EXPECT_EQ(r.code, 2) << r.out;
     EXPECT_EQ(r.out.rfind("arcomp calibrate intrinsics: ", 0), 0u) << r.out;
     EXPECT_NE(r.out.find(GetParam().expected), std::string::npos) << r.out;

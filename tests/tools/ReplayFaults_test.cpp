@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* const kStation = arcomp::test::kBoxStation;
+const char* const kFaultStation = arcomp::test::kBoxStation;
 
 // `flat` frames of one grey (their PNGs are a few kB), then `noisy` frames
 // of random pixels (their PNGs are tens of kB).
@@ -59,7 +59,7 @@ Written writtenIn(const fs::path& dir) {
 TEST(ReplayFaults, diskFullIsReportedTheReplayGoesOnAndWrittenFramesStayReadable) {
     TempDir dir;
     const fs::path clip = writeClip(dir.path() / "clip.avi", 6, 6);
-    const fs::path station = dir.write("station.yaml", kStation);
+    const fs::path station = dir.write("station.yaml", kFaultStation);
     const fs::path out = dir.path() / "out";
     const ChildResult r = runChild({ARCOMP_BINARY, "replay", station.string(), "--video", clip.string(), "--out",
                                     out.string(), "--log-level", "error"},
@@ -80,7 +80,7 @@ TEST(ReplayFaults, videoCutOffMidReplayEndsCleanlyWithTheFramesBefore) {
     const fs::path clip = writeClip(dir.path() / "clip.avi", 40, 0);
     const auto size = fs::file_size(clip);
     fs::resize_file(clip, size * 6 / 10);
-    const fs::path station = dir.write("station.yaml", kStation);
+    const fs::path station = dir.write("station.yaml", kFaultStation);
     const fs::path out = dir.path() / "out";
     const ChildResult r = runChild({ARCOMP_BINARY, "replay", station.string(), "--video", clip.string(), "--out",
                                     out.string(), "--log-level", "error"});

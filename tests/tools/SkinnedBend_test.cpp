@@ -24,7 +24,7 @@ namespace {
 
 using test::TempDir;
 
-constexpr glm::ivec2 kSize{128, 128};
+constexpr glm::ivec2 kBendSize{128, 128};
 
 const FeatureModel& bendModel() {
     for (const FeatureModel& m : featureModels())
@@ -34,7 +34,7 @@ const FeatureModel& bendModel() {
 
 View bendView() {
     const FeatureCamera& c = bendModel().camera;
-    return View::lookAt(c.eye, c.target, {0, 1, 0}, c.fovyDegrees, kSize, c.near, c.far);
+    return View::lookAt(c.eye, c.target, {0, 1, 0}, c.fovyDegrees, kBendSize, c.near, c.far);
 }
 
 struct Bend {
@@ -57,7 +57,7 @@ struct Bend {
 
 Image draw(World& world, GlRequest api) {
     auto ctx = HeadlessContext::create(api);
-    RenderTarget target(kSize);
+    RenderTarget target(kBendSize);
     target.bind();
     Renderer renderer;
     DrawList list;
@@ -77,7 +77,7 @@ int channelDifference(const Image& a, const Image& b, std::size_t pixel) {
 // The image row where a point of the world lands.
 int rowOf(const glm::vec3& p) {
     const glm::vec4 clip = bendView().viewProjection() * glm::vec4(p, 1.0f);
-    return static_cast<int>((1.0f - (clip.y / clip.w * 0.5f + 0.5f)) * static_cast<float>(kSize.y));
+    return static_cast<int>((1.0f - (clip.y / clip.w * 0.5f + 0.5f)) * static_cast<float>(kBendSize.y));
 }
 
 class SkinnedBend : public ::testing::TestWithParam<GlRequest> {
@@ -112,7 +112,7 @@ TEST_P(SkinnedBend, atTimeZeroItIsTheBindPoseAndAtOneSecondOnlyTheUpperHalfHasMo
     const Image bent = draw(skinned.world, GetParam());
 
     std::size_t covered = 0, startOff = 0;
-    for (std::size_t p = 0; p < std::size_t(kSize.x * kSize.y); ++p) {
+    for (std::size_t p = 0; p < std::size_t(kBendSize.x * kBendSize.y); ++p) {
         covered += bind.rgba[p * 4 + 3] > 0;
         startOff += channelDifference(bind, start, p) > 2;
     }
@@ -126,9 +126,9 @@ TEST_P(SkinnedBend, atTimeZeroItIsTheBindPoseAndAtOneSecondOnlyTheUpperHalfHasMo
     ASSERT_LT(highTop, highBottom);
     ASSERT_LT(highBottom, lowTop);
     std::size_t lowChanged = 0, highChanged = 0;
-    for (int y = 0; y < kSize.y; ++y)
-        for (int x = 0; x < kSize.x; ++x) {
-            const auto p = std::size_t(y * kSize.x + x);
+    for (int y = 0; y < kBendSize.y; ++y)
+        for (int x = 0; x < kBendSize.x; ++x) {
+            const auto p = std::size_t(y * kBendSize.x + x);
             const bool changed = channelDifference(start, bent, p) > 2;
             if (y > lowTop + 1 && y <= lowBottom) lowChanged += changed;
             if (y >= highTop && y < highBottom - 1) highChanged += changed;

@@ -1,3 +1,4 @@
+#include "tests/support/MaskOverlap.hpp"
 #include "video/matte/BackgroundMatte.hpp"
 
 #include <gtest/gtest.h>
@@ -40,13 +41,6 @@ private:
     cv::Mat background_;
 };
 
-double iou(const cv::Mat& a, const cv::Mat& b) {
-    cv::Mat both, either;
-    cv::bitwise_and(a, b, both);
-    cv::bitwise_or(a, b, either);
-    return static_cast<double>(cv::countNonZero(both)) / static_cast<double>(cv::countNonZero(either));
-}
-
 class BackgroundMatteMethods : public ::testing::TestWithParam<BackgroundMethod> {};
 
 TEST_P(BackgroundMatteMethods, movingShapeOverStaticTextureIsFound) {
@@ -57,7 +51,7 @@ TEST_P(BackgroundMatteMethods, movingShapeOverStaticTextureIsFound) {
     for (int i = 0; i < 12; ++i) matte.apply(walker.frame(i, true, &truth), person);
     cv::Mat found;
     cv::threshold(alphaOf(person), found, 127, 255, cv::THRESH_BINARY);
-    EXPECT_GE(iou(found, truth), 0.85) << matte.name();
+    EXPECT_GE(arcomp::test::maskIou(found, truth), 0.85) << matte.name();
 }
 
 INSTANTIATE_TEST_SUITE_P(All, BackgroundMatteMethods,

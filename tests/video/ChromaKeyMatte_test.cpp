@@ -1,3 +1,4 @@
+#include "tests/support/MaskOverlap.hpp"
 #include "video/matte/ChromaKeyMatte.hpp"
 
 #include <gtest/gtest.h>
@@ -39,13 +40,6 @@ StudioFrame studioFrame(int w, int h) {
     return f;
 }
 
-double iou(const cv::Mat& a, const cv::Mat& b) {
-    cv::Mat both, either;
-    cv::bitwise_and(a, b, both);
-    cv::bitwise_or(a, b, either);
-    return static_cast<double>(cv::countNonZero(both)) / static_cast<double>(cv::countNonZero(either));
-}
-
 TEST(ChromaKeyMatte, knownShapeHasIouAtLeast098) {
     const StudioFrame f = studioFrame(640, 480);
     ChromaKeyMatte key({.keyBgr = {40, 180, 30}, .similarity = 0.08f, .smoothness = 0.06f, .spill = 0.1f});
@@ -54,7 +48,7 @@ TEST(ChromaKeyMatte, knownShapeHasIouAtLeast098) {
     ASSERT_EQ(person.type(), CV_8UC4);
     cv::Mat opaque;
     cv::threshold(alphaOf(person), opaque, 127, 255, cv::THRESH_BINARY);
-    EXPECT_GE(iou(opaque, f.truth), 0.98);
+    EXPECT_GE(arcomp::test::maskIou(opaque, f.truth), 0.98);
 }
 
 TEST(ChromaKeyMatte, keyedOutPixelsArePremultipliedToZero) {

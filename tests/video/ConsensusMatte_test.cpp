@@ -6,6 +6,7 @@
 
 #include "video/pixels/VideoError.hpp"
 
+#include "tests/support/MaskOverlap.hpp"
 #include "tests/support/TempDir.hpp"
 
 #include <gtest/gtest.h>
@@ -83,11 +84,6 @@ BackgroundSpec spec() {
 
 cv::Mat found(const cv::Mat& person) { return alphaOf(person) > 127; }
 
-double iou(const cv::Mat& a, const cv::Mat& b) {
-    const double either = cv::countNonZero(a | b);
-    return either > 0 ? cv::countNonZero(a & b) / either : 1.0;
-}
-
 // Pixels matted that are no person: the matte's false alarms.
 int falseAlarms(const cv::Mat& matted, const cv::Mat& truth) { return cv::countNonZero(matted & ~truth); }
 
@@ -115,7 +111,7 @@ TEST(ConsensusMatte, stillPersonIsStillMattedAfterSixtySeconds) {
     for (int x = 20; x < 160; x += 10) matte.apply(place.frame({{{x, 120}}}), person);
     const int stillFrames = static_cast<int>(60 * kFps);
     for (int i = 0; i < stillFrames; ++i) matte.apply(place.frame({{{160, 120}}}, &truth), person);
-    EXPECT_GE(iou(found(person), truth), 0.9);
+    EXPECT_GE(arcomp::test::maskIou(found(person), truth), 0.9);
 }
 
 TEST(ConsensusMatte, busStationsStandingPersonStaysMatted) {
@@ -152,7 +148,7 @@ TEST(ConsensusMatte, somethingLeftBehindJoinsTheBackgroundInTheEnd) {
     cv::Mat person, truth;
     for (int i = 0; i < 30; ++i) matte.apply(place.empty(), person);
     for (int i = 0; i < 10 * kFps; ++i) matte.apply(place.frame({{{80, 60}}}, &truth), person);
-    EXPECT_GE(iou(found(person), truth), 0.9) << "still matted before absorb_s";
+    EXPECT_GE(arcomp::test::maskIou(found(person), truth), 0.9) << "still matted before absorb_s";
     for (int i = 0; i < 60 * kFps; ++i) matte.apply(place.frame({{{80, 60}}}), person);
     EXPECT_LT(cv::countNonZero(found(person)), cv::countNonZero(truth) / 10) << "learnt well after absorb_s";
 }
@@ -167,7 +163,7 @@ TEST(ConsensusMatte, castShadowIsNotMattedButThePersonIs) {
         ASSERT_GT(cv::countNonZero(shadow), 500);
         const cv::Mat matted = found(person);
         EXPECT_LT(cv::countNonZero(matted & shadow), cv::countNonZero(shadow) / 20) << "darkening " << darkening;
-        EXPECT_GE(iou(matted, truth), 0.85) << "darkening " << darkening;
+        EXPECT_GE(arcomp::test::maskIou(matted, truth), 0.85) << "darkening " << darkening;
     }
 }
 
@@ -185,7 +181,7 @@ TEST(ConsensusMatte, globalLightChangeFloodsAtMostAFewFrames) {
     }
     EXPECT_LE(flooded, 3);
     EXPECT_GE(matte.model().lightChanges(), 1) << "corrected as a light change, not learnt pixel by pixel";
-    EXPECT_GE(iou(found(person), truth), 0.85);
+    EXPECT_GE(arcomp::test::maskIou(found(person), truth), 0.85);
 }
 
 TEST(ConsensusMatte, busySceneStartNeedsNoEmptyFrame) {
@@ -198,7 +194,7 @@ TEST(ConsensusMatte, busySceneStartNeedsNoEmptyFrame) {
         matte.apply(place.frame({{{x, 80}}, {{300 - x, 170}}}, &truth), person);
     }
     const cv::Mat matted = found(person);
-    EXPECT_GE(iou(matted, truth), 0.85);
+    EXPECT_GE(arcomp::test::maskIou(matted, truth), 0.85);
     EXPECT_LT(falseAlarms(matted, truth), 320 * 240 / 200) << "no ghosts where they walked during the warm-up";
 }
 
@@ -216,7 +212,7 @@ TEST(ConsensusMatte, someoneStandingThroughTheStartLeavesNoGhost) {
     // And a person who then comes to stand there is matted.
     for (int x = 20; x <= 100; x += 10) matte.apply(place.frame({{{x, 120}}}, &truth), person);
     for (int i = 0; i < 50; ++i) matte.apply(place.frame({{{100, 120}}}, &truth), person);
-    EXPECT_GE(iou(found(person), truth), 0.9);
+    EXPECT_GE(arcomp::test::maskIou(found(person), truth), 0.9);
 }
 
 TEST(ConsensusMatte, cleanPlateStartsTheModelAtOnce) {
@@ -230,7 +226,7 @@ TEST(ConsensusMatte, cleanPlateStartsTheModelAtOnce) {
     cv::Mat person, truth;
     // A person standing in view from the first frame: only the plate can tell.
     for (int i = 0; i < 40; ++i) matte.apply(place.frame({{{160, 120}}}, &truth), person);
-    EXPECT_GE(iou(found(person), truth), 0.9);
+    EXPECT_GE(arcomp::test::maskIou(found(person), truth), 0.9);
 }
 
 TEST(ConsensusMatte, edgeFollowsTheImageAtFullSize) {
@@ -245,7 +241,7 @@ TEST(ConsensusMatte, edgeFollowsTheImageAtFullSize) {
         cv::Mat person, truth;
         for (int i = 0; i < 30; ++i) matte.apply(place.empty(), person);
         for (int x = 40; x < 200; x += 12) matte.apply(place.frame({{{x, 120}}}, &truth), person);
-        return iou(found(person), truth);
+        return arcomp::test::maskIou(found(person), truth);
     };
     const double guided = outlineIou(BackgroundSpec{}.consensus.edgeRadiusPx), scaledUp = outlineIou(0);
     EXPECT_GT(guided, scaledUp);

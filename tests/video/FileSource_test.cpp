@@ -1,6 +1,7 @@
 #include "video/pixels/VideoError.hpp"
 #include "video/sources/FileSource.hpp"
 
+#include "tests/support/OpencvVideos.hpp"
 #include "tests/support/TempDir.hpp"
 
 #include <gtest/gtest.h>
@@ -15,15 +16,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kData = "/usr/share/doc/opencv-doc/examples/data/";
-const std::string kVtest = kData + "vtest.avi";
-
 #define REQUIRE_OPENCV_DOC()                                                                                           \
-    if (!fs::exists(kVtest)) GTEST_SKIP() << kVtest << " absent (Debian opencv-doc)"
+    if (!fs::exists(test::kVtest)) GTEST_SKIP() << test::kVtest << " absent (Debian opencv-doc)"
 
 fs::path truncatedCopy(const fs::path& folder, std::uintmax_t bytes) {
     const fs::path out = folder / ("vtest-" + std::to_string(bytes) + ".avi");
-    std::ifstream in(kVtest, std::ios::binary);
+    std::ifstream in(test::kVtest, std::ios::binary);
     std::string buf(bytes, '\0');
     in.read(buf.data(), static_cast<std::streamsize>(bytes));
     std::ofstream(out, std::ios::binary).write(buf.data(), static_cast<std::streamsize>(bytes));
@@ -43,7 +41,7 @@ std::string errorOf(const std::function<void()>& f) {
 
 TEST(FileSource, readsVtestInfoAndFirstFrame) {
     REQUIRE_OPENCV_DOC();
-    FileSource file({.path = kVtest});
+    FileSource file({.path = test::kVtest});
     EXPECT_EQ(file.info().width, 768);
     EXPECT_EQ(file.info().height, 576);
     EXPECT_DOUBLE_EQ(file.info().fps, 10.0);
@@ -60,10 +58,10 @@ TEST(FileSource, readsVtestInfoAndFirstFrame) {
 
 TEST(FileSource, pullModeIsBitIdenticalAcrossRunsAndSeeksAreFrameExact) {
     REQUIRE_OPENCV_DOC();
-    FileSource a({.path = kVtest});
+    FileSource a({.path = test::kVtest});
     std::vector<cv::Mat> firstRun;
     for (int i = 0; i < 12; ++i) firstRun.push_back(a.next()->image);
-    FileSource b({.path = kVtest});
+    FileSource b({.path = test::kVtest});
     for (int i = 0; i < 12; ++i) EXPECT_EQ(cv::norm(b.next()->image, firstRun[i], cv::NORM_INF), 0.0) << "frame " << i;
     EXPECT_GT(cv::norm(firstRun[0], firstRun[11], cv::NORM_L1), 0.0);  // people move: frames differ
     a.seek(7);
@@ -75,7 +73,7 @@ TEST(FileSource, pullModeIsBitIdenticalAcrossRunsAndSeeksAreFrameExact) {
 
 TEST(FileSource, readsEveryFrameThenEnds) {
     REQUIRE_OPENCV_DOC();
-    FileSource file({.path = kVtest});
+    FileSource file({.path = test::kVtest});
     int n = 0;
     while (file.next()) ++n;
     EXPECT_EQ(n, 795);
@@ -85,13 +83,13 @@ TEST(FileSource, readsEveryFrameThenEnds) {
 
 TEST(FileSource, loopsWithTimestampsThatKeepRising) {
     REQUIRE_OPENCV_DOC();
-    FileSource file({.path = kVtest, .loop = true});
+    FileSource file({.path = test::kVtest, .loop = true});
     file.seek(794);
     std::optional<Frame> last = file.next();
     std::optional<Frame> wrapped = file.next();
     ASSERT_TRUE(last && wrapped);
     EXPECT_EQ(wrapped->timestamp - last->timestamp, std::chrono::milliseconds(100));
-    FileSource fresh({.path = kVtest});
+    FileSource fresh({.path = test::kVtest});
     EXPECT_EQ(cv::norm(wrapped->image, fresh.next()->image, cv::NORM_INF), 0.0);
 }
 
@@ -113,7 +111,7 @@ TEST(FileSource, fileThatIsNotAVideoIsRefused) {
 TEST(FileSource, unsupportedCodecIsRefused) {
     REQUIRE_OPENCV_DOC();
     // vtest.avi with its codec tag rewritten to one no decoder knows.
-    std::ifstream in(kVtest, std::ios::binary);
+    std::ifstream in(test::kVtest, std::ios::binary);
     std::string bytes((std::istreambuf_iterator<char>(in)), {});
     int patched = 0;
     for (const char* tag : {"DIV3", "div3"})
@@ -166,7 +164,7 @@ TEST(FileSource, damagedMiddleIsSkippedAndLaterFramesStillCome) {
     REQUIRE_OPENCV_DOC();
     const test::TempDir tmp;
     const fs::path bad = tmp.path() / "vtest-damaged-middle.avi";
-    fs::copy_file(kVtest, bad, fs::copy_options::overwrite_existing);
+    fs::copy_file(test::kVtest, bad, fs::copy_options::overwrite_existing);
     {
         std::fstream f(bad, std::ios::in | std::ios::out | std::ios::binary);
         f.seekp(3'000'000);
@@ -190,7 +188,7 @@ TEST(FileSource, damagedMiddleIsSkippedAndLaterFramesStillCome) {
 }
 
 TEST(FileSource, megamindBugyPlaysWithoutCrashing) {
-    const std::string path = kData + "Megamind_bugy.avi";
+    const std::string path = test::kOpencvData + "Megamind_bugy.avi";
     if (!fs::exists(path)) GTEST_SKIP() << path << " absent";
     FileSource file({.path = path, .onDamage = OnDamage::Skip});
     int frames = 0;

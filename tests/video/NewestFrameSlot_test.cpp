@@ -6,7 +6,7 @@ using namespace arcomp;
 
 namespace {
 
-Frame frameOf(std::uint64_t seq, std::uint8_t grey) {
+Frame slotFrame(std::uint64_t seq, std::uint8_t grey) {
     return {cv::Mat(8, 8, CV_8UC3, cv::Scalar::all(grey)), {}, std::chrono::steady_clock::now(), seq, PixelFormat::Bgr};
 }
 
@@ -14,9 +14,9 @@ Frame frameOf(std::uint64_t seq, std::uint8_t grey) {
 
 TEST(NewestFrameSlot, overwritesUntakenFramesAndCountsDrops) {
     NewestFrameSlot slot;
-    slot.put(frameOf(0, 1));
-    slot.put(frameOf(1, 2));
-    slot.put(frameOf(2, 3));
+    slot.put(slotFrame(0, 1));
+    slot.put(slotFrame(1, 2));
+    slot.put(slotFrame(2, 3));
     std::optional<Frame> f = slot.take();
     ASSERT_TRUE(f);
     EXPECT_EQ(f->sequence, 2u);
