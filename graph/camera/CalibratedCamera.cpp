@@ -42,10 +42,14 @@ glm::dvec2 CalibratedCamera::project(const glm::dvec3& floorPoint) const {
     return {intrinsics.fx * p.x / p.z + intrinsics.cx, intrinsics.fy * p.y / p.z + intrinsics.cy};
 }
 
-std::optional<glm::dvec3> CalibratedCamera::floorPointAt(const glm::dvec2& pixel) const {
+glm::dvec3 CalibratedCamera::rayThrough(const glm::dvec2& pixel) const {
     const glm::dvec3 inCamera((pixel.x - intrinsics.cx) / intrinsics.fx, (pixel.y - intrinsics.cy) / intrinsics.fy,
                               1.0);
-    const glm::dvec3 direction = glm::transpose(rotation) * inCamera;
+    return glm::transpose(rotation) * inCamera;
+}
+
+std::optional<glm::dvec3> CalibratedCamera::floorPointAt(const glm::dvec2& pixel) const {
+    const glm::dvec3 direction = rayThrough(pixel);
     const glm::dvec3 origin = position();
     // Only a ray going down from above the floor meets it in front of the lens.
     if (origin.y <= 0.0 || direction.y >= -1e-9) return std::nullopt;

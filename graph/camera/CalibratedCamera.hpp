@@ -48,6 +48,9 @@ struct CalibratedCamera {
     // intrinsics.imageSize): where a person whose feet are at that pixel
     // stands. None when the pixel's ray misses the floor (at or above the horizon).
     std::optional<glm::dvec3> floorPointAt(const glm::dvec2& pixel) const;
+    // The direction, in the floor frame, of the ray from the lens centre
+    // through `pixel` (undistorted, at intrinsics.imageSize); not normalised.
+    glm::dvec3 rayThrough(const glm::dvec2& pixel) const;
     // Distance of a floor-frame point along the optical axis: the depth the
     // CG is compared with.
     double depthOf(const glm::dvec3& floorPoint) const;

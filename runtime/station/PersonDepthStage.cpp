@@ -1,5 +1,7 @@
 #include "runtime/station/PersonDepthStage.hpp"
 
+#include "runtime/people/FloorPeople.hpp"
+
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -45,7 +47,7 @@ glm::vec3 PersonDepthStage::cardThrough(const glm::dvec3& feet) const {
 }
 
 void PersonDepthStage::run(const cv::Mat& person, bool newFrame) {
-    if (!camera_ || (!newFrame && !alpha_.empty())) return;
+    if (!newFrame && !alpha_.empty()) return;
     CV_Assert(person.type() == CV_8UC4);
     // The alpha of every scale-th pixel: the tracking image, rounded up so
     // that every frame pixel has a tracking pixel.
@@ -56,14 +58,14 @@ void PersonDepthStage::run(const cv::Mat& person, bool newFrame) {
         for (int x = 0; x < alpha_.cols; ++x) out[x] = in[4 * std::min(x * scale_, person.cols - 1) + 3];
     }
     const std::vector<TrackedPerson>& people = tracker_.update(alpha_);
+    // Without a calibration everyone stands on the plane; the tracks are
+    // still followed, for the people the station publishes in the picture.
+    if (!camera_) return;
 
     std::unordered_map<int, Stand> kept;
     standing_.clear();
     for (const TrackedPerson& p : people) {
-        // The tracking pixel's centre in frame pixels.
-        const float offset = 0.5f * static_cast<float>(scale_ - 1);
-        const glm::vec2 foot(p.foot.x * static_cast<float>(scale_) + offset,
-                             p.foot.y * static_cast<float>(scale_) + offset);
+        const glm::vec2 foot = framePixel(p.foot, scale_);
         bool measured = false;
         if (p.missed == 0 && p.feetVisible) {
             if (const std::optional<glm::dvec3> floor = camera_->floorPointAt(glm::dvec2(foot))) {

@@ -1,9 +1,11 @@
 #pragma once
-// Each person's distance, from where their feet meet the floor. With a
-// calibrated camera, the matte's blobs are tracked (video/matte/PersonTracker.hpp)
-// and each foot point's ray is met with the floor (graph/camera/
-// CalibratedCamera.hpp); the point's depth along the view axis is that
-// person's. Without one, everyone stands on the config's person plane.
+// Each person's distance, from where their feet meet the floor. The
+// matte's blobs are tracked (video/matte/PersonTracker.hpp), with a
+// calibrated camera or without (the station publishes its people either
+// way, runtime/people/FloorPeople.hpp). With one, each foot point's ray is
+// met with the floor (graph/camera/CalibratedCamera.hpp); the point's depth
+// along the view axis is that person's. Without one, everyone stands on the
+// config's person plane.
 //
 //   PersonDepthStage depths(cfg.camera.calibrated, personPlaneMetres, videoSize);
 //   depths.run(matte.person(), newFrame);

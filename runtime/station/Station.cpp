@@ -56,6 +56,7 @@ Station::Station(const StationConfig& cfg, StationInput input)
     : cfg_(cfg), capture_(std::move(input)), matte_(cfg_.compositing.matte),
       personDepths_(cfg_.compositing.compositor.personDepthFromFeet ? cfg_.camera.calibrated : std::nullopt,
                     cfg_.compositing.compositor.personPlaneMetres, capture_.size()),
+      people_(cfg_.camera.calibrated, capture_.size()),
       outputs_(cfg_.compositing.output, capture_.fps(), capture_.size()) {
     const std::filesystem::path cache = bakeCacheFolder(cfg_.compositing.compositor);
     lodBake_ = buildScene(cfg_, world_, warnings_, cache);
@@ -157,6 +158,7 @@ bool Station::frame() {
     stats_.matteMs = now.matteMs;
     clock.lap();
     personDepths_.run(now.person, now.newFrame);
+    people_.update(personDepths_.people(), personDepths_.scale(), stats_.frame, now.seconds, now.newFrame);
     stats_.people = static_cast<std::size_t>(personDepths_.depths().people);
     stats_.trackMs = clock.lap();
 

@@ -1,9 +1,9 @@
 #pragma once
 // One compositing station's frame, in one place. Station::frame() is the
 // pipeline, each stage a class of its own:
-//   capture -> matte -> people's depths -> update -> select -> budget
+//   capture -> matte -> people (depths, floor) -> update -> select -> budget
 //   -> backdrop -> contact shadows -> render -> holdout -> composite -> output
-// (CaptureStage, MatteStage, PersonDepthStage, moveObjects and animateObjects, select,
+// (CaptureStage, MatteStage, PersonDepthStage and FloorPeople, moveObjects and animateObjects, select,
 // BudgetStage, Compositor, ShadowCatcher, Renderer and PointCloudLayer,
 // HoldoutStage, Compositor, OutputStage), and it records
 // each stage's milliseconds in stats() (runtime/station/FrameStats.hpp).
@@ -54,6 +54,7 @@
 #include "runtime/composite/Compositor.hpp"
 #include "runtime/config/StationConfig.hpp"
 #include "runtime/gl/GpuStageTimes.hpp"
+#include "runtime/people/FloorPeople.hpp"
 #include "runtime/render/Renderer.hpp"
 #include "runtime/station/BudgetStage.hpp"
 #include "runtime/station/CaptureStage.hpp"
@@ -138,6 +139,9 @@ public:
     // Where the last frame's people stood (all on the person plane without a calibrated camera).
     const PersonDepths& personDepths() const { return personDepths_.depths(); }
     const std::vector<StandingPerson>& standingPeople() const { return personDepths_.standing(); }
+    // The last frame's visitors as the outputs publish them: on the floor in
+    // metres with a calibrated camera, else in the picture.
+    const PeopleFrame& people() const { return people_.people(); }
     // Overrides the camera (tests move it along a path); keeps the intrinsics.
     void setCamera(const glm::vec3& eye, const glm::vec3& target);
     std::size_t silhouetteTrianglesTotal() const { return world_.holdouts.triangles(); }
@@ -180,6 +184,7 @@ private:
     CaptureStage capture_;
     MatteStage matte_;
     PersonDepthStage personDepths_;
+    FloorPeople people_;
     World world_;
     View view_;
     std::unique_ptr<GazeSource> gaze_;

@@ -82,8 +82,12 @@ TEST(PersonDepthStage, footPointsAreInFramePixelsWhenTrackingRunsAtAQuarterSize)
     EXPECT_NEAR(stage.standing()[0].foot.y, 901.5f, 1e-4f);
 }
 
-TEST(PersonDepthStage, withoutACalibratedCameraNobodyIsTracked) {
+TEST(PersonDepthStage, withoutACalibratedCameraPeopleAreTrackedButAllStandOnThePlane) {
     PersonDepthStage stage(std::nullopt, 5.0f, {640, 480});
     stage.run(matteWith({640, 480}, 280, 320, 250, 420), true);
     EXPECT_TRUE(stage.standing().empty());
+    EXPECT_EQ(stage.depths().people, 0);
+    EXPECT_FLOAT_EQ(stage.depths().metres[0], 5.0f);
+    ASSERT_EQ(stage.people().size(), 1u);  // what the station publishes in the picture
+    EXPECT_EQ(stage.people()[0].missed, 0);
 }
