@@ -182,6 +182,7 @@ StationConfig loadStationConfig(const std::filesystem::path& file) {
     readGroupingConfig(root, cfg.grouping);
     readGazeConfig(root, cfg.gaze);
     readPointCloudConfig(root, cfg.pointClouds);
+    readShowControlConfig(root, cfg.showControl);
     root.finish();
     report.throwIfAny();
     return cfg;

@@ -14,6 +14,7 @@
 #include "runtime/config/GroupingConfig.hpp"
 #include "runtime/config/OperatorConfig.hpp"
 #include "runtime/config/PointCloudConfig.hpp"
+#include "runtime/config/ShowControlConfig.hpp"
 
 #include <glm/glm.hpp>
 
@@ -91,6 +92,7 @@ struct StationConfig {
     GroupingConfig grouping;
     GazeConfig gaze;
     PointCloudConfig pointClouds;
+    ShowControlConfig showControl;  // where the people are sent
 };
 
 StationConfig loadStationConfig(const std::filesystem::path& file);

@@ -17,7 +17,8 @@ struct FrameStats {
     std::uint64_t frame = 0;  // frames composited so far, this one included
     double captureMs = 0;     // CPU: wait for / decode the frame
     double matteMs = 0;       // CPU: person layer
-    double trackMs = 0;       // CPU: people tracked and their depths (0 without a calibrated camera)
+    double trackMs = 0;       // CPU: people tracked, and their depths with a calibrated camera
+    double peopleMs = 0;      // CPU: the people placed on the floor (runtime/people) and sent to show control
     double updateMs = 0;      // CPU: transforms and bounds
     double selectMs = 0;      // CPU: culling, LOD, grouping cut, silhouette region, bins
     double budgetMs = 0;      // CPU: the frame-time controller (0 when it is off)
@@ -27,7 +28,10 @@ struct FrameStats {
     double holdoutMs = 0;     // GL: holdout mask from the front objects' silhouette meshes
     double compositeMs = 0;   // GL: backdrop upload, person upload and tiles
     double outputMs = 0;      // CPU: read back and write files (0 without file outputs)
-    double totalMs = 0;       // wall time of the whole frame on the CPU
+    // From the frame's capture (the input handing it over) to its people's
+    // last datagram leaving for show control; 0 without show control.
+    double captureToPeopleSentMs = 0;
+    double totalMs = 0;  // wall time of the whole frame on the CPU
     std::size_t cgTriangles = 0;
     std::size_t holdoutTriangles = 0;
     std::size_t objectsInFront = 0;

@@ -56,10 +56,11 @@ Station::Station(const StationConfig& cfg, StationInput input)
     : cfg_(cfg), capture_(std::move(input)), matte_(cfg_.compositing.matte),
       personDepths_(cfg_.compositing.compositor.personDepthFromFeet ? cfg_.camera.calibrated : std::nullopt,
                     cfg_.compositing.compositor.personPlaneMetres, capture_.size()),
-      people_(cfg_.camera.calibrated, capture_.size()),
+      people_(cfg_.camera.calibrated, capture_.size()), showControl_(cfg_.showControl),
       outputs_(cfg_.compositing.output, capture_.fps(), capture_.size()) {
     const std::filesystem::path cache = bakeCacheFolder(cfg_.compositing.compositor);
     lodBake_ = buildScene(cfg_, world_, warnings_, cache);
+    warnings_.insert(warnings_.end(), showControl_.problems().begin(), showControl_.problems().end());
     world_.scene.update();
     // The CG camera is the video camera: its pose and field of view from the
     // config or its calibration file, its image size the video's.
@@ -110,6 +111,7 @@ void Station::captureAndMatte(CapturedFrame& f, const CapturedFrame& shown) {
     f.image.release();
     if (!capture_.next()) return;
     f.ok = true;
+    f.capturedAt = std::chrono::steady_clock::now();
     f.image = capture_.image();
     f.newFrame = capture_.newFrame();
     f.seconds = capture_.seconds();
@@ -158,9 +160,15 @@ bool Station::frame() {
     stats_.matteMs = now.matteMs;
     clock.lap();
     personDepths_.run(now.person, now.newFrame);
-    people_.update(personDepths_.people(), personDepths_.scale(), stats_.frame, now.seconds, now.newFrame);
     stats_.people = static_cast<std::size_t>(personDepths_.depths().people);
     stats_.trackMs = clock.lap();
+    people_.update(personDepths_.people(), personDepths_.scale(), stats_.frame, now.seconds, now.newFrame);
+    if (now.newFrame && !showControl_.empty()) {
+        showControl_.publish(people_.people());
+        stats_.captureToPeopleSentMs =
+            std::chrono::duration<double, std::milli>(showControl_.lastSent() - now.capturedAt).count();
+    }
+    stats_.peopleMs = clock.lap();
 
     const double seconds = now.seconds;
     moveObjects(world_, seconds);

@@ -1,9 +1,9 @@
 #pragma once
 // One compositing station's frame, in one place. Station::frame() is the
 // pipeline, each stage a class of its own:
-//   capture -> matte -> people (depths, floor) -> update -> select -> budget
+//   capture -> matte -> people (depths, floor, show control) -> update -> select -> budget
 //   -> backdrop -> contact shadows -> render -> holdout -> composite -> output
-// (CaptureStage, MatteStage, PersonDepthStage and FloorPeople, moveObjects and animateObjects, select,
+// (CaptureStage, MatteStage, PersonDepthStage, FloorPeople and ShowControl, moveObjects and animateObjects, select,
 // BudgetStage, Compositor, ShadowCatcher, Renderer and PointCloudLayer,
 // HoldoutStage, Compositor, OutputStage), and it records
 // each stage's milliseconds in stats() (runtime/station/FrameStats.hpp).
@@ -56,6 +56,7 @@
 #include "runtime/gl/GpuStageTimes.hpp"
 #include "runtime/people/FloorPeople.hpp"
 #include "runtime/render/Renderer.hpp"
+#include "runtime/showcontrol/ShowControl.hpp"
 #include "runtime/station/BudgetStage.hpp"
 #include "runtime/station/CaptureStage.hpp"
 #include "runtime/station/FrameStats.hpp"
@@ -142,6 +143,8 @@ public:
     // The last frame's visitors as the outputs publish them: on the floor in
     // metres with a calibrated camera, else in the picture.
     const PeopleFrame& people() const { return people_.people(); }
+    // Where the people go: each OSC and TUIO target's state and counts.
+    const ShowControl& showControl() const { return showControl_; }
     // Overrides the camera (tests move it along a path); keeps the intrinsics.
     void setCamera(const glm::vec3& eye, const glm::vec3& target);
     std::size_t silhouetteTrianglesTotal() const { return world_.holdouts.triangles(); }
@@ -171,6 +174,7 @@ private:
         bool newFrame = false;
         double seconds = 0, frameSeconds = 0;
         double captureMs = 0, matteMs = 0;
+        std::chrono::steady_clock::time_point capturedAt;  // when the input handed the frame over
     };
     // Fills `next` from the input; `shown` is the frame on screen, whose
     // plate and tiles a live frame that did not change takes over.
@@ -185,6 +189,7 @@ private:
     MatteStage matte_;
     PersonDepthStage personDepths_;
     FloorPeople people_;
+    ShowControl showControl_;
     World world_;
     View view_;
     std::unique_ptr<GazeSource> gaze_;

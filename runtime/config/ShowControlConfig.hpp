@@ -1,0 +1,47 @@
+#pragma once
+// The config's `show_control` section: where the station sends its people
+// (runtime/showcontrol/ShowControl.hpp). Absent: it sends nothing.
+//
+//   show_control:
+//     osc:  {targets: ["127.0.0.1:9000", "10.0.0.20:7000"]}    # the /arcomp address space
+//     tuio: {targets: ["127.0.0.1:3333"], floor: {min: [-4, -6], max: [4, 3]}}
+//
+// TUIO's floor is the rectangle (x, z in metres, the calibration's floor
+// frame) that TUIO's 0..1 square covers: x to the right, z towards the
+// camera downwards. Without a calibrated camera TUIO sends the picture's
+// 0..1 and the floor is not used.
+
+#include <glm/vec2.hpp>
+
+#include <string>
+#include <vector>
+
+namespace arcomp {
+
+class YamlMap;
+
+// One place to send to, as the config wrote it.
+struct NetworkTarget {
+    std::string host;
+    int port = 0;
+    std::string where;  // "show_control.osc.targets[0]", for messages about it
+    std::string text() const { return host + ":" + std::to_string(port); }
+};
+
+struct OscOutputConfig {
+    std::vector<NetworkTarget> targets;
+};
+
+struct TuioOutputConfig {
+    std::vector<NetworkTarget> targets;
+    glm::vec2 floorMin{-5.0f, -5.0f}, floorMax{5.0f, 5.0f};  // x, z
+};
+
+struct ShowControlConfig {
+    OscOutputConfig osc;
+    TuioOutputConfig tuio;
+};
+
+void readShowControlConfig(YamlMap& root, ShowControlConfig& out);
+
+}  // namespace arcomp

@@ -1,0 +1,39 @@
+#include "runtime/showcontrol/OscPeople.hpp"
+
+#include "runtime/showcontrol/OscBundle.hpp"
+
+#include <algorithm>
+
+namespace arcomp {
+
+std::vector<std::uint8_t> oscPeopleBundle(const PeopleFrame& frame) {
+    OscBundle b;
+    b.add("/arcomp/frame")
+        .i(static_cast<std::int32_t>(frame.frame))
+        .f(static_cast<float>(frame.seconds))
+        .s(unitsName(frame.units))
+        .i(static_cast<std::int32_t>(frame.people.size()));
+    for (const int id : frame.entered) {
+        const auto p =
+            std::find_if(frame.people.begin(), frame.people.end(), [id](const Person& q) { return q.id == id; });
+        b.add("/arcomp/enter").i(id).f(p->position.x).f(p->position.y);
+    }
+    for (const Person& p : frame.people)
+        b.add("/arcomp/person")
+            .i(p.id)
+            .f(p.position.x)
+            .f(p.position.y)
+            .f(p.velocity.x)
+            .f(p.velocity.y)
+            .f(p.heightMetres)
+            .f(static_cast<float>(p.ageSeconds))
+            .i(p.seen ? 1 : 0)
+            .i(p.box.x)
+            .i(p.box.y)
+            .i(p.box.width)
+            .i(p.box.height);
+    for (const int id : frame.left) b.add("/arcomp/leave").i(id);
+    return b.bytes();
+}
+
+}  // namespace arcomp

@@ -1,0 +1,42 @@
+#include "runtime/showcontrol/ShowControl.hpp"
+
+#include "runtime/showcontrol/OscPeople.hpp"
+
+namespace arcomp {
+
+ShowControl::ShowControl(const ShowControlConfig& cfg) : tuio_(cfg.tuio.floorMin, cfg.tuio.floorMax) {
+    auto open = [this](const NetworkTarget& target, const char* kind, bool tuio) {
+        OutputStatus s{.kind = kind, .target = target.text(), .state = "sending"};
+        Route route{.sender = std::nullopt, .status = status_.size(), .tuio = tuio};
+        try {
+            route.sender.emplace(target);
+        } catch (const ShowControlError& e) {
+            s.state = std::string("off: ") + e.what();
+            problems_.push_back(std::string(kind) + " output off: " + e.what());
+        }
+        status_.push_back(std::move(s));
+        routes_.push_back(std::move(route));
+    };
+    for (const NetworkTarget& t : cfg.osc.targets) open(t, "osc", false);
+    for (const NetworkTarget& t : cfg.tuio.targets) open(t, "tuio", true);
+}
+
+void ShowControl::publish(const PeopleFrame& frame) {
+    // Each kind's bundle is made once a frame, for all its targets.
+    std::optional<std::vector<std::uint8_t>> osc, tuio;
+    for (Route& route : routes_) {
+        if (!route.sender) continue;
+        std::optional<std::vector<std::uint8_t>>& bytes = route.tuio ? tuio : osc;
+        if (!bytes) bytes = route.tuio ? tuio_.bundle(frame) : oscPeopleBundle(frame);
+        OutputStatus& s = status_[route.status];
+        if (route.sender->send(*bytes)) {
+            ++s.sent;
+        } else {
+            ++s.dropped;
+            s.lastError = route.sender->lastError();
+        }
+    }
+    lastSent_ = std::chrono::steady_clock::now();
+}
+
+}  // namespace arcomp

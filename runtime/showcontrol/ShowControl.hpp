@@ -1,0 +1,62 @@
+#pragma once
+// Where the station's people go each frame: OSC bundles in the /arcomp
+// address space (runtime/showcontrol/OscPeople.hpp) and TUIO 1.1 cursors
+// (runtime/showcontrol/TuioCursors.hpp) to every target of the config's
+// `show_control` section (runtime/config/ShowControlConfig.hpp).
+//
+//   ShowControl show(cfg.showControl);
+//   for (const std::string& p : show.problems()) log.warn(p);   // a target that is off, and why
+//   show.publish(station.people());                              // each new frame; never blocks
+//
+// A target whose host does not resolve is off for the run, and says so in
+// problems() and in its status; the others go on. A datagram the socket
+// cannot take at once is dropped and counted, never waited for.
+
+#include "runtime/config/ShowControlConfig.hpp"
+#include "runtime/people/PeopleFrame.hpp"
+#include "runtime/showcontrol/TuioCursors.hpp"
+#include "runtime/showcontrol/UdpSender.hpp"
+
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace arcomp {
+
+// One output's state, as /status and /metrics show it.
+struct OutputStatus {
+    std::string kind;    // "osc", "tuio"
+    std::string target;  // "127.0.0.1:9000"
+    std::string state;   // "sending", or "off: <why>"
+    std::uint64_t sent = 0, dropped = 0;
+    std::string lastError;  // why the last datagram was dropped
+};
+
+class ShowControl {
+public:
+    explicit ShowControl(const ShowControlConfig& cfg);
+
+    void publish(const PeopleFrame& frame);
+
+    const std::vector<OutputStatus>& outputs() const { return status_; }
+    const std::vector<std::string>& problems() const { return problems_; }
+    bool empty() const { return status_.empty(); }
+    // When the last publish() handed its last datagram to the sockets.
+    std::chrono::steady_clock::time_point lastSent() const { return lastSent_; }
+
+private:
+    struct Route {
+        std::optional<UdpSender> sender;  // none: off
+        std::size_t status;               // index in status_
+        bool tuio;
+    };
+    TuioCursors tuio_;
+    std::vector<Route> routes_;
+    std::vector<OutputStatus> status_;
+    std::vector<std::string> problems_;
+    std::chrono::steady_clock::time_point lastSent_{};
+};
+
+}  // namespace arcomp

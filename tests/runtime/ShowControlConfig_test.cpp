@@ -1,0 +1,62 @@
+// The config's show_control section: targets as "host:port", TUIO's floor
+// rectangle, and every mistake reported at its line with what was expected.
+
+#include "runtime/config/StationConfig.hpp"
+
+#include "tests/support/BoxStation.hpp"
+#include "tests/support/ConfigIssues.hpp"
+#include "tests/support/TempDir.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace arcomp;
+using arcomp::test::TempDir;
+
+TEST(ShowControlConfig, absentSectionSendsNothing) {
+    TempDir dir;
+    const StationConfig cfg = loadStationConfig(dir.write("s.yaml", test::kBoxStation));
+    EXPECT_TRUE(cfg.showControl.osc.targets.empty());
+    EXPECT_TRUE(cfg.showControl.tuio.targets.empty());
+}
+
+TEST(ShowControlConfig, readsTargetsAndTheFloorRectangle) {
+    TempDir dir;
+    const StationConfig cfg = loadStationConfig(dir.write("s.yaml", std::string(test::kBoxStation) + R"(show_control:
+  osc: {targets: ["127.0.0.1:9000", "lighting.local:7000"]}
+  tuio:
+    targets: ["[::1]:3333"]
+    floor: {min: [-4, -6], max: [4, 3]}
+)"));
+    ASSERT_EQ(cfg.showControl.osc.targets.size(), 2u);
+    EXPECT_EQ(cfg.showControl.osc.targets[0].host, "127.0.0.1");
+    EXPECT_EQ(cfg.showControl.osc.targets[0].port, 9000);
+    EXPECT_EQ(cfg.showControl.osc.targets[1].text(), "lighting.local:7000");
+    EXPECT_EQ(cfg.showControl.osc.targets[1].where, "show_control.osc.targets[1]");
+    ASSERT_EQ(cfg.showControl.tuio.targets.size(), 1u);
+    EXPECT_EQ(cfg.showControl.tuio.targets[0].host, "::1");
+    EXPECT_EQ(cfg.showControl.tuio.floorMin, glm::vec2(-4.0f, -6.0f));
+    EXPECT_EQ(cfg.showControl.tuio.floorMax, glm::vec2(4.0f, 3.0f));
+}
+
+TEST(ShowControlConfig, reportsEveryMistakeWithItsLine) {
+    TempDir dir;
+    const auto issues = test::configIssues(dir.write("s.yaml", std::string(test::kBoxStation) + R"(show_control:
+  osc:
+    targets:
+      - "127.0.0.1"
+      - "host:99999"
+      - ":9000"
+  tuio:
+    targets: "127.0.0.1:3333"
+    floor: {min: [4, 0], max: [-4, 3]}
+  midi: {}
+)"));
+    // kBoxStation is 7 lines; show_control starts at line 8.
+    EXPECT_TRUE(test::hasIssue(issues, 11, "'127.0.0.1' is not a target; expected \"host:port\""))
+        << test::describe(issues);
+    EXPECT_TRUE(test::hasIssue(issues, 12, "'host:99999' is not a target")) << test::describe(issues);
+    EXPECT_TRUE(test::hasIssue(issues, 13, "':9000' is not a target")) << test::describe(issues);
+    EXPECT_TRUE(test::hasIssue(issues, 15, "show_control.tuio.targets: expected a list")) << test::describe(issues);
+    EXPECT_TRUE(test::hasIssue(issues, 16, "max must exceed min")) << test::describe(issues);
+    EXPECT_TRUE(test::hasIssue(issues, 17, "midi")) << test::describe(issues);
+}

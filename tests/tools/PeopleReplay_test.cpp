@@ -1,0 +1,113 @@
+// A replayed video in which a person-sized shape steps into the picture at
+// a known frame and out of it at another: `arcomp replay` sends, to a real
+// OSC receiver on loopback, /arcomp/enter at the first frame and
+// /arcomp/leave once the tracker has given the person up, and two replays
+// of the file send the same messages in the same order with the same stamps.
+
+#include "tests/support/ChildProcess.hpp"
+#include "tests/support/OscReceiver.hpp"
+#include "tests/support/TempDir.hpp"
+
+#include "video/matte/PersonTracker.hpp"
+
+#include <gtest/gtest.h>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
+
+#include <fstream>
+
+using namespace arcomp::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kFrames = 80, kSteppedIn = 20, kSteppedOut = 40;
+
+// A grey floor; from kSteppedIn to kSteppedOut - 1 a dark 30 x 90 shape
+// (a person at this size) walking right, feet well inside the picture.
+void writeShapeClip(const fs::path& dir) {
+    const cv::Mat floor(240, 320, CV_8UC3, cv::Scalar(140, 140, 140));
+    cv::imwrite((dir / "plate.png").string(), floor);
+    cv::VideoWriter out((dir / "shape.avi").string(), cv::CAP_FFMPEG, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 25.0,
+                        floor.size());
+    ASSERT_TRUE(out.isOpened());
+    for (int i = 0; i < kFrames; ++i) {
+        cv::Mat f = floor.clone();
+        if (i >= kSteppedIn && i < kSteppedOut)
+            cv::rectangle(f, cv::Rect(100 + 2 * (i - kSteppedIn), 110, 30, 90), cv::Scalar(40, 30, 30), cv::FILLED);
+        out.write(f);
+    }
+}
+
+std::vector<OscReceiver::Message> replayed(const fs::path& dir, const std::string& name) {
+    fs::create_directories(dir / name);
+    OscReceiver rx(dir / name);
+    const fs::path station = dir / (name + ".yaml");
+    std::ofstream(station) << R"(scene:
+  objects:
+    - shape: box
+      position: [0, 0, -4]
+camera:
+  eye: [0, 0, 0]
+  target: [0, 0, -1]
+matte:
+  kind: background
+  background: {method: clean_plate, clean_plate: plate.png}
+show_control:
+  osc: {targets: ["127.0.0.1:)"
+                           << rx.port() << R"("]}
+)";
+    const ChildResult r = runChild(
+        {ARCOMP_BINARY, "replay", station.string(), "--video", (dir / "shape.avi").string(), "--out", (dir / name / "frames").string(), "--log-level", "error"});
+    EXPECT_EQ(r.code, 0) << r.output;
+    return rx.receive(std::chrono::milliseconds(500), kFrames);
+}
+
+// The frame number of each message at `path`, with its first argument (an id).
+std::vector<std::pair<int, int>> framesOf(const std::vector<OscReceiver::Message>& messages, const std::string& path) {
+    std::vector<std::pair<int, int>> out;
+    int frame = -1;
+    for (const auto& m : messages) {
+        if (m.path == "/arcomp/frame") frame = m.i(0);
+        if (m.path == path) out.emplace_back(frame, m.i(0));
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST(PeopleReplay, enterAndLeaveComeAtTheFramesTheShapeStepsInAndIsGivenUp) {
+    if (!fs::exists(ARCOMP_BINARY)) GTEST_SKIP() << "arcomp not built";
+    TempDir dir;
+    writeShapeClip(dir.path());
+    const auto got = replayed(dir.path(), "first");
+    ASSERT_FALSE(got.empty());
+    EXPECT_EQ(std::count_if(got.begin(), got.end(), [](const auto& m) { return m.path == "/arcomp/frame"; }), kFrames)
+        << "one bundle a frame";
+    const auto entered = framesOf(got, "/arcomp/enter");
+    const auto left = framesOf(got, "/arcomp/leave");
+    ASSERT_EQ(entered.size(), 1u);
+    ASSERT_EQ(left.size(), 1u);
+    EXPECT_EQ(entered[0].first, kSteppedIn);
+    EXPECT_EQ(left[0].second, entered[0].second) << "the same id leaves";
+    // Held, unseen, while the tracker waits for the person to reappear.
+    EXPECT_EQ(left[0].first, kSteppedOut + arcomp::PersonTracker::Settings{}.keepMissedFrames);
+    const auto frameAt = [&](int frame) {
+        return std::find_if(got.begin(), got.end(),
+                            [&](const auto& m) { return m.path == "/arcomp/frame" && m.i(0) == frame; });
+    };
+    EXPECT_EQ(frameAt(kSteppedIn)->s(2), "image") << "no calibrated camera: the picture's coordinates";
+    EXPECT_NEAR(frameAt(kSteppedIn)->f(1), kSteppedIn / 25.0f, 1e-4f) << "stamped with the video's time";
+    const auto person = std::find_if(got.begin(), got.end(), [](const auto& m) { return m.path == "/arcomp/person"; });
+    ASSERT_NE(person, got.end());
+    EXPECT_NEAR(person->f(1), 115.0f / 320.0f, 0.02f) << "the feet's middle, across";
+    EXPECT_NEAR(person->f(2), 200.0f / 240.0f, 0.02f) << "the feet's row, down";
+
+    const auto again = replayed(dir.path(), "second");
+    ASSERT_EQ(again.size(), got.size());
+    for (std::size_t k = 0; k < got.size(); ++k) {
+        EXPECT_EQ(again[k].path, got[k].path) << "message " << k;
+        EXPECT_EQ(again[k].args, got[k].args) << "message " << k << " " << got[k].path;
+    }
+}
