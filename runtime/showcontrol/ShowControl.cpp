@@ -6,7 +6,8 @@ namespace arcomp {
 
 ShowControl::ShowControl(const ShowControlConfig& cfg) : tuio_(cfg.tuio.floorMin, cfg.tuio.floorMax) {
     auto open = [this](const NetworkTarget& target, const char* kind, bool tuio) {
-        OutputStatus s{.kind = kind, .target = target.text(), .state = "sending"};
+        OutputStatus s{
+            .kind = kind, .target = target.text(), .state = "sending", .sent = 0, .dropped = 0, .lastError = {}};
         Route route{.sender = std::nullopt, .status = status_.size(), .tuio = tuio};
         try {
             route.sender.emplace(target);

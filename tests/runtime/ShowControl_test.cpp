@@ -33,6 +33,14 @@ Person personAt(int id, glm::vec2 position, glm::vec2 velocity = {0.0f, 0.0f}) {
             .box = {10, 20, 30, 90}};
 }
 
+PeopleFrame frameAt(std::uint64_t frame, double seconds, PositionUnits units) {
+    PeopleFrame f;
+    f.frame = frame;
+    f.seconds = seconds;
+    f.units = units;
+    return f;
+}
+
 std::vector<std::string> pathsAndFirstWords(const std::vector<OscReceiver::Message>& messages) {
     std::vector<std::string> out;
     for (const auto& m : messages) out.push_back(m.path + (m.types.starts_with("s") ? " " + m.s(0) : ""));
@@ -49,7 +57,7 @@ TEST(ShowControl, oscBundleIsTheFrameThenEnterThenEachPersonThenLeave) {
     ShowControl show(cfg);
     ASSERT_TRUE(show.problems().empty());
 
-    PeopleFrame frame{.frame = 41, .seconds = 1.64, .units = PositionUnits::FloorMetres};
+    PeopleFrame frame = frameAt(41, 1.64, PositionUnits::FloorMetres);
     frame.people = {personAt(2, {0.5f, -1.0f}, {0.25f, 0.0f}), personAt(3, {-1.25f, 2.0f})};
     frame.people[1].seen = false;
     frame.entered = {3};
@@ -94,7 +102,7 @@ TEST(ShowControl, tuioCursorsAreSourceAliveSetFseqOnTheFloorRectangle) {
     cfg.tuio.floorMax = {4.0f, 2.0f};
     ShowControl show(cfg);
 
-    PeopleFrame frame{.frame = 7, .seconds = 0.28, .units = PositionUnits::FloorMetres};
+    PeopleFrame frame = frameAt(7, 0.28, PositionUnits::FloorMetres);
     // 5 at the rectangle's middle walking right; 6 off it; 9 at its near left corner.
     frame.people = {personAt(5, {0.0f, -2.0f}, {0.8f, 0.0f}), personAt(6, {10.0f, 0.0f}), personAt(9, {-4.0f, 2.0f})};
     show.publish(frame);
@@ -136,13 +144,14 @@ TEST(ShowControl, withoutACalibrationTuioCarriesThePicturesCoordinates) {
     cfg.osc.targets = {loopback(rx)};
     cfg.tuio.targets = {loopback(rx, "show_control.tuio.targets[0]")};
     ShowControl show(cfg);
-    PeopleFrame frame{.frame = 1, .seconds = 0.04, .units = PositionUnits::ImageNormalised};
+    PeopleFrame frame = frameAt(1, 0.04, PositionUnits::ImageNormalised);
     frame.people = {personAt(4, {0.25f, 0.75f})};
     show.publish(frame);
     const auto got = rx.receive(std::chrono::seconds(2), 2);
     ASSERT_EQ(rx.datagrams(), 2u);
     EXPECT_EQ(got[0].s(2), "image");
-    const auto set = std::find_if(got.begin(), got.end(), [](const auto& m) { return m.path == "/tuio/2Dcur" && m.s(0) == "set"; });
+    const auto set =
+        std::find_if(got.begin(), got.end(), [](const auto& m) { return m.path == "/tuio/2Dcur" && m.s(0) == "set"; });
     ASSERT_NE(set, got.end());
     EXPECT_FLOAT_EQ(set->f(2), 0.25f);
     EXPECT_FLOAT_EQ(set->f(3), 0.75f);
@@ -162,7 +171,7 @@ TEST(ShowControl, aHostThatDoesNotResolveIsOffAndTheOtherTargetsGoOn) {
     EXPECT_TRUE(show.outputs()[0].state.starts_with("off: ")) << show.outputs()[0].state;
     EXPECT_EQ(show.outputs()[1].state, "sending");
 
-    show.publish({.frame = 0, .seconds = 0.0, .units = PositionUnits::FloorMetres});
+    show.publish(frameAt(0, 0.0, PositionUnits::FloorMetres));
     rx.receive(std::chrono::seconds(2), 1);
     EXPECT_EQ(rx.datagrams(), 1u);
     EXPECT_EQ(show.outputs()[0].sent + show.outputs()[0].dropped, 0u);
@@ -175,10 +184,10 @@ TEST(ShowControl, aBundleTooBigForADatagramIsCountedAsDroppedNotSentCut) {
     ShowControlConfig cfg;
     cfg.osc.targets = {loopback(rx)};
     ShowControl show(cfg);
-    PeopleFrame crowd{.frame = 3, .seconds = 0.12, .units = PositionUnits::FloorMetres};
+    PeopleFrame crowd = frameAt(3, 0.12, PositionUnits::FloorMetres);
     for (int id = 0; id < 2000; ++id) crowd.people.push_back(personAt(id, {0.0f, 0.0f}));  // about 150 kB
     show.publish(crowd);
-    show.publish({.frame = 4, .seconds = 0.16, .units = PositionUnits::FloorMetres});
+    show.publish(frameAt(4, 0.16, PositionUnits::FloorMetres));
     const auto got = rx.receive(std::chrono::seconds(2), 1);
     EXPECT_EQ(show.outputs()[0].dropped, 1u);
     EXPECT_EQ(show.outputs()[0].sent, 1u);
@@ -188,7 +197,7 @@ TEST(ShowControl, aBundleTooBigForADatagramIsCountedAsDroppedNotSentCut) {
 }
 
 TEST(ShowControl, aBundleIsTaggedImmediatelySoTheSameFrameGivesTheSameBytes) {
-    PeopleFrame frame{.frame = 12, .seconds = 0.48, .units = PositionUnits::FloorMetres};
+    PeopleFrame frame = frameAt(12, 0.48, PositionUnits::FloorMetres);
     frame.people = {personAt(1, {0.5f, 2.0f})};
     const std::vector<std::uint8_t> once = oscPeopleBundle(frame), again = oscPeopleBundle(frame);
     EXPECT_EQ(once, again);
