@@ -3,9 +3,28 @@
 #include "runtime/config/YamlMap.hpp"
 
 #include <charconv>
+#include <optional>
 
 namespace arcomp {
 namespace {
+
+// "host:port", or none with the problem reported at `mark`.
+std::optional<NetworkTarget> parseTarget(const std::string& text, const std::string& where, const YAML::Mark& mark,
+                                         ConfigReport& report) {
+    const std::size_t colon = text.rfind(':');
+    int port = 0;
+    const char* portEnd = text.data() + text.size();
+    const bool numeric = colon != std::string::npos && colon + 1 < text.size() &&
+                         std::from_chars(text.data() + colon + 1, portEnd, port).ptr == portEnd;
+    if (!numeric || colon == 0 || port < 1 || port > 65535) {
+        report.add(mark, where + ": '" + text +
+                             "' is not a target; expected \"host:port\" with a port 1-65535, e.g. \"127.0.0.1:9000\"");
+        return std::nullopt;
+    }
+    std::string host = text.substr(0, colon);
+    if (host.size() > 2 && host.front() == '[' && host.back() == ']') host = host.substr(1, host.size() - 2);  // IPv6
+    return NetworkTarget{.host = host, .port = port, .where = where};
+}
 
 // "host:port" entries; a bad one is reported at its own line and left out.
 std::vector<NetworkTarget> readTargets(YamlMap& section) {
@@ -24,24 +43,42 @@ std::vector<NetworkTarget> readTargets(YamlMap& section) {
         const std::string where = key + "[" + std::to_string(i) + "]";
         const YAML::Node item = list[i];
         const std::string text = item.IsScalar() ? item.Scalar() : std::string();
-        const std::size_t colon = text.rfind(':');
-        int port = 0;
-        const char* portEnd = text.data() + text.size();
-        const bool numeric = colon != std::string::npos &&
-                             std::from_chars(text.data() + colon + 1, portEnd, port).ptr == portEnd &&
-                             colon + 1 < text.size();
-        if (!numeric || colon == 0 || port < 1 || port > 65535) {
-            section.report().add(item.Mark(), where + ": '" + text +
-                                                  "' is not a target; expected \"host:port\" with a port 1-65535, "
-                                                  "e.g. \"127.0.0.1:9000\"");
-            continue;
-        }
-        std::string host = text.substr(0, colon);
-        if (host.size() > 2 && host.front() == '[' && host.back() == ']')
-            host = host.substr(1, host.size() - 2);  // IPv6
-        out.push_back({.host = host, .port = port, .where = where});
+        if (auto target = parseTarget(text, where, item.Mark(), section.report())) out.push_back(*target);
     }
     return out;
+}
+
+void readMqtt(YamlMap& mqtt, MqttOutputConfig& out) {
+    out.enabled = true;
+    std::string broker;
+    mqtt.text("broker", broker, Required::Yes);
+    if (!broker.empty())
+        if (auto target = parseTarget(broker, mqtt.where() + ".broker", mqtt.mark(), mqtt.report()))
+            out.broker = *target;
+    mqtt.text("topic_prefix", out.topicPrefix);
+    if (out.topicPrefix.empty() || out.topicPrefix.find_first_of("+#") != std::string::npos ||
+        out.topicPrefix.front() == '/' || out.topicPrefix.back() == '/')
+        mqtt.report().add(mqtt.mark(), mqtt.where() + ".topic_prefix: '" + out.topicPrefix +
+                                           "' cannot start a topic; expected levels without '+', '#' or a "
+                                           "leading or trailing '/', e.g. arcomp/entrance");
+    mqtt.text("client_id", out.clientId);
+    mqtt.number("rate_hz", out.rateHz, 0.1, 100.0);
+    mqtt.integer("keepalive_s", out.keepaliveSeconds, 5, 3600);
+    mqtt.integer("event_queue", out.eventQueue, 1, 1000000);
+    mqtt.path("username_file", out.usernameFile, true);
+    mqtt.path("password_file", out.passwordFile, true);
+    if (out.usernameFile.empty() != out.passwordFile.empty())
+        mqtt.report().add(mqtt.mark(), mqtt.where() + ": username_file and password_file come together");
+    if (mqtt.has("tls")) {
+        YamlMap tls = mqtt.map("tls");
+        tls.path("ca_file", out.caFile, true, Required::Yes);
+        tls.path("cert_file", out.certFile, true);
+        tls.path("key_file", out.keyFile, true);
+        if (out.certFile.empty() != out.keyFile.empty())
+            tls.report().add(tls.mark(), tls.where() + ": cert_file and key_file come together");
+        tls.finish();
+    }
+    mqtt.finish();
 }
 
 }  // namespace
@@ -74,6 +111,10 @@ void readShowControlConfig(YamlMap& root, ShowControlConfig& out) {
             floor.finish();
         }
         tuio.finish();
+    }
+    if (show.has("mqtt")) {
+        YamlMap mqtt = show.map("mqtt");
+        readMqtt(mqtt, out.mqtt);
     }
     show.finish();
 }

@@ -5,6 +5,7 @@
 //   show_control:
 //     osc:  {targets: ["127.0.0.1:9000", "10.0.0.20:7000"]}    # the /arcomp address space
 //     tuio: {targets: ["127.0.0.1:3333"], floor: {min: [-4, -6], max: [4, 3]}}
+//     mqtt: {broker: "127.0.0.1:1883", topic_prefix: arcomp/entrance, rate_hz: 5}
 //
 // TUIO's floor is the rectangle (x, z in metres, the calibration's floor
 // frame) that TUIO's 0..1 square covers: x to the right, z towards the
@@ -13,6 +14,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -37,9 +39,25 @@ struct TuioOutputConfig {
     glm::vec2 floorMin{-5.0f, -5.0f}, floorMax{5.0f, 5.0f};  // x, z
 };
 
+// The station as a client of an MQTT broker (never a broker itself).
+// Credentials and TLS come from files, so that the config can be shared
+// and no secret is ever in it, a log line or /status.
+struct MqttOutputConfig {
+    bool enabled = false;
+    NetworkTarget broker;
+    std::string topicPrefix = "arcomp";  // topics: <prefix>/people, /enter, /leave, /state
+    std::string clientId;                // empty: arcomp-<host name>-<process id>
+    double rateHz = 5.0;                 // people messages a second of video time
+    int keepaliveSeconds = 10;
+    int eventQueue = 1000;                             // enter and leave events held while the broker is away
+    std::filesystem::path usernameFile, passwordFile;  // first line each; both or neither
+    std::filesystem::path caFile, certFile, keyFile;   // caFile: TLS on; cert and key: a client certificate
+};
+
 struct ShowControlConfig {
     OscOutputConfig osc;
     TuioOutputConfig tuio;
+    MqttOutputConfig mqtt;
 };
 
 void readShowControlConfig(YamlMap& root, ShowControlConfig& out);

@@ -20,6 +20,37 @@ ShowControl::ShowControl(const ShowControlConfig& cfg) : tuio_(cfg.tuio.floorMin
     };
     for (const NetworkTarget& t : cfg.osc.targets) open(t, "osc", false);
     for (const NetworkTarget& t : cfg.tuio.targets) open(t, "tuio", true);
+    if (cfg.mqtt.enabled) {
+        mqttBroker_ = cfg.mqtt.broker.text();
+        try {
+            mqtt_ = std::make_unique<MqttPeople>(cfg.mqtt);
+        } catch (const ShowControlError& e) {
+            mqttOff_ = std::string("off: ") + e.what();
+            problems_.push_back(std::string("mqtt output off: ") + e.what());
+        }
+    }
+}
+
+std::vector<OutputStatus> ShowControl::outputs() const {
+    std::vector<OutputStatus> out = status_;
+    if (mqtt_) {
+        const MqttStatus m = mqtt_->status();
+        OutputStatus s;
+        s.kind = "mqtt";
+        s.target = m.broker;
+        s.state = m.state;
+        s.sent = m.sent;
+        s.dropped = m.dropped;
+        s.queued = m.queued;
+        out.push_back(std::move(s));
+    } else if (!mqttOff_.empty()) {
+        OutputStatus s;
+        s.kind = "mqtt";
+        s.target = mqttBroker_;
+        s.state = mqttOff_;
+        out.push_back(std::move(s));
+    }
+    return out;
 }
 
 void ShowControl::publish(const PeopleFrame& frame) {
@@ -38,6 +69,7 @@ void ShowControl::publish(const PeopleFrame& frame) {
         }
     }
     lastSent_ = std::chrono::steady_clock::now();
+    if (mqtt_) mqtt_->publish(frame);
 }
 
 }  // namespace arcomp

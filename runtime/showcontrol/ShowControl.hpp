@@ -1,24 +1,28 @@
 #pragma once
 // Where the station's people go each frame: OSC bundles in the /arcomp
 // address space (runtime/showcontrol/OscPeople.hpp) and TUIO 1.1 cursors
-// (runtime/showcontrol/TuioCursors.hpp) to every target of the config's
-// `show_control` section (runtime/config/ShowControlConfig.hpp).
+// (runtime/showcontrol/TuioCursors.hpp) to every target, and JSON to an
+// MQTT broker (runtime/showcontrol/MqttPeople.hpp), as the config's
+// `show_control` section says (runtime/config/ShowControlConfig.hpp).
 //
 //   ShowControl show(cfg.showControl);
 //   for (const std::string& p : show.problems()) log.warn(p);   // a target that is off, and why
 //   show.publish(station.people());                              // each new frame; never blocks
 //
-// A target whose host does not resolve is off for the run, and says so in
+// A target whose host does not resolve, or an MQTT output whose
+// credentials cannot be read, is off for the run, and says so in
 // problems() and in its status; the others go on. A datagram the socket
 // cannot take at once is dropped and counted, never waited for.
 
 #include "runtime/config/ShowControlConfig.hpp"
 #include "runtime/people/PeopleFrame.hpp"
+#include "runtime/showcontrol/MqttPeople.hpp"
 #include "runtime/showcontrol/TuioCursors.hpp"
 #include "runtime/showcontrol/UdpSender.hpp"
 
 #include <chrono>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,11 +31,12 @@ namespace arcomp {
 
 // One output's state, as /status and /metrics show it.
 struct OutputStatus {
-    std::string kind;    // "osc", "tuio"
-    std::string target;  // "127.0.0.1:9000"
-    std::string state;   // "sending", or "off: <why>"
+    std::string kind;    // "osc", "tuio", "mqtt"
+    std::string target;  // "127.0.0.1:9000"; mqtt: the broker
+    std::string state;   // "sending", "off: <why>"; mqtt: "connected", "connecting", "disconnected: <why>"
     std::uint64_t sent = 0, dropped = 0;
-    std::string lastError;  // why the last datagram was dropped
+    std::uint64_t queued = 0;  // mqtt: enter and leave events waiting for the broker
+    std::string lastError;     // why the last datagram was dropped
 };
 
 class ShowControl {
@@ -40,9 +45,10 @@ public:
 
     void publish(const PeopleFrame& frame);
 
-    const std::vector<OutputStatus>& outputs() const { return status_; }
+    // Every output's state now (MQTT's changes on its own thread).
+    std::vector<OutputStatus> outputs() const;
     const std::vector<std::string>& problems() const { return problems_; }
-    bool empty() const { return status_.empty(); }
+    bool empty() const { return status_.empty() && !mqtt_; }
     // When the last publish() handed its last datagram to the sockets.
     std::chrono::steady_clock::time_point lastSent() const { return lastSent_; }
 
@@ -54,7 +60,10 @@ private:
     };
     TuioCursors tuio_;
     std::vector<Route> routes_;
-    std::vector<OutputStatus> status_;
+    std::vector<OutputStatus> status_;  // OSC and TUIO, in routes_' order
+    std::unique_ptr<MqttPeople> mqtt_;
+    std::string mqttOff_;  // why the configured MQTT output is off
+    std::string mqttBroker_;
     std::vector<std::string> problems_;
     std::chrono::steady_clock::time_point lastSent_{};
 };

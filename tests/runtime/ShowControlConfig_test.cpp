@@ -60,3 +60,44 @@ TEST(ShowControlConfig, reportsEveryMistakeWithItsLine) {
     EXPECT_TRUE(test::hasIssue(issues, 16, "max must exceed min")) << test::describe(issues);
     EXPECT_TRUE(test::hasIssue(issues, 17, "midi")) << test::describe(issues);
 }
+
+TEST(ShowControlConfig, readsTheMqttOutputWithCredentialFilesBesideTheConfig) {
+    TempDir dir;
+    dir.write("secrets/user", "station-7\n");
+    dir.write("secrets/password", "pw\n");
+    const StationConfig cfg = loadStationConfig(dir.write("s.yaml", std::string(test::kBoxStation) + R"(show_control:
+  mqtt:
+    broker: "broker.local:8883"
+    topic_prefix: museum/hall-2
+    rate_hz: 2
+    username_file: secrets/user
+    password_file: secrets/password
+    event_queue: 50
+)"));
+    const MqttOutputConfig& m = cfg.showControl.mqtt;
+    EXPECT_TRUE(m.enabled);
+    EXPECT_EQ(m.broker.text(), "broker.local:8883");
+    EXPECT_EQ(m.topicPrefix, "museum/hall-2");
+    EXPECT_DOUBLE_EQ(m.rateHz, 2.0);
+    EXPECT_EQ(m.eventQueue, 50);
+    EXPECT_EQ(m.passwordFile, (dir.path() / "secrets/password").lexically_normal());
+}
+
+TEST(ShowControlConfig, mqttMistakesAreReportedWithTheirLines) {
+    TempDir dir;
+    dir.write("user", "station-7\n");
+    const auto issues = test::configIssues(dir.write("s.yaml", std::string(test::kBoxStation) + R"(show_control:
+  mqtt:
+    broker: "broker.local"
+    topic_prefix: "museum/#"
+    username_file: user
+    rate_hz: 0
+    tls: {ca_file: missing-ca.pem}
+)"));
+    const std::string all = test::describe(issues);
+    EXPECT_NE(all.find("show_control.mqtt.broker: 'broker.local' is not a target"), std::string::npos) << all;
+    EXPECT_NE(all.find("topic_prefix: 'museum/#' cannot start a topic"), std::string::npos) << all;
+    EXPECT_TRUE(test::hasIssue(issues, 14, "missing-ca.pem")) << all;
+    EXPECT_TRUE(test::hasIssue(issues, 13, "rate_hz")) << all;
+    EXPECT_NE(all.find("username_file and password_file come together"), std::string::npos) << all;
+}

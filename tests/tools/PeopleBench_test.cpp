@@ -19,9 +19,10 @@ TEST(PeopleBench, shortRunFindsTheWalkersAndSendsEveryFrame) {
     EXPECT_EQ(line["bench"], "people");
     for (const char* matte : {"true_masks", "own_matte"}) {
         const nlohmann::json& m = line[matte];
-        for (const char* key : {"position_err_m_median", "position_err_m_p95", "bias_along_view_m",
-                                "bias_along_view_m_uncorrected", "velocity_err_mps_median", "id_switches_per_walker_min",
-                                "losses_per_walker_min", "people_ms_median", "capture_to_sent_ms_median"})
+        for (const char* key :
+             {"position_err_m_median", "position_err_m_p95", "bias_along_view_m", "bias_along_view_m_uncorrected",
+              "velocity_err_mps_median", "id_switches_per_walker_min", "losses_per_walker_min", "people_ms_median",
+              "capture_to_sent_ms_median"})
             EXPECT_TRUE(m.contains(key) && m[key].is_number()) << matte << " " << key << "\n" << r.out;
         EXPECT_EQ(m["datagrams_sent"], 2 * 60) << matte << ": OSC and TUIO, each frame";
         EXPECT_GT(m["matched_pct"].get<double>(), 90.0) << matte;

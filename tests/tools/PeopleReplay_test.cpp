@@ -58,8 +58,8 @@ show_control:
   osc: {targets: ["127.0.0.1:)"
                            << rx.port() << R"("]}
 )";
-    const ChildResult r = runChild(
-        {ARCOMP_BINARY, "replay", station.string(), "--video", (dir / "shape.avi").string(), "--out", (dir / name / "frames").string(), "--log-level", "error"});
+    const ChildResult r = runChild({ARCOMP_BINARY, "replay", station.string(), "--video", (dir / "shape.avi").string(),
+                                    "--out", (dir / name / "frames").string(), "--log-level", "error"});
     EXPECT_EQ(r.code, 0) << r.output;
     return rx.receive(std::chrono::milliseconds(500), kFrames);
 }
