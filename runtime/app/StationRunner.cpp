@@ -74,6 +74,7 @@ bool StationRunner::step() {
     if (station_->outputFailures() != failedBefore) reportOutputFailure();
     metrics_.setCamera(station_->inputName(), station_->inputState(), station_->inputDrops());
     if (!drawn) return false;
+    metrics_.setPeople(station_->people().people.size(), station_->showControl().outputs());
     ++frames_;
     // Start to start, so a window's vsync wait and presentation count.
     metrics_.recordFrame(lastStepStart_ < 0.0 ? station_->stats().totalMs : (start - lastStepStart_) * 1000.0);

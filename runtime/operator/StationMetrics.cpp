@@ -69,6 +69,12 @@ void StationMetrics::setCamera(const std::string& name, const SourceState& state
     camera.drops = drops;
 }
 
+void StationMetrics::setPeople(std::size_t people, std::vector<OutputStatus> outputs) {
+    std::lock_guard lock(mutex_);
+    people_ = people;
+    outputs_ = std::move(outputs);
+}
+
 void StationMetrics::recordError(std::string message) {
     std::lock_guard lock(mutex_);
     ++errors_;
@@ -96,6 +102,16 @@ std::string StationMetrics::statusJson() const {
                            {"reason", camera.state.reason},
                            {"drops", camera.drops},
                            {"reconnects", camera.reconnects}});
+    status["people"] = people_;
+    nlohmann::ordered_json& outputs = status["outputs"] = nlohmann::ordered_json::array();
+    for (const OutputStatus& o : outputs_)
+        outputs.push_back({{"kind", o.kind},
+                           {"target", o.target},
+                           {"state", o.state},
+                           {"sent", o.sent},
+                           {"dropped", o.dropped},
+                           {"queued", o.queued},
+                           {"last_error", o.lastError}});
     status["errors"] = errors_;
     status["last_errors"] = lastErrors_;
     // A device name or an OS message that is not UTF-8 must not cost the
@@ -136,6 +152,25 @@ std::string StationMetrics::prometheusText() const {
          "# TYPE arcomp_camera_reconnects_total counter\n";
     for (const auto& [name, camera] : cameras_)
         s << "arcomp_camera_reconnects_total{camera=\"" << labelValue(name) << "\"} " << camera.reconnects << '\n';
+    s << "# HELP arcomp_people Visitors the station follows, this frame.\n"
+         "# TYPE arcomp_people gauge\n"
+      << "arcomp_people " << people_ << '\n';
+    const auto labels = [](const OutputStatus& o) {
+        return "{output=\"" + labelValue(o.kind) + "\",target=\"" + labelValue(o.target) + "\"}";
+    };
+    s << "# HELP arcomp_output_messages_sent_total Show-control messages (OSC and TUIO bundles, MQTT messages) sent.\n"
+         "# TYPE arcomp_output_messages_sent_total counter\n";
+    for (const OutputStatus& o : outputs_)
+        s << "arcomp_output_messages_sent_total" << labels(o) << ' ' << o.sent << '\n';
+    s << "# HELP arcomp_output_messages_dropped_total Show-control messages dropped: the socket was full, the broker "
+         "away.\n"
+         "# TYPE arcomp_output_messages_dropped_total counter\n";
+    for (const OutputStatus& o : outputs_)
+        s << "arcomp_output_messages_dropped_total" << labels(o) << ' ' << o.dropped << '\n';
+    s << "# HELP arcomp_output_up 1 while an output sends (MQTT: while connected to its broker), 0 otherwise.\n"
+         "# TYPE arcomp_output_up gauge\n";
+    for (const OutputStatus& o : outputs_)
+        s << "arcomp_output_up" << labels(o) << ' ' << (o.state == "sending" || o.state == "connected" ? 1 : 0) << '\n';
     s << "# HELP arcomp_errors_total Errors the station reported and recovered from.\n"
          "# TYPE arcomp_errors_total counter\n"
       << "arcomp_errors_total " << errors_ << '\n';

@@ -1,14 +1,16 @@
 #pragma once
 // What an operator can learn about a running station: frame times, drops,
-// camera states and the last errors. The frame loop records into it; the
+// camera states, the people and where they are sent, and the last errors. The frame loop records into it; the
 // status server renders it as JSON (/status) and Prometheus text (/metrics)
 // from another thread, so every call takes a short lock.
 //
 //   StationMetrics metrics;
 //   metrics.recordFrame(16.4);                              // each frame, ms
 //   metrics.setCamera("front", {SourceStatus::Streaming, ""}, drops);
+//   metrics.setPeople(station.people().people.size(), station.showControl().outputs());
 //   std::string text = metrics.prometheusText();
 
+#include "runtime/showcontrol/ShowControl.hpp"
 #include "video/sources/SourceStatus.hpp"
 
 #include <array>
@@ -18,6 +20,7 @@
 #include <map>
 #include <mutex>
 #include <string>
+#include <vector>
 
 namespace arcomp {
 
@@ -33,6 +36,8 @@ public:
     // `drops` is the source's running total; `reconnects` counts transitions
     // from lost back to streaming, which the station sees and the source does not report.
     void setCamera(const std::string& name, const SourceState& state, std::uint64_t drops);
+    // This frame's people, and each show-control output's state and counts.
+    void setPeople(std::size_t people, std::vector<OutputStatus> outputs);
     void recordError(std::string message);
     // A reload replaced the inputs: cameras no longer in use leave the report.
     void forgetCameras();
@@ -59,6 +64,8 @@ private:
     std::size_t framesInLastSecond() const;
     double lastFrameMs_ = 0.0;
     std::map<std::string, Camera> cameras_;
+    std::size_t people_ = 0;
+    std::vector<OutputStatus> outputs_;
     std::deque<std::string> lastErrors_;  // newest last, the last ten
     std::uint64_t errors_ = 0;
 };

@@ -58,4 +58,40 @@ TEST(StationMetrics, statusJsonSurvivesBytesThatAreNotUtf8) {
     EXPECT_EQ(json.back(), '}');
 }
 
+TEST(StationMetrics, peopleAndEachOutputsStateAndCountsShowInBothViews) {
+    StationMetrics metrics;
+    OutputStatus osc;
+    osc.kind = "osc";
+    osc.target = "127.0.0.1:9000";
+    osc.state = "sending";
+    osc.sent = 120;
+    osc.dropped = 2;
+    OutputStatus mqtt;
+    mqtt.kind = "mqtt";
+    mqtt.target = "broker.local:1883";
+    mqtt.state = "disconnected: The connection was refused.";
+    mqtt.dropped = 7;
+    mqtt.queued = 3;
+    metrics.setPeople(4, {osc, mqtt});
+
+    const std::string text = metrics.prometheusText();
+    EXPECT_NE(text.find("arcomp_people 4\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("arcomp_output_messages_sent_total{output=\"osc\",target=\"127.0.0.1:9000\"} 120\n"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("arcomp_output_messages_dropped_total{output=\"mqtt\",target=\"broker.local:1883\"} 7\n"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("arcomp_output_up{output=\"osc\",target=\"127.0.0.1:9000\"} 1\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("arcomp_output_up{output=\"mqtt\",target=\"broker.local:1883\"} 0\n"), std::string::npos)
+        << text;
+
+    const std::string json = metrics.statusJson();
+    EXPECT_NE(json.find("\"people\":4"), std::string::npos) << json;
+    EXPECT_NE(json.find("{\"kind\":\"mqtt\",\"target\":\"broker.local:1883\",\"state\":\"disconnected: The "
+                        "connection was refused.\",\"sent\":0,\"dropped\":7,\"queued\":3"),
+              std::string::npos)
+        << json;
+}
+
 }  // namespace arcomp

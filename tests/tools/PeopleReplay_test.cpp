@@ -4,6 +4,7 @@
 // /arcomp/leave once the tracker has given the person up, and two replays
 // of the file send the same messages in the same order with the same stamps.
 
+#include "tests/support/BoxStation.hpp"
 #include "tests/support/ChildProcess.hpp"
 #include "tests/support/OscReceiver.hpp"
 #include "tests/support/TempDir.hpp"
@@ -44,14 +45,7 @@ std::vector<OscReceiver::Message> replayed(const fs::path& dir, const std::strin
     fs::create_directories(dir / name);
     OscReceiver rx(dir / name);
     const fs::path station = dir / (name + ".yaml");
-    std::ofstream(station) << R"(scene:
-  objects:
-    - shape: box
-      position: [0, 0, -4]
-camera:
-  eye: [0, 0, 0]
-  target: [0, 0, -1]
-matte:
+    std::ofstream(station) << kBoxStation << R"(matte:
   kind: background
   background: {method: clean_plate, clean_plate: plate.png}
 show_control:

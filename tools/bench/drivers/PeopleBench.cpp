@@ -29,15 +29,13 @@
 #include "runtime/station/ReplayInput.hpp"
 #include "runtime/station/Station.hpp"
 #include "tools/bench/drivers/ArInstallation.hpp"
+#include "tools/bench/probes/LoopbackUdp.hpp"
 #include "tools/bench/report/BenchJson.hpp"
 #include "tools/bench/report/Stats.hpp"
 #include "tools/cli/Command.hpp"
 #include "video/matte/MaskFolderMatte.hpp"
 
-#include <netinet/in.h>
 #include <opencv2/imgcodecs.hpp>
-#include <sys/socket.h>
-#include <unistd.h>
 
 #include <iostream>
 #include <map>
@@ -73,27 +71,15 @@ struct Score {
 // every frame so that nothing waits in its buffer.
 class LoopbackSink {
 public:
-    LoopbackSink() {
-        fd_ = socket(AF_INET, SOCK_DGRAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
-        sockaddr_in a{};
-        a.sin_family = AF_INET;
-        a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-        socklen_t length = sizeof a;
-        if (fd_ < 0 || bind(fd_, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0 ||
-            getsockname(fd_, reinterpret_cast<sockaddr*>(&a), &length) != 0)
-            throw std::runtime_error("people bench: no UDP socket on loopback");
-        port_ = ntohs(a.sin_port);
-    }
-    ~LoopbackSink() { close(fd_); }
-    int port() const { return port_; }
+    int port() const { return socket_.port(); }
     void drain() {
-        char buffer[65536];
-        while (recv(fd_, buffer, sizeof buffer, 0) > 0) ++received_;
+        while (socket_.receive(buffer_, std::chrono::milliseconds(0)) > 0) ++received_;
     }
     std::size_t received() const { return received_; }
 
 private:
-    int fd_ = -1, port_ = 0;
+    LoopbackUdp socket_;
+    std::vector<std::uint8_t> buffer_ = std::vector<std::uint8_t>(65536);
     std::size_t received_ = 0;
 };
 
