@@ -11,6 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <set>
 
@@ -27,10 +29,64 @@ using namespace gltf;
 
 namespace {
 
-// Extensions whose absence from our support would change what is drawn, and
-// which we do support.
+// The extensions arcomp draws: a file may require them.
 const std::set<std::string> kSupportedRequired{"KHR_materials_unlit", "KHR_mesh_quantization", "KHR_texture_transform",
                                                "KHR_materials_emissive_strength"};
+
+// What a user can do about a required extension arcomp cannot draw.
+std::string remedy(const std::string& extension) {
+    if (extension == "KHR_draco_mesh_compression")
+        return "re-export without Draco mesh compression (Blender's glTF exporter: Compression off)";
+    if (extension == "EXT_meshopt_compression") return "re-export without meshopt compression (gltfpack without -c)";
+    if (extension == "KHR_texture_basisu") return "re-export with PNG or JPEG textures (gltfpack without -tc)";
+    if (extension == "EXT_texture_webp") return "re-export with PNG or JPEG textures";
+    std::string drawn;
+    for (const std::string& e : kSupportedRequired) drawn += (drawn.empty() ? "" : ", ") + e;
+    return "re-export without it; arcomp draws " + drawn;
+}
+
+// The document's JSON, read ahead of tinygltf: what an extension changes
+// (a Draco primitive's accessors have no bufferView) makes tinygltf stop
+// with a message that does not name the extension. Null when the JSON does
+// not parse: tinygltf then says what is wrong.
+nlohmann::json documentJson(const fs::path& file, bool binary) {
+    std::ifstream in(file, std::ios::binary);
+    std::string text;
+    if (!binary) {
+        text.assign(std::istreambuf_iterator<char>(in), {});
+    } else {
+        unsigned char header[20] = {};
+        in.read(reinterpret_cast<char*>(header), sizeof header);
+        if (in.gcount() != sizeof header || std::memcmp(header + 16, "JSON", 4) != 0) return nullptr;
+        const std::uint32_t length = header[12] | header[13] << 8 | header[14] << 16 | std::uint32_t(header[15]) << 24;
+        text.resize(std::min<std::uint32_t>(length, 64u << 20));
+        in.read(text.data(), static_cast<std::streamsize>(text.size()));
+        text.resize(static_cast<std::size_t>(in.gcount()));
+    }
+    return nlohmann::json::parse(text, nullptr, false);
+}
+
+// Refuses the first required extension arcomp cannot draw; warns once for
+// each used one it leaves out.
+void checkExtensions(const nlohmann::json& doc, const std::string& name, std::vector<std::string>& warnings) {
+    if (!doc.is_object()) return;
+    std::set<std::string> required;
+    if (const auto r = doc.find("extensionsRequired"); r != doc.end() && r->is_array())
+        for (std::size_t i = 0; i < r->size(); ++i) {
+            if (!(*r)[i].is_string()) continue;
+            const std::string extension = (*r)[i];
+            if (!kSupportedRequired.contains(extension))
+                throw ModelError(name, ptr("extensionsRequired", i),
+                                 "requires extension " + extension +
+                                     ", which arcomp cannot draw: " + remedy(extension));
+            required.insert(extension);
+        }
+    if (const auto u = doc.find("extensionsUsed"); u != doc.end() && u->is_array())
+        for (const auto& used : *u)
+            if (used.is_string() && !kSupportedRequired.contains(used.get<std::string>()))
+                warnings.push_back("uses extension " + used.get<std::string>() +
+                                   ", which arcomp does not draw: the model is drawn without it");
+}
 
 struct FileAccess {
     fs::path folder;
@@ -249,6 +305,8 @@ ParsedModel parseGltf(const fs::path& file) {
     char magic[4] = {};
     probe.read(magic, 4);
     const bool binary = probe.gcount() == 4 && std::equal(magic, magic + 4, "glTF");
+    ParsedModel out;
+    checkExtensions(documentJson(file, binary), name, out.warnings);
     bool ok = false;
     try {
         ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, name)
@@ -265,11 +323,6 @@ ParsedModel parseGltf(const fs::path& file) {
         throw ModelError(name, "", err.empty() ? "not a readable glTF file" : err);
     }
 
-    ParsedModel out;
-    for (std::size_t i = 0; i < model.extensionsRequired.size(); ++i)
-        if (!kSupportedRequired.contains(model.extensionsRequired[i]))
-            throw ModelError(name, ptr("extensionsRequired", i),
-                             "requires extension " + model.extensionsRequired[i] + ", which arcomp does not support");
     for (std::size_t start = 0; start < warn.size();) {
         const auto end = warn.find('\n', start);
         const std::string line = warn.substr(start, end - start);
