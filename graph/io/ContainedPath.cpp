@@ -1,5 +1,7 @@
 #include "graph/io/ContainedPath.hpp"
 
+#include <algorithm>
+
 namespace arcomp {
 
 namespace fs = std::filesystem;
@@ -8,7 +10,20 @@ std::optional<fs::path> containedPath(const fs::path& folder, const std::string&
     const auto colon = uri.find(':');
     const auto slash = uri.find('/');
     if (uri.starts_with("data:")) {
-        reason = "data URI '" + uri.substr(0, 40) + "' is not base64-encoded; only base64 data URIs are supported";
+        // tinygltf reads a data URI itself when it knows its media type;
+        // what reaches here is another type, or not base64.
+        const std::size_t base64 = uri.find(";base64,");
+        const std::string type = uri.substr(5, std::min(uri.find_first_of(";,"), std::size_t{45}) - 5);
+        if (base64 == std::string::npos)
+            reason = "data URI '" + uri.substr(0, 40) + "' is not base64-encoded; only base64 data URIs are supported";
+        else if (type == "image/webp")
+            reason = "data URI '" + uri.substr(0, 40) +
+                     "' holds a WebP image (EXT_texture_webp), which arcomp cannot decode; re-export with PNG or JPEG "
+                     "textures";
+        else
+            reason = "data URI '" + uri.substr(0, 40) + "' has media type '" + type +
+                     "', which the glTF reader does not take; expected application/octet-stream, "
+                     "application/gltf-buffer, image/png or image/jpeg";
         return std::nullopt;
     }
     if (colon != std::string::npos && (slash == std::string::npos || colon < slash)) {

@@ -66,9 +66,9 @@ nlohmann::json documentJson(const fs::path& file, bool binary) {
     return nlohmann::json::parse(text, nullptr, false);
 }
 
-// Refuses the first required extension arcomp cannot draw; warns once for
-// each used one it leaves out.
-void checkExtensions(const nlohmann::json& doc, const std::string& name, std::vector<std::string>& warnings) {
+// Refuses the first required extension arcomp cannot draw; lists, and warns
+// once for, each used one it leaves out.
+void checkExtensions(const nlohmann::json& doc, const std::string& name, ParsedModel& out) {
     if (!doc.is_object()) return;
     std::set<std::string> required;
     if (const auto r = doc.find("extensionsRequired"); r != doc.end() && r->is_array())
@@ -83,9 +83,11 @@ void checkExtensions(const nlohmann::json& doc, const std::string& name, std::ve
         }
     if (const auto u = doc.find("extensionsUsed"); u != doc.end() && u->is_array())
         for (const auto& used : *u)
-            if (used.is_string() && !kSupportedRequired.contains(used.get<std::string>()))
-                warnings.push_back("uses extension " + used.get<std::string>() +
-                                   ", which arcomp does not draw: the model is drawn without it");
+            if (used.is_string() && !kSupportedRequired.contains(used.get<std::string>())) {
+                out.notDrawn.push_back(used.get<std::string>());
+                out.warnings.push_back("uses extension " + used.get<std::string>() +
+                                       ", which arcomp does not draw: the model is drawn without it");
+            }
 }
 
 struct FileAccess {
@@ -306,7 +308,7 @@ ParsedModel parseGltf(const fs::path& file) {
     probe.read(magic, 4);
     const bool binary = probe.gcount() == 4 && std::equal(magic, magic + 4, "glTF");
     ParsedModel out;
-    checkExtensions(documentJson(file, binary), name, out.warnings);
+    checkExtensions(documentJson(file, binary), name, out);
     bool ok = false;
     try {
         ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, name)

@@ -115,6 +115,7 @@ LoadedModel placeModel(ParsedModel model, Scene& scene, NodeId parent, const std
     LoadedModel out;
     out.root = append(model, scene, parent, name, placeMesh, out);
     out.warnings = std::move(model.warnings);
+    out.notDrawn = std::move(model.notDrawn);
     return out;
 }
 

@@ -32,6 +32,7 @@ namespace arcomp {
 struct LoadedModel {
     NodeId root = kNoNode;
     std::vector<std::string> warnings;
+    std::vector<std::string> notDrawn;  // extensions the file uses that arcomp leaves out
     // glTF animations, their channels bound to the placed nodes
     // (graph/animation/AnimationPlayer.hpp plays one).
     std::vector<ModelAnimation> animations;
@@ -66,6 +67,7 @@ struct ParsedModel {
     std::vector<Material> materials;
     std::vector<Image> images;
     std::vector<std::string> warnings;
+    std::vector<std::string> notDrawn;      // extensions the file uses that arcomp leaves out
     std::vector<AnimationClip> animations;  // channel targets index `nodes`
     std::vector<Skin> skins;                // joints and users index `nodes`
 };

@@ -137,6 +137,7 @@ SceneFile loadSceneFile(const fs::path& file) {
     }
     LoadedModel loaded = loadModel(file, out.world.scene, out.world.scene.root());
     out.warnings = std::move(loaded.warnings);
+    out.notDrawn = std::move(loaded.notDrawn);
     out.animations = std::move(loaded.animations);
     out.skins = std::move(loaded.skins);
     out.background = glm::vec4(0.0f);

@@ -27,6 +27,7 @@ struct SceneFile {
     // Models a config names that could not be loaded are skipped, each with
     // a line here: the station goes on with the rest.
     std::vector<std::string> warnings;
+    std::vector<std::string> notDrawn;  // a model file's extensions arcomp leaves out
     // A model file's glTF animations and skins (a config's objects play
     // theirs through world.animations instead).
     std::vector<ModelAnimation> animations;

@@ -170,6 +170,19 @@ TEST(GltfLoader, eachUsedExtensionItDoesNotDrawIsOneWarningAndTheModelLoads) {
     ASSERT_EQ(about.size(), 2u);
     EXPECT_NE(about[0].find("KHR_lights_punctual"), std::string::npos) << about[0];
     EXPECT_NE(about[1].find("KHR_materials_variants"), std::string::npos) << about[1];
+    EXPECT_EQ(m.notDrawn, (std::vector<std::string>{"KHR_lights_punctual", "KHR_materials_variants"}));
+}
+
+TEST(GltfLoader, aDataUriTheReaderDoesNotTakeIsRefusedForItsRealCause) {
+    TempDir dir;
+    const auto withImage = [&](const std::string& name, const std::string& uri) {
+        return dir.write(name, triangleGltf(dataUri(triangleBytes()), R"(, "images": [{"uri": ")" + uri + "\"}]"));
+    };
+    expectModelRejected(withImage("webp.gltf", "data:image/webp;base64,UklGRhoAAABXRUJQ"), "",
+                        "holds a WebP image (EXT_texture_webp), which arcomp cannot decode");
+    expectModelRejected(withImage("ktx2.gltf", "data:image/ktx2;base64,q0tUWCAyMLsNChoK"), "",
+                        "has media type 'image/ktx2', which the glTF reader does not take");
+    expectModelRejected(withImage("plain.gltf", "data:image/png,not-base64"), "", "is not base64-encoded");
 }
 
 TEST(GltfLoader, rejectsGarbageAndEmptyFiles) {

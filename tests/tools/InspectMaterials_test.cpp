@@ -60,3 +60,12 @@ TEST(InspectMaterials, eachDrawnMaterialListsItsFeatures) {
     EXPECT_EQ(r.out.find("'spare'"), std::string::npos) << "a material no mesh draws with is not listed\n" << r.out;
     EXPECT_EQ(r.out.find("'default'"), std::string::npos) << r.out;
 }
+
+TEST(InspectMaterials, extensionsTheFileUsesAndArcompLeavesOutAreListedAsNotDrawn) {
+    QuadGltf q;
+    q.extensionsUsed = R"(["KHR_materials_unlit", "KHR_lights_punctual", "KHR_materials_clearcoat"])";
+    TempDir dir;
+    const ShellResult r = arcompCommand("inspect " + dir.write("quad.gltf", q.json()).string());
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_EQ(lineStarting(r.out, "not drawn:"), "not drawn: KHR_lights_punctual KHR_materials_clearcoat") << r.out;
+}

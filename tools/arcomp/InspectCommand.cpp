@@ -157,6 +157,11 @@ int inspect(const std::string& path) {
                   << b.radius << "\n";
     printMaterials(scene);
     printAnimations(file);
+    if (!file.notDrawn.empty()) {
+        std::cout << "not drawn:";
+        for (const std::string& e : file.notDrawn) std::cout << ' ' << e;
+        std::cout << "\n";
+    }
     for (const std::string& w : file.warnings) std::cout << "warning: " << w << "\n";
     return kExitOk;
 }
