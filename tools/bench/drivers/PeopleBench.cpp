@@ -38,7 +38,6 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include <iostream>
-#include <map>
 
 namespace arcomp {
 namespace {
