@@ -1,8 +1,9 @@
 #pragma once
 // What an operator can learn about a running station: frame times, drops,
-// camera states, the people and where they are sent, and the last errors. The frame loop records into it; the
-// status server renders it as JSON (/status) and Prometheus text (/metrics)
-// from another thread, so every call takes a short lock.
+// camera states, the people and where they are sent, and the last errors.
+// The frame loop records into it; the status server renders it as JSON
+// (/status) and Prometheus text (/metrics) from another thread, so every
+// call takes a short lock.
 //
 //   StationMetrics metrics;
 //   metrics.recordFrame(16.4);                              // each frame, ms

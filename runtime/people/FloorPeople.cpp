@@ -104,8 +104,7 @@ const PeopleFrame& FloorPeople::update(const std::vector<TrackedPerson>& tracks,
     for (const Person& p : now_.people)
         if (!std::binary_search(before.begin(), before.end(), p.id)) now_.entered.push_back(p.id);
     for (const int id : before)
-        if (!std::any_of(now_.people.begin(), now_.people.end(), [id](const Person& p) { return p.id == id; }))
-            now_.left.push_back(id);
+        if (!findPerson(now_, id)) now_.left.push_back(id);
     followed_ = std::move(followed);
     return now_;
 }

@@ -14,6 +14,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -50,5 +51,12 @@ struct PeopleFrame {
     std::vector<int> entered;    // ids in `people` for the first time this frame
     std::vector<int> left;       // ids in the previous frame's `people` and not in this one's
 };
+
+// The person with `id` in `frame`; null when there is none.
+inline const Person* findPerson(const PeopleFrame& frame, int id) {
+    const auto at = std::lower_bound(frame.people.begin(), frame.people.end(), id,
+                                     [](const Person& p, int wanted) { return p.id < wanted; });
+    return at != frame.people.end() && at->id == id ? &*at : nullptr;
+}
 
 }  // namespace arcomp

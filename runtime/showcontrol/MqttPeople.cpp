@@ -158,14 +158,13 @@ void MqttPeople::publish(const PeopleFrame& frame) {
     const std::string units = unitsName(frame.units);
     std::lock_guard lock(mutex_);
     for (const int id : frame.entered)
-        for (const Person& p : frame.people)
-            if (p.id == id) {
-                nlohmann::json e = personJson(p);
-                e["frame"] = frame.frame;
-                e["seconds"] = frame.seconds;
-                e["units"] = units;
-                sendEvent({cfg_.topicPrefix + "/enter", e.dump()});
-            }
+        if (const Person* p = findPerson(frame, id)) {
+            nlohmann::json e = personJson(*p);
+            e["frame"] = frame.frame;
+            e["seconds"] = frame.seconds;
+            e["units"] = units;
+            sendEvent({cfg_.topicPrefix + "/enter", e.dump()});
+        }
     for (const int id : frame.left)
         sendEvent({cfg_.topicPrefix + "/leave",
                    nlohmann::json{{"id", id}, {"frame", frame.frame}, {"seconds", frame.seconds}}.dump()});

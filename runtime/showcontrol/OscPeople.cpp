@@ -2,8 +2,6 @@
 
 #include "runtime/showcontrol/OscBundle.hpp"
 
-#include <algorithm>
-
 namespace arcomp {
 
 std::vector<std::uint8_t> oscPeopleBundle(const PeopleFrame& frame) {
@@ -13,11 +11,8 @@ std::vector<std::uint8_t> oscPeopleBundle(const PeopleFrame& frame) {
         .f(static_cast<float>(frame.seconds))
         .s(unitsName(frame.units))
         .i(static_cast<std::int32_t>(frame.people.size()));
-    for (const int id : frame.entered) {
-        const auto p =
-            std::find_if(frame.people.begin(), frame.people.end(), [id](const Person& q) { return q.id == id; });
-        b.add("/arcomp/enter").i(id).f(p->position.x).f(p->position.y);
-    }
+    for (const int id : frame.entered)
+        if (const Person* p = findPerson(frame, id)) b.add("/arcomp/enter").i(id).f(p->position.x).f(p->position.y);
     for (const Person& p : frame.people)
         b.add("/arcomp/person")
             .i(p.id)

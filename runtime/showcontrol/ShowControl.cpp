@@ -6,8 +6,10 @@ namespace arcomp {
 
 ShowControl::ShowControl(const ShowControlConfig& cfg) : tuio_(cfg.tuio.floorMin, cfg.tuio.floorMax) {
     auto open = [this](const NetworkTarget& target, const char* kind, bool tuio) {
-        OutputStatus s{
-            .kind = kind, .target = target.text(), .state = "sending", .sent = 0, .dropped = 0, .lastError = {}};
+        OutputStatus s;
+        s.kind = kind;
+        s.target = target.text();
+        s.state = "sending";
         Route route{.sender = std::nullopt, .status = status_.size(), .tuio = tuio};
         try {
             route.sender.emplace(target);
@@ -21,11 +23,15 @@ ShowControl::ShowControl(const ShowControlConfig& cfg) : tuio_(cfg.tuio.floorMin
     for (const NetworkTarget& t : cfg.osc.targets) open(t, "osc", false);
     for (const NetworkTarget& t : cfg.tuio.targets) open(t, "tuio", true);
     if (cfg.mqtt.enabled) {
-        mqttBroker_ = cfg.mqtt.broker.text();
         try {
             mqtt_ = std::make_unique<MqttPeople>(cfg.mqtt);
         } catch (const ShowControlError& e) {
-            mqttOff_ = std::string("off: ") + e.what();
+            // Off for the run: its status stays as it is now, after the others'.
+            OutputStatus s;
+            s.kind = "mqtt";
+            s.target = cfg.mqtt.broker.text();
+            s.state = std::string("off: ") + e.what();
+            status_.push_back(std::move(s));
             problems_.push_back(std::string("mqtt output off: ") + e.what());
         }
     }
@@ -43,17 +49,11 @@ std::vector<OutputStatus> ShowControl::outputs() const {
         s.dropped = m.dropped;
         s.queued = m.queued;
         out.push_back(std::move(s));
-    } else if (!mqttOff_.empty()) {
-        OutputStatus s;
-        s.kind = "mqtt";
-        s.target = mqttBroker_;
-        s.state = mqttOff_;
-        out.push_back(std::move(s));
     }
     return out;
 }
 
-void ShowControl::publish(const PeopleFrame& frame) {
+std::chrono::steady_clock::time_point ShowControl::publish(const PeopleFrame& frame) {
     // Each kind's bundle is made once a frame, for all its targets.
     std::optional<std::vector<std::uint8_t>> osc, tuio;
     for (Route& route : routes_) {
@@ -68,8 +68,9 @@ void ShowControl::publish(const PeopleFrame& frame) {
             s.lastError = route.sender->lastError();
         }
     }
-    lastSent_ = std::chrono::steady_clock::now();
+    const auto sent = std::chrono::steady_clock::now();
     if (mqtt_) mqtt_->publish(frame);
+    return sent;
 }
 
 }  // namespace arcomp

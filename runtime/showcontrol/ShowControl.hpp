@@ -43,14 +43,13 @@ class ShowControl {
 public:
     explicit ShowControl(const ShowControlConfig& cfg);
 
-    void publish(const PeopleFrame& frame);
+    // Gives when the OSC and TUIO datagrams had left (MQTT's leave on its own thread).
+    std::chrono::steady_clock::time_point publish(const PeopleFrame& frame);
 
     // Every output's state now (MQTT's changes on its own thread).
     std::vector<OutputStatus> outputs() const;
     const std::vector<std::string>& problems() const { return problems_; }
-    bool empty() const { return status_.empty() && !mqtt_; }
-    // When the last publish() handed its last datagram to the sockets.
-    std::chrono::steady_clock::time_point lastSent() const { return lastSent_; }
+    bool empty() const { return routes_.empty() && !mqtt_; }  // nothing to send to
 
 private:
     struct Route {
@@ -60,12 +59,9 @@ private:
     };
     TuioCursors tuio_;
     std::vector<Route> routes_;
-    std::vector<OutputStatus> status_;  // OSC and TUIO, in routes_' order
+    std::vector<OutputStatus> status_;  // OSC and TUIO in routes_' order, then an MQTT output that is off
     std::unique_ptr<MqttPeople> mqtt_;
-    std::string mqttOff_;  // why the configured MQTT output is off
-    std::string mqttBroker_;
     std::vector<std::string> problems_;
-    std::chrono::steady_clock::time_point lastSent_{};
 };
 
 }  // namespace arcomp

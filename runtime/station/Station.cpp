@@ -164,9 +164,8 @@ bool Station::frame() {
     stats_.trackMs = clock.lap();
     people_.update(personDepths_.people(), personDepths_.scale(), stats_.frame, now.seconds, now.newFrame);
     if (now.newFrame && !showControl_.empty()) {
-        showControl_.publish(people_.people());
-        stats_.captureToPeopleSentMs =
-            std::chrono::duration<double, std::milli>(showControl_.lastSent() - now.capturedAt).count();
+        const auto sent = showControl_.publish(people_.people());
+        stats_.captureToPeopleSentMs = std::chrono::duration<double, std::milli>(sent - now.capturedAt).count();
     }
     stats_.peopleMs = clock.lap();
 

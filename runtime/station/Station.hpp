@@ -143,7 +143,7 @@ public:
     // The last frame's visitors as the outputs publish them: on the floor in
     // metres with a calibrated camera, else in the picture.
     const PeopleFrame& people() const { return people_.people(); }
-    // Where the people go: each OSC and TUIO target's state and counts.
+    // Where the people go: each OSC, TUIO and MQTT output's state and counts.
     const ShowControl& showControl() const { return showControl_; }
     // Overrides the camera (tests move it along a path); keeps the intrinsics.
     void setCamera(const glm::vec3& eye, const glm::vec3& target);
