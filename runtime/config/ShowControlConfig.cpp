@@ -42,7 +42,12 @@ std::vector<NetworkTarget> readTargets(YamlMap& section) {
     for (std::size_t i = 0; i < list.size(); ++i) {
         const std::string where = key + "[" + std::to_string(i) + "]";
         const YAML::Node item = list[i];
-        const std::string text = item.IsScalar() ? item.Scalar() : std::string();
+        if (!item.IsScalar()) {
+            section.report().add(item.Mark(),
+                                 where + ": expected \"host:port\" as one string, e.g. \"127.0.0.1:9000\"");
+            continue;
+        }
+        const std::string text = item.Scalar();
         if (auto target = parseTarget(text, where, item.Mark(), section.report())) out.push_back(*target);
     }
     return out;

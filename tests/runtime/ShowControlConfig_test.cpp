@@ -46,6 +46,7 @@ TEST(ShowControlConfig, reportsEveryMistakeWithItsLine) {
       - "127.0.0.1"
       - "host:99999"
       - ":9000"
+      - [127.0.0.1, 9000]
   tuio:
     targets: "127.0.0.1:3333"
     floor: {min: [4, 0], max: [-4, 3]}
@@ -56,9 +57,11 @@ TEST(ShowControlConfig, reportsEveryMistakeWithItsLine) {
         << test::describe(issues);
     EXPECT_TRUE(test::hasIssue(issues, 12, "'host:99999' is not a target")) << test::describe(issues);
     EXPECT_TRUE(test::hasIssue(issues, 13, "':9000' is not a target")) << test::describe(issues);
-    EXPECT_TRUE(test::hasIssue(issues, 15, "show_control.tuio.targets: expected a list")) << test::describe(issues);
-    EXPECT_TRUE(test::hasIssue(issues, 16, "max must exceed min")) << test::describe(issues);
-    EXPECT_TRUE(test::hasIssue(issues, 17, "midi")) << test::describe(issues);
+    EXPECT_TRUE(test::hasIssue(issues, 14, "targets[3]: expected \"host:port\" as one string"))
+        << test::describe(issues);
+    EXPECT_TRUE(test::hasIssue(issues, 16, "show_control.tuio.targets: expected a list")) << test::describe(issues);
+    EXPECT_TRUE(test::hasIssue(issues, 17, "max must exceed min")) << test::describe(issues);
+    EXPECT_TRUE(test::hasIssue(issues, 18, "midi")) << test::describe(issues);
 }
 
 TEST(ShowControlConfig, readsTheMqttOutputWithCredentialFilesBesideTheConfig) {
