@@ -1,10 +1,15 @@
-// glTF 2.0 through tinygltf, then checked index by index before anything is
-// used: tinygltf parses JSON and reads buffers, but leaves ranges, types and
-// the node graph to the caller.
+// glTF 2.0: arcomp reads the file, its buffers and images and decodes what
+// is compressed (GltfDocument); tinygltf parses the rest of the JSON into
+// its structs; then everything is checked index by index before it is
+// used, since tinygltf leaves ranges, types and the node graph to the
+// caller.
 
-#include "graph/io/ContainedPath.hpp"
 #include "graph/io/GltfAnimation.hpp"
+#include "graph/io/GltfDocument.hpp"
+#include "graph/io/GltfDraco.hpp"
+#include "graph/io/GltfImages.hpp"
 #include "graph/io/GltfMaterial.hpp"
+#include "graph/io/GltfMeshopt.hpp"
 #include "graph/io/GltfReader.hpp"
 #include "graph/io/ModelLoader.hpp"
 
@@ -30,143 +35,107 @@ using namespace gltf;
 namespace {
 
 // The extensions arcomp draws: a file may require them.
-const std::set<std::string> kSupportedRequired{"KHR_materials_unlit", "KHR_mesh_quantization", "KHR_texture_transform",
-                                               "KHR_materials_emissive_strength"};
+const std::set<std::string> kSupportedRequired{
+    "KHR_materials_unlit",        "KHR_mesh_quantization",   "KHR_texture_transform", "KHR_materials_emissive_strength",
+    "KHR_draco_mesh_compression", "EXT_meshopt_compression", "EXT_texture_webp"};
 
 // What a user can do about a required extension arcomp cannot draw.
 std::string remedy(const std::string& extension) {
-    if (extension == "KHR_draco_mesh_compression")
-        return "re-export without Draco mesh compression (Blender's glTF exporter: Compression off)";
-    if (extension == "EXT_meshopt_compression") return "re-export without meshopt compression (gltfpack without -c)";
-    if (extension == "KHR_texture_basisu") return "re-export with PNG or JPEG textures (gltfpack without -tc)";
-    if (extension == "EXT_texture_webp") return "re-export with PNG or JPEG textures";
+    if (extension == "KHR_texture_basisu")
+        return "Debian 12 has no KTX2 decoder; re-export with PNG, JPEG or WebP textures (gltfpack without -tc)";
     std::string drawn;
     for (const std::string& e : kSupportedRequired) drawn += (drawn.empty() ? "" : ", ") + e;
     return "re-export without it; arcomp draws " + drawn;
 }
 
-// The document's JSON, read ahead of tinygltf: what an extension changes
-// (a Draco primitive's accessors have no bufferView) makes tinygltf stop
-// with a message that does not name the extension. Null when the JSON does
-// not parse: tinygltf then says what is wrong.
-nlohmann::json documentJson(const fs::path& file, bool binary) {
-    std::ifstream in(file, std::ios::binary);
-    std::string text;
-    if (!binary) {
-        text.assign(std::istreambuf_iterator<char>(in), {});
-    } else {
-        unsigned char header[20] = {};
-        in.read(reinterpret_cast<char*>(header), sizeof header);
-        if (in.gcount() != sizeof header || std::memcmp(header + 16, "JSON", 4) != 0) return nullptr;
-        const std::uint32_t length = header[12] | header[13] << 8 | header[14] << 16 | std::uint32_t(header[15]) << 24;
-        text.resize(std::min<std::uint32_t>(length, 64u << 20));
-        in.read(text.data(), static_cast<std::streamsize>(text.size()));
-        text.resize(static_cast<std::size_t>(in.gcount()));
-    }
-    return nlohmann::json::parse(text, nullptr, false);
+// What is drawn in place of a used extension arcomp leaves out.
+std::string drawnInstead(const std::string& extension) {
+    if (extension == "KHR_texture_basisu") return "its textures are drawn from their fallback images";
+    return "the model is drawn without it";
 }
 
 // Refuses the first required extension arcomp cannot draw; lists, and warns
 // once for, each used one it leaves out.
 void checkExtensions(const nlohmann::json& doc, const std::string& name, ParsedModel& out) {
-    if (!doc.is_object()) return;
-    std::set<std::string> required;
-    if (const auto r = doc.find("extensionsRequired"); r != doc.end() && r->is_array())
+    if (const auto r = doc.find("extensionsRequired"); r != doc.end()) {
+        if (!r->is_array()) throw ModelError(name, "/extensionsRequired", "is not an array of extension names");
         for (std::size_t i = 0; i < r->size(); ++i) {
-            if (!(*r)[i].is_string()) continue;
+            if (!(*r)[i].is_string()) throw ModelError(name, ptr("extensionsRequired", i), "is not an extension name");
             const std::string extension = (*r)[i];
             if (!kSupportedRequired.contains(extension))
                 throw ModelError(name, ptr("extensionsRequired", i),
                                  "requires extension " + extension +
                                      ", which arcomp cannot draw: " + remedy(extension));
-            required.insert(extension);
         }
+    }
     if (const auto u = doc.find("extensionsUsed"); u != doc.end() && u->is_array())
         for (const auto& used : *u)
             if (used.is_string() && !kSupportedRequired.contains(used.get<std::string>())) {
-                out.notDrawn.push_back(used.get<std::string>());
-                out.warnings.push_back("uses extension " + used.get<std::string>() +
-                                       ", which arcomp does not draw: the model is drawn without it");
+                const std::string extension = used.get<std::string>();
+                out.notDrawn.push_back(extension);
+                out.warnings.push_back("uses extension " + extension +
+                                       ", which arcomp does not draw: " + drawnInstead(extension));
             }
 }
 
-struct FileAccess {
-    fs::path folder;
-    std::string refusal;  // first refusal, reported instead of tinygltf's "file not found"
+// What tinygltf 2.7 would refuse while parsing, set aside so that arcomp's
+// own checks see it: tinygltf gets the document without buffers and images
+// (arcomp read and decoded them), with a WebP texture's source in place of
+// its fallback, an unknown accessor type as SCALAR and indices without a
+// buffer view left out; parseGltf puts the last two back.
+struct SetAside {
+    nlohmann::json tinygltfJson;
+    std::vector<std::size_t> unknownTypes;            // accessors
+    std::vector<std::array<std::size_t, 3>> indices;  // mesh, primitive, accessor
 };
 
+SetAside setAside(const GltfDocument& doc) {
+    SetAside out{doc.json, {}, {}};
+    nlohmann::json& j = out.tinygltfJson;
+    j.erase("buffers");
+    j.erase("images");
+    if (auto t = j.find("textures"); t != j.end() && t->is_array())
+        for (auto& texture : *t)
+            if (const nlohmann::json* ext = member(texture, "extensions"))
+                if (const nlohmann::json* webp = member(*ext, "EXT_texture_webp"))
+                    if (const nlohmann::json* source = member(*webp, "source")) texture["source"] = *source;
+    const std::set<std::string> types{"SCALAR", "VEC2", "VEC3", "VEC4", "MAT2", "MAT3", "MAT4"};
+    const auto a = j.find("accessors");
+    const bool haveAccessors = a != j.end() && a->is_array();
+    if (haveAccessors)
+        for (std::size_t i = 0; i < a->size(); ++i) {
+            nlohmann::json& accessor = (*a)[i];
+            const nlohmann::json* type = member(accessor, "type");
+            if (type && type->is_string() && !types.contains(type->get<std::string>())) {
+                accessor["type"] = "SCALAR";
+                out.unknownTypes.push_back(i);
+            }
+        }
+    if (auto m = j.find("meshes"); haveAccessors && m != j.end() && m->is_array())
+        for (std::size_t mesh = 0; mesh < m->size(); ++mesh) {
+            nlohmann::json* primitives =
+                (*m)[mesh].is_object() && (*m)[mesh].contains("primitives") ? &(*m)[mesh]["primitives"] : nullptr;
+            if (!primitives || !primitives->is_array()) continue;
+            for (std::size_t p = 0; p < primitives->size(); ++p) {
+                const nlohmann::json* index = member((*primitives)[p], "indices");
+                if (!index || !index->is_number_unsigned() || index->get<std::size_t>() >= a->size()) continue;
+                if (member((*a)[index->get<std::size_t>()], "bufferView")) continue;
+                out.indices.push_back({mesh, p, index->get<std::size_t>()});
+                (*primitives)[p].erase("indices");
+            }
+        }
+    return out;
+}
+
+bool refuseExists(const std::string&, void*) { return false; }
 std::string identityExpand(const std::string& path, void*) { return path; }
-
-// tinygltf joins the folder and the URI; recover the URI to check it.
-std::optional<fs::path> guarded(const std::string& joined, FileAccess& access) {
-    std::string uri = joined;
-    const std::string prefix = access.folder.string();
-    if (!prefix.empty() && uri.starts_with(prefix)) {
-        uri.erase(0, prefix.size());
-        while (uri.starts_with('/')) uri.erase(0, 1);
-    }
-    std::string reason;
-    auto path = containedPath(access.folder, uri, reason);
-    if (!path && access.refusal.empty()) access.refusal = reason;
-    return path;
+bool refuseRead(std::vector<unsigned char>*, std::string* err, const std::string& path, void*) {
+    if (err) *err += "tinygltf may not read files (" + path + "); arcomp reads them\n";
+    return false;
 }
-
-bool guardedExists(const std::string& joined, void* user) {
-    auto& access = *static_cast<FileAccess*>(user);
-    const auto path = guarded(joined, access);
-    std::error_code ec;
-    return path && fs::is_regular_file(*path, ec);
-}
-
-bool guardedRead(std::vector<unsigned char>* out, std::string* err, const std::string& joined, void* user) {
-    auto& access = *static_cast<FileAccess*>(user);
-    const auto path = guarded(joined, access);
-    if (!path) {
-        if (err) *err += access.refusal + "\n";
-        return false;
-    }
-    std::ifstream in(*path, std::ios::binary);
-    if (!in) {
-        if (err) *err += "cannot read " + path->string() + "\n";
-        return false;
-    }
-    out->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    return true;
-}
-
 bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
     if (err) *err += "writing is not allowed\n";
     return false;
-}
-
-// Whether an image's buffer view lies inside its buffer. tinygltf hands a
-// view's bytes to the decoder without that check, so a view longer than its
-// buffer had the decoder read past the end (a fuzz finding).
-bool imageViewInsideBuffer(const tinygltf::Image& image, const tinygltf::Model& model) {
-    if (image.bufferView < 0) return true;  // a URI: tinygltf decoded it into a vector of its own
-    if (static_cast<std::size_t>(image.bufferView) >= model.bufferViews.size()) return false;
-    const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(image.bufferView)];
-    if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size()) return false;
-    const std::size_t length = model.buffers[static_cast<std::size_t>(view.buffer)].data.size();
-    return view.byteOffset <= length && view.byteLength <= length - view.byteOffset;
-}
-
-// An image that does not decode costs its texture, not the model. `user` is
-// the model being loaded.
-bool lenientImage(tinygltf::Image* image, const int index, std::string* err, std::string* warn, int w, int h,
-                  const unsigned char* bytes, int size, void* user) {
-    (void)err;
-    const auto drawnWithout = [&](const std::string& why) {
-        if (warn) *warn += "image " + std::to_string(index) + " " + why + "; drawn without it\n";
-        image->image.clear();
-        image->width = image->height = 0;
-        return true;
-    };
-    if (!imageViewInsideBuffer(*image, *static_cast<const tinygltf::Model*>(user)))
-        return drawnWithout("has a buffer view that runs past its buffer");
-    std::string localErr;
-    if (tinygltf::LoadImageData(image, index, &localErr, warn, w, h, bytes, size, nullptr)) return true;
-    return drawnWithout("does not decode: " + localErr);
 }
 
 // What a skinned node's primitives must agree with its skin on: every joint
@@ -265,66 +234,35 @@ std::vector<std::uint32_t> triangulate(int mode, std::vector<std::uint32_t> idx)
     return out;
 }
 
-Image toRgba8(const tinygltf::Image& src) {
-    Image out;
-    if (src.width <= 0 || src.height <= 0 || src.component < 1 || src.component > 4) return out;
-    const std::size_t pixels = static_cast<std::size_t>(src.width) * static_cast<std::size_t>(src.height);
-    const std::size_t bytesPerChannel = src.bits == 16 ? 2 : src.bits == 32 ? 4 : 1;
-    if (src.image.size() < pixels * static_cast<std::size_t>(src.component) * bytesPerChannel) return out;
-    out.width = src.width;
-    out.height = src.height;
-    out.rgba.resize(pixels * 4);
-    for (std::size_t p = 0; p < pixels; ++p) {
-        auto channel = [&](int c) -> std::uint8_t {
-            // The most significant byte of little-endian 16-bit samples.
-            const std::size_t at =
-                (p * static_cast<std::size_t>(src.component) + static_cast<std::size_t>(c)) * bytesPerChannel;
-            return src.image[at + bytesPerChannel - 1];
-        };
-        const std::uint8_t r = channel(0);
-        const std::uint8_t g = src.component >= 3 ? channel(1) : r;
-        const std::uint8_t b = src.component >= 3 ? channel(2) : r;
-        const std::uint8_t a = src.component == 4 ? channel(3) : src.component == 2 ? channel(1) : 255;
-        out.rgba[p * 4 + 0] = r;
-        out.rgba[p * 4 + 1] = g;
-        out.rgba[p * 4 + 2] = b;
-        out.rgba[p * 4 + 3] = a;
-    }
-    return out;
-}
-
 }  // namespace
 
 ParsedModel parseGltf(const fs::path& file) {
     const std::string name = file.string();
-    FileAccess access{file.parent_path().empty() ? fs::path(".") : file.parent_path(), {}};
-    tinygltf::TinyGLTF loader;
-    loader.SetFsCallbacks({&guardedExists, &identityExpand, &guardedRead, &refuseWrite, &access});
-    tinygltf::Model model;
-    loader.SetImageLoader(&lenientImage, &model);
-    std::string err, warn;
-    std::ifstream probe(file, std::ios::binary);
-    char magic[4] = {};
-    probe.read(magic, 4);
-    const bool binary = probe.gcount() == 4 && std::equal(magic, magic + 4, "glTF");
+    GltfDocument doc = readGltfDocument(file);
     ParsedModel out;
-    checkExtensions(documentJson(file, binary), name, out);
+    checkExtensions(doc.json, name, out);
+    decodeMeshoptViews(doc);
+    decodeDracoPrimitives(doc);
+    std::vector<std::string> imageWarnings;
+    out.images = readGltfImages(doc, imageWarnings);
+
+    SetAside aside = setAside(doc);
+    const std::string text = aside.tinygltfJson.dump();
+    tinygltf::TinyGLTF loader;
+    loader.SetFsCallbacks({&refuseExists, &identityExpand, &refuseRead, &refuseWrite, nullptr});
+    tinygltf::Model model;
+    std::string err, warn;
     bool ok = false;
     try {
-        ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, name)
-                    : loader.LoadASCIIFromFile(&model, &err, &warn, name);
+        ok = loader.LoadASCIIFromString(&model, &err, &warn, text.c_str(), static_cast<unsigned>(text.size()),
+                                        doc.folder.string());
     } catch (const std::exception& e) {
-        // tinygltf checks some inputs with vector::at: a GLB buffer with
-        // byteLength 0 (the schema's minimum is 1) next to a BIN chunk threw
-        // std::out_of_range from its copy (fuzz finding).
         throw ModelError(name, "", std::string("malformed glTF, the loader stopped: ") + e.what());
     }
-    if (!access.refusal.empty()) throw ModelError(name, "", access.refusal);
     if (!ok) {
         while (!err.empty() && err.back() == '\n') err.pop_back();
         throw ModelError(name, "", err.empty() ? "not a readable glTF file" : err);
     }
-
     for (std::size_t start = 0; start < warn.size();) {
         const auto end = warn.find('\n', start);
         const std::string line = warn.substr(start, end - start);
@@ -332,11 +270,21 @@ ParsedModel parseGltf(const fs::path& file) {
         if (end == std::string::npos) break;
         start = end + 1;
     }
+    out.warnings.insert(out.warnings.end(), imageWarnings.begin(), imageWarnings.end());
 
-    GltfReader reader(file, model);
+    std::vector<std::string> absent;
+    model.buffers.resize(doc.buffers.size());
+    for (std::size_t i = 0; i < doc.buffers.size(); ++i) {
+        model.buffers[i].data = std::move(doc.buffers[i].bytes);
+        absent.push_back(std::move(doc.buffers[i].absent));
+    }
+    for (const std::size_t i : aside.unknownTypes) model.accessors[i].type = -1;
+    for (const auto& [mesh, primitive, accessor] : aside.indices)
+        model.meshes[mesh].primitives[primitive].indices = static_cast<int>(accessor);
+
+    GltfReader reader(file, model, std::move(absent));
     for (std::size_t i = 0; i < model.bufferViews.size(); ++i) reader.checkView(i);
-
-    for (std::size_t i = 0; i < model.images.size(); ++i) out.images.push_back(toRgba8(model.images[i]));
+    for (std::size_t i = 0; i < model.accessors.size(); ++i) reader.checkAccessorLayout(i);
 
     // Materials; a default one serves primitives that name none. Every
     // texture and sampler is checked, used or not, like the meshes below.

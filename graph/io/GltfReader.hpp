@@ -68,7 +68,10 @@ inline const char* typeName(int type) {
 
 class GltfReader {
 public:
-    GltfReader(const fs::path& file, tinygltf::Model& model) : file_(file.string()), model_(model) {}
+    // `absentBuffers`: per buffer, why the file gives it no bytes (empty
+    // when it does); a view into such a buffer fails only when it is read.
+    GltfReader(const fs::path& file, tinygltf::Model& model, std::vector<std::string> absentBuffers = {})
+        : file_(file.string()), model_(model), absent_(std::move(absentBuffers)) {}
 
     [[noreturn]] void fail(const std::string& where, const std::string& reason) const {
         throw ModelError(file_, where, reason);
@@ -113,9 +116,9 @@ public:
             fail(where + "/componentType",
                  "indices must be unsigned byte, short or int, not " + std::to_string(a.componentType));
         if (a.sparse.isSparse) fail(where + "/sparse", "sparse index accessors are not supported");
-        if (a.bufferView < 0) fail(where, "index accessor has no buffer view");
+        std::vector<std::uint32_t> out(a.count, 0);
+        if (a.bufferView < 0) return out;  // all zeros, as the spec says
         const auto [data, stride] = elements(a, index);
-        std::vector<std::uint32_t> out(a.count);
         for (std::size_t e = 0; e < a.count; ++e) {
             out[e] = readUnsigned(data + e * stride, a.componentType);
             if (out[e] >= vertexCount)
@@ -125,10 +128,60 @@ public:
         return out;
     }
 
-    // Every buffer view must lie inside its buffer, used or not.
+    // Every buffer view must lie inside its buffer, used or not; one into a
+    // buffer without bytes is checked when it is read.
     void checkView(std::size_t index) const {
+        if (model_.bufferViews[index].byteLength == 0)
+            fail(ptr("bufferViews", index, "byteLength"), "is 0; a buffer view holds at least 1 byte");
+        const int buffer = model_.bufferViews[index].buffer;
+        if (buffer >= 0 && static_cast<std::size_t>(buffer) < absent_.size() &&
+            !absent_[static_cast<std::size_t>(buffer)].empty())
+            return;
         std::size_t stride = 0;
         view(static_cast<int>(index), ptr("bufferViews", index), stride);
+    }
+
+    // Every accessor with a buffer view must fit in it, at an offset aligned
+    // to its component size, used or not: checked against the view's length,
+    // so that it holds for a buffer without bytes too. Matrix columns start
+    // 4-byte aligned (glTF 2.0, 3.6.2.4), so a MAT2 of bytes takes 8.
+    void checkAccessorLayout(std::size_t index) const {
+        const tinygltf::Accessor& a = model_.accessors[index];
+        if (a.sparse.isSparse) {
+            const std::string where = ptr("accessors", index) + "/sparse";
+            if (a.sparse.count < 1 || static_cast<std::size_t>(a.sparse.count) > a.count)
+                fail(where + "/count", "is " + std::to_string(a.sparse.count) + "; it must be 1 to the accessor's " +
+                                           std::to_string(a.count));
+            for (const auto& [view, part] : {std::pair{a.sparse.indices.bufferView, "/indices/bufferView"},
+                                             std::pair{a.sparse.values.bufferView, "/values/bufferView"}})
+                if (view >= 0 && static_cast<std::size_t>(view) < model_.bufferViews.size() &&
+                    model_.bufferViews[static_cast<std::size_t>(view)].byteStride != 0)
+                    fail(where + part,
+                         "buffer view " + std::to_string(view) + " has a byteStride; sparse data has none");
+        }
+        if (a.bufferView < 0 || static_cast<std::size_t>(a.bufferView) >= model_.bufferViews.size()) return;
+        const int size = componentSize(a.componentType), n = componentCount(a.type);
+        if (size == 0 || n == 0 || a.count == 0) return;  // refused with its reason where it is used
+        const tinygltf::BufferView& v = model_.bufferViews[static_cast<std::size_t>(a.bufferView)];
+        const std::size_t rows = a.type == TINYGLTF_TYPE_MAT2   ? 2
+                                 : a.type == TINYGLTF_TYPE_MAT3 ? 3
+                                 : a.type == TINYGLTF_TYPE_MAT4 ? 4
+                                                                : 1;
+        const std::size_t column = static_cast<std::size_t>(n) / rows * static_cast<std::size_t>(size);
+        const std::size_t element = rows > 1 ? rows * ((column + 3) / 4 * 4) : column;
+        // The last column's padding may be cut at the view's end.
+        const std::size_t last = rows > 1 ? element - ((column + 3) / 4 * 4 - column) : element;
+        const std::size_t stride = v.byteStride ? v.byteStride : element;
+        const std::string where = ptr("accessors", index);
+        if ((v.byteOffset + a.byteOffset) % static_cast<std::size_t>(size) != 0)
+            fail(where + "/byteOffset", "the accessor starts at byte " + std::to_string(v.byteOffset + a.byteOffset) +
+                                            " of its buffer, not a multiple of its component size " +
+                                            std::to_string(size));
+        if (stride < element || a.byteOffset > v.byteLength || (a.count - 1) > (v.byteLength - a.byteOffset) / stride ||
+            (a.count - 1) * stride + last > v.byteLength - a.byteOffset)
+            fail(where, std::to_string(a.count) + " elements of " + std::to_string(element) + " bytes from byte " +
+                            std::to_string(a.byteOffset) + " do not fit in buffer view " +
+                            std::to_string(a.bufferView) + " of " + std::to_string(v.byteLength) + " bytes");
     }
 
     std::size_t count(std::size_t index, const std::string& usePointer) const {
@@ -170,6 +223,9 @@ private:
         const std::string where = ptr("bufferViews", static_cast<std::size_t>(viewIndex));
         if (v.buffer < 0 || static_cast<std::size_t>(v.buffer) >= model_.buffers.size())
             fail(where + "/buffer", "buffer " + std::to_string(v.buffer) + " does not exist");
+        if (static_cast<std::size_t>(v.buffer) < absent_.size() && !absent_[static_cast<std::size_t>(v.buffer)].empty())
+            fail(where + "/buffer", "buffer " + std::to_string(v.buffer) +
+                                        " has no bytes: " + absent_[static_cast<std::size_t>(v.buffer)]);
         const auto& data = model_.buffers[static_cast<std::size_t>(v.buffer)].data;
         if (v.byteOffset > data.size() || v.byteLength > data.size() - v.byteOffset)
             fail(where, "bytes " + std::to_string(v.byteOffset) + "+" + std::to_string(v.byteLength) +
@@ -283,6 +339,7 @@ private:
 
     std::string file_;
     const tinygltf::Model& model_;
+    std::vector<std::string> absent_;
 };
 
 }  // namespace arcomp::gltf

@@ -5,7 +5,7 @@
 // JSON text, so that the code that makes a model reads like the glTF it
 // makes. The buffer and images are data URIs (graph/io/Base64.hpp): one file
 // any viewer opens. For the feature models the glTF reference bench draws
-// and the models tests write; reading glTF is tinygltf's job.
+// and the models tests write; reading glTF is GltfParser's job.
 //
 //   GltfWriter w;
 //   const float corners[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
@@ -16,6 +16,13 @@
 //                                 R"(}, "indices": )" + std::to_string(indices) + "}]}");
 //   w.sceneNodes.push_back(GltfWriter::add(w.nodes, R"({"mesh": 0})"));
 //   std::ofstream("triangle.gltf") << w.text();
+//
+//   GltfWriter d;  // the same triangle, Draco-compressed
+//   const std::vector<std::uint32_t> corners3{0, 1, 2};
+//   GltfWriter::add(d.meshes, R"({"primitives": [)" +
+//                                 d.dracoPrimitive(3, {{.semantic = "POSITION", .data = corners, .components = 3,
+//                                 .quantizationBits = 14}},
+//                                                  corners3) + "]}");
 
 #include <nlohmann/json.hpp>
 
@@ -26,6 +33,14 @@
 #include <vector>
 
 namespace arcomp {
+
+// One float attribute of a primitive to compress with Draco.
+struct DracoAttribute {
+    std::string semantic;  // POSITION, NORMAL, TEXCOORD_0, ...
+    const float* data = nullptr;
+    int components = 3;
+    int quantizationBits = 0;  // 0: kept as floats
+};
 
 struct GltfAccessorOptions {
     bool normalized = false;
@@ -61,6 +76,15 @@ public:
     // How many components an element of `type` has (SCALAR 1 ... MAT4 16);
     // throws std::invalid_argument for a type glTF does not have.
     static std::size_t components(std::string_view type);
+
+    // A triangle primitive compressed with KHR_draco_mesh_compression by
+    // libdraco's encoder (edgebreaker, or sequential, which keeps the
+    // vertex order): its accessors declare the encoded counts and have no
+    // buffer view, as exporters write them. Gives the primitive's JSON for
+    // a mesh; the extension joins extensionsUsed and extensionsRequired.
+    // Throws std::runtime_error when the encoder refuses the mesh.
+    std::string dracoPrimitive(std::size_t vertexCount, const std::vector<DracoAttribute>& attributes,
+                               const std::vector<std::uint32_t>& indices, bool sequential = false);
 
     // An image from the bytes of a PNG, or an image the JSON gives (a URI).
     int pngImage(const std::vector<std::uint8_t>& png);

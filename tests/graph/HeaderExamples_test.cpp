@@ -6,6 +6,9 @@
 #include "graph/core/Scene.hpp"
 #include "graph/core/SelectPass.hpp"
 #include "graph/core/World.hpp"
+#include "graph/io/Base64.hpp"
+#include "graph/io/DataUri.hpp"
+#include "graph/io/GltfWriter.hpp"
 #include "graph/lod/GazeAcuity.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -68,4 +71,34 @@ TEST(HeaderExamples, world) {
     select(world, view, {.shading = Shading::Phong, .timeSeconds = t}, list);
     ASSERT_EQ(list.items.size(), 1u);
     EXPECT_EQ(list.items[0].level, 1);  // 20 away, past the threshold at 10
+}
+
+TEST(HeaderExamples, dataUriAndBase64) {
+    // graph/io/DataUri.hpp
+    DataUri d = decodeDataUri("data:application/gltf-buffer,0");
+    EXPECT_EQ(d.mediaType, "application/gltf-buffer");
+    EXPECT_EQ(d.bytes, std::vector<std::uint8_t>{'0'});
+    EXPECT_TRUE(d.error.empty());
+    // graph/io/Base64.hpp
+    const std::vector<std::uint8_t> bytes{1, 2, 3, 250};
+    std::string uri = "data:application/octet-stream;base64," + base64(bytes.data(), bytes.size());
+    std::optional<std::vector<std::uint8_t>> back = fromBase64(uri.substr(uri.find(',') + 1));
+    EXPECT_EQ(back, bytes);
+    EXPECT_EQ(decodeDataUri(uri).bytes, bytes);
+    EXPECT_EQ(decodeDataUri("data:,a%20b").bytes, (std::vector<std::uint8_t>{'a', ' ', 'b'}));
+    EXPECT_FALSE(decodeDataUri("data:,a%2").error.empty());
+}
+
+TEST(HeaderExamples, gltfWriterDraco) {
+    // graph/io/GltfWriter.hpp
+    const float corners[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    GltfWriter d;  // the same triangle, Draco-compressed
+    const std::vector<std::uint32_t> corners3{0, 1, 2};
+    GltfWriter::add(
+        d.meshes,
+        R"({"primitives": [)" +
+            d.dracoPrimitive(3, {{.semantic = "POSITION", .data = corners, .components = 3, .quantizationBits = 14}},
+                             corners3) +
+            "]}");
+    EXPECT_NE(d.text().find("KHR_draco_mesh_compression"), std::string::npos);
 }

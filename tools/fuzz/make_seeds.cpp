@@ -5,6 +5,8 @@
 //   build-fuzz/make_seeds build-fuzz/seeds
 
 #include "graph/budget/CostModel.hpp"
+#include "graph/io/Base64.hpp"
+#include "graph/io/GltfWriter.hpp"
 #include "graph/io/LodFile.hpp"
 #include "graph/io/SilhouetteFile.hpp"
 #include "graph/io/VoxelFile.hpp"
@@ -14,6 +16,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <meshoptimizer.h>
+#include <nlohmann/json.hpp>
 
 using namespace arcomp;
 namespace fs = std::filesystem;
@@ -31,6 +35,42 @@ Geometry tetrahedron() {
 
 void writeText(const fs::path& file, const std::string& text) { std::ofstream(file, std::ios::binary) << text; }
 
+std::string le(std::uint32_t v, int bytes) {
+    std::string out;
+    for (int k = 0; k < bytes; ++k) out += static_cast<char>(v >> (8 * k) & 0xFF);
+    return out;
+}
+
+// fuzz_draco's input: the declared points and indices, then the stream,
+// taken from the Draco primitive GltfWriter makes.
+std::string dracoSeed(const Geometry& g, bool sequential) {
+    GltfWriter w;
+    const auto primitive = nlohmann::json::parse(w.dracoPrimitive(
+        g.positions.size(),
+        {{.semantic = "POSITION", .data = &g.positions[0].x, .components = 3, .quantizationBits = 11},
+         {.semantic = "NORMAL", .data = &g.normals[0].x, .components = 3, .quantizationBits = 8},
+         {.semantic = "TEXCOORD_0", .data = &g.texcoords[0].x, .components = 2, .quantizationBits = 10}},
+        g.indices, sequential));
+    const auto doc = nlohmann::json::parse(w.text());
+    const std::string uri = doc["buffers"][0]["uri"];
+    const auto bytes = *fromBase64(uri.substr(uri.find(',') + 1));
+    const auto& view =
+        doc["bufferViews"][primitive["extensions"]["KHR_draco_mesh_compression"]["bufferView"].get<int>()];
+    const std::size_t offset = view.value("byteOffset", 0), length = view["byteLength"];
+    const auto& accessors = doc["accessors"];
+    return le(accessors[primitive["attributes"]["POSITION"].get<int>()]["count"], 4) +
+           le(accessors[primitive["indices"].get<int>()]["count"], 4) +
+           std::string(bytes.begin() + static_cast<std::ptrdiff_t>(offset),
+                       bytes.begin() + static_cast<std::ptrdiff_t>(offset + length));
+}
+
+// fuzz_meshopt's input: mode, filter, byteStride / 4, count, then the stream.
+std::string meshoptSeed(int mode, int filter, std::size_t stride, std::size_t count,
+                        const std::vector<unsigned char>& stream) {
+    return std::string{static_cast<char>(mode), static_cast<char>(filter), static_cast<char>(stride / 4)} +
+           le(static_cast<std::uint32_t>(count), 2) + std::string(stream.begin(), stream.end());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -39,7 +79,8 @@ int main(int argc, char** argv) {
         return 2;
     }
     const fs::path out = argv[1];
-    for (const char* t : {"lod", "silhouette", "voxel", "calibration", "camera", "gaze", "obj", "http"})
+    for (const char* t :
+         {"lod", "silhouette", "voxel", "calibration", "camera", "gaze", "obj", "http", "draco", "meshopt"})
         fs::create_directories(out / t);
 
     const Geometry g = tetrahedron();
@@ -103,5 +144,29 @@ int main(int argc, char** argv) {
               "mtllib cube.mtl\no cube\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
               "vt 0 0\nvt 1 0\nvt 1 1\nvn 0 0 -1\nvn 0 0 1\ng front\nusemtl red\n"
               "f 1/1/1 2/2/1 3/3/1 4/1/1\nf 5//2 6//2 7//2\nf -1 -2 -3\nl 1 2\np 3\n");
+
+    const Geometry sphere = makeUvSphere(1.0f, 8, 4);
+    writeText(out / "draco/sphere-edgebreaker.bin", dracoSeed(sphere, false));
+    writeText(out / "draco/sphere-sequential.bin", dracoSeed(sphere, true));
+    std::vector<unsigned char> stream(meshopt_encodeVertexBufferBound(sphere.positions.size(), 12));
+    stream.resize(
+        meshopt_encodeVertexBuffer(stream.data(), stream.size(), sphere.positions.data(), sphere.positions.size(), 12));
+    writeText(out / "meshopt/positions.bin", meshoptSeed(0, 0, 12, sphere.positions.size(), stream));
+    stream.assign(meshopt_encodeIndexBufferBound(sphere.indices.size(), sphere.positions.size()), 0);
+    stream.resize(
+        meshopt_encodeIndexBuffer(stream.data(), stream.size(), sphere.indices.data(), sphere.indices.size()));
+    writeText(out / "meshopt/triangles.bin", meshoptSeed(1, 0, 4, sphere.indices.size(), stream));
+    stream.assign(meshopt_encodeIndexSequenceBound(sphere.indices.size(), sphere.positions.size()), 0);
+    stream.resize(
+        meshopt_encodeIndexSequence(stream.data(), stream.size(), sphere.indices.data(), sphere.indices.size()));
+    writeText(out / "meshopt/sequence.bin", meshoptSeed(2, 0, 4, sphere.indices.size(), stream));
+    std::vector<glm::vec4> normals;
+    for (const glm::vec3& n : sphere.normals) normals.emplace_back(n, 0.0f);
+    std::vector<std::int8_t> octahedral(normals.size() * 4);
+    meshopt_encodeFilterOct(octahedral.data(), normals.size(), 4, 8, &normals[0].x);
+    stream.assign(meshopt_encodeVertexBufferBound(sphere.normals.size(), 4), 0);
+    stream.resize(
+        meshopt_encodeVertexBuffer(stream.data(), stream.size(), octahedral.data(), sphere.normals.size(), 4));
+    writeText(out / "meshopt/octahedral.bin", meshoptSeed(0, 1, 4, sphere.normals.size(), stream));
     return 0;
 }
