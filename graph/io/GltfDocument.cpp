@@ -19,9 +19,7 @@ namespace {
 // (a fuzzed file must not allocate gigabytes).
 constexpr std::size_t kMaxFallbackBytes = std::size_t{256} << 20;
 
-std::uint32_t le32(const std::uint8_t* p) {
-    return p[0] | p[1] << 8 | p[2] << 16 | std::uint32_t(p[3]) << 24;
-}
+std::uint32_t le32(const std::uint8_t* p) { return p[0] | p[1] << 8 | p[2] << 16 | std::uint32_t(p[3]) << 24; }
 
 struct Container {
     std::string jsonText;
@@ -35,12 +33,15 @@ struct Container {
 Container splitGlb(const std::vector<std::uint8_t>& bytes, const std::string& file) {
     Container c;
     c.binary = true;
-    if (bytes.size() < 20) throw ModelError(file, "", "GLB file of " + std::to_string(bytes.size()) + " bytes is shorter than its header");
-    if (le32(&bytes[4]) != 2) throw ModelError(file, "", "GLB version " + std::to_string(le32(&bytes[4])) + ", expected 2");
+    if (bytes.size() < 20)
+        throw ModelError(file, "", "GLB file of " + std::to_string(bytes.size()) + " bytes is shorter than its header");
+    if (le32(&bytes[4]) != 2)
+        throw ModelError(file, "", "GLB version " + std::to_string(le32(&bytes[4])) + ", expected 2");
     const std::size_t total = le32(&bytes[8]);
     if (total > bytes.size())
-        throw ModelError(file, "", "GLB header says " + std::to_string(total) + " bytes, the file has " +
-                                       std::to_string(bytes.size()));
+        throw ModelError(file, "",
+                         "GLB header says " + std::to_string(total) + " bytes, the file has " +
+                             std::to_string(bytes.size()));
     std::size_t at = 12;
     bool first = true;
     while (at + 8 <= total) {
@@ -48,15 +49,19 @@ Container splitGlb(const std::vector<std::uint8_t>& bytes, const std::string& fi
         const std::uint32_t type = le32(&bytes[at + 4]);
         at += 8;
         if (length > total - at)
-            throw ModelError(file, "", "GLB chunk at byte " + std::to_string(at - 8) + " of " + std::to_string(length) +
-                                           " bytes runs past the file's end");
+            throw ModelError(file, "",
+                             "GLB chunk at byte " + std::to_string(at - 8) + " of " + std::to_string(length) +
+                                 " bytes runs past the file's end");
         if (first && type != 0x4E4F534A) throw ModelError(file, "", "GLB's first chunk is not JSON");
         if (!first && type == 0x4E4F534A) throw ModelError(file, "", "GLB has a second JSON chunk");
         if (type == 0x004E4942 && (c.hasBin || at != 12 + 8 + c.jsonText.size() + 8))
             throw ModelError(file, "", "GLB's BIN chunk must be the one chunk right after the JSON chunk");
-        if (first) c.jsonText.assign(bytes.begin() + static_cast<std::ptrdiff_t>(at), bytes.begin() + static_cast<std::ptrdiff_t>(at + length));
+        if (first)
+            c.jsonText.assign(bytes.begin() + static_cast<std::ptrdiff_t>(at),
+                              bytes.begin() + static_cast<std::ptrdiff_t>(at + length));
         else if (type == 0x004E4942 && !c.hasBin) {
-            c.bin.assign(bytes.begin() + static_cast<std::ptrdiff_t>(at), bytes.begin() + static_cast<std::ptrdiff_t>(at + length));
+            c.bin.assign(bytes.begin() + static_cast<std::ptrdiff_t>(at),
+                         bytes.begin() + static_cast<std::ptrdiff_t>(at + length));
             c.hasBin = true;
         }
         first = false;
@@ -166,9 +171,11 @@ ViewBytes viewBytes(GltfDocument& doc, std::size_t view, const std::string& useP
     const std::size_t buffer = requiredUnsigned(doc, v, "buffer", where);
     const std::size_t offset = unsignedMember(doc, v, "byteOffset", where, 0);
     const std::size_t length = requiredUnsigned(doc, v, "byteLength", where);
-    if (buffer >= doc.buffers.size()) doc.fail(where + "/buffer", "buffer " + std::to_string(buffer) + " does not exist");
+    if (buffer >= doc.buffers.size())
+        doc.fail(where + "/buffer", "buffer " + std::to_string(buffer) + " does not exist");
     GltfBuffer& b = doc.buffers[buffer];
-    if (!b.absent.empty()) doc.fail(where + "/buffer", "buffer " + std::to_string(buffer) + " has no bytes: " + b.absent);
+    if (!b.absent.empty())
+        doc.fail(where + "/buffer", "buffer " + std::to_string(buffer) + " has no bytes: " + b.absent);
     if (offset > b.bytes.size() || length > b.bytes.size() - offset)
         doc.fail(where, "bytes " + std::to_string(offset) + "+" + std::to_string(length) + " lie outside buffer " +
                             std::to_string(buffer) + " of " + std::to_string(b.bytes.size()) + " bytes");
@@ -183,8 +190,10 @@ GltfDocument readGltfDocument(const fs::path& path) {
     if (!fs::is_regular_file(path, ec)) doc.fail("", "no such file");
     const std::vector<std::uint8_t> bytes = readFile(path, doc.file, "");
     Container container;
-    if (bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0) container = splitGlb(bytes, doc.file);
-    else container.jsonText.assign(bytes.begin(), bytes.end());
+    if (bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0)
+        container = splitGlb(bytes, doc.file);
+    else
+        container.jsonText.assign(bytes.begin(), bytes.end());
     try {
         doc.json = json::parse(container.jsonText);
     } catch (const json::exception& e) {

@@ -24,7 +24,7 @@ struct GltfBuffer {
 };
 
 struct GltfDocument {
-    std::string file;       // for messages
+    std::string file;              // for messages
     std::filesystem::path folder;  // relative URIs resolve here, and nowhere outside it
     nlohmann::json json;
     std::vector<GltfBuffer> buffers;

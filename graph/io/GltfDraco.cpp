@@ -46,20 +46,19 @@ void decodeDracoPrimitives(GltfDocument& doc) {
     GltfBuffer decoded;
     const std::size_t decodedBuffer = doc.buffers.size();
     json newViews = json::array();
-    const std::size_t firstNewView = doc.json.contains("bufferViews") && doc.json["bufferViews"].is_array()
-                                         ? doc.json["bufferViews"].size()
-                                         : 0;
+    const std::size_t firstNewView =
+        doc.json.contains("bufferViews") && doc.json["bufferViews"].is_array() ? doc.json["bufferViews"].size() : 0;
     // Points accessor `index` at the bytes appended since `start`.
     const auto pointAccessor = [&](std::size_t index, std::size_t start) {
         (*accessors)[index]["bufferView"] = firstNewView + newViews.size();
         (*accessors)[index]["byteOffset"] = 0;
         (*accessors)[index].erase("sparse");
-        newViews.push_back({{"buffer", decodedBuffer}, {"byteOffset", start}, {"byteLength", decoded.bytes.size() - start}});
+        newViews.push_back(
+            {{"buffer", decodedBuffer}, {"byteOffset", start}, {"byteLength", decoded.bytes.size() - start}});
     };
     for (std::size_t m = 0; m < meshes->size(); ++m) {
-        json* primitives = (*meshes)[m].is_object() && (*meshes)[m].contains("primitives")
-                               ? &(*meshes)[m]["primitives"]
-                               : nullptr;
+        json* primitives =
+            (*meshes)[m].is_object() && (*meshes)[m].contains("primitives") ? &(*meshes)[m]["primitives"] : nullptr;
         if (!primitives || !primitives->is_array()) continue;
         for (std::size_t p = 0; p < primitives->size(); ++p) {
             json& primitive = (*primitives)[p];
@@ -68,18 +67,21 @@ void decodeDracoPrimitives(GltfDocument& doc) {
             if (!ext) continue;
             const std::string where = "/meshes/" + std::to_string(m) + "/primitives/" + std::to_string(p) +
                                       "/extensions/KHR_draco_mesh_compression";
-            const ViewBytes stream = viewBytes(doc, requiredUnsigned(doc, *ext, "bufferView", where), where + "/bufferView");
+            const ViewBytes stream =
+                viewBytes(doc, requiredUnsigned(doc, *ext, "bufferView", where), where + "/bufferView");
             draco::DecoderBuffer input;
             input.Init(reinterpret_cast<const char*>(stream.data), stream.size);
             draco::Decoder decoder;
             auto result = decoder.DecodeMeshFromBuffer(&input);
-            if (!result.ok()) doc.fail(where, "the Draco stream does not decode: " + result.status().error_msg_string());
+            if (!result.ok())
+                doc.fail(where, "the Draco stream does not decode: " + result.status().error_msg_string());
             const draco::Mesh& mesh = *result.value();
 
             const json* attributes = member(*ext, "attributes");
             const json* primitiveAttributes = member(primitive, "attributes");
             if (!attributes || !attributes->is_object()) doc.fail(where + "/attributes", "is missing or not an object");
-            if (!accessors || !accessors->is_array()) doc.fail("/accessors", "are missing; the Draco primitive needs them");
+            if (!accessors || !accessors->is_array())
+                doc.fail("/accessors", "are missing; the Draco primitive needs them");
             const auto accessorOf = [&](const json* index, const std::string& use) {
                 if (!index || !index->is_number_unsigned() || index->get<std::size_t>() >= accessors->size())
                     doc.fail(use, "does not name an accessor");
@@ -92,29 +94,39 @@ void decodeDracoPrimitives(GltfDocument& doc) {
                     "/meshes/" + std::to_string(m) + "/primitives/" + std::to_string(p) + "/attributes/" + semantic);
                 if (!id.is_number_unsigned()) doc.fail(use, "is not a Draco attribute id");
                 const draco::PointAttribute* attribute = mesh.GetAttributeByUniqueId(id.get<std::uint32_t>());
-                if (!attribute) doc.fail(use, "the Draco stream has no attribute " + std::to_string(id.get<std::uint32_t>()));
+                if (!attribute)
+                    doc.fail(use, "the Draco stream has no attribute " + std::to_string(id.get<std::uint32_t>()));
                 const json& accessor = (*accessors)[index];
                 const std::string accessorWhere = "/accessors/" + std::to_string(index);
                 const std::size_t count = requiredUnsigned(doc, accessor, "count", accessorWhere);
                 const json* typeValue = member(accessor, "type");
-                const int components = typeValue && typeValue->is_string() ? componentsOf(typeValue->get<std::string>()) : 0;
+                const int components =
+                    typeValue && typeValue->is_string() ? componentsOf(typeValue->get<std::string>()) : 0;
                 if (count != mesh.num_points())
                     doc.fail(accessorWhere + "/count", "is " + std::to_string(count) + ", but the Draco stream of " +
                                                            use + " decodes " + std::to_string(mesh.num_points()) +
                                                            " points");
                 if (components != attribute->num_components())
-                    doc.fail(accessorWhere + "/type",
-                             "has " + std::to_string(components) + " components, but the Draco stream of " + use +
-                                 " decodes " + std::to_string(attribute->num_components()));
+                    doc.fail(accessorWhere + "/type", "has " + std::to_string(components) +
+                                                          " components, but the Draco stream of " + use + " decodes " +
+                                                          std::to_string(attribute->num_components()));
                 const std::size_t start = decoded.bytes.size();
                 const std::size_t componentType = unsignedMember(doc, accessor, "componentType", accessorWhere, 0);
                 bool converted = false;
                 switch (componentType) {
                 case 5120: converted = appendAttribute<std::int8_t>(*attribute, mesh, components, decoded.bytes); break;
-                case 5121: converted = appendAttribute<std::uint8_t>(*attribute, mesh, components, decoded.bytes); break;
-                case 5122: converted = appendAttribute<std::int16_t>(*attribute, mesh, components, decoded.bytes); break;
-                case 5123: converted = appendAttribute<std::uint16_t>(*attribute, mesh, components, decoded.bytes); break;
-                case 5125: converted = appendAttribute<std::uint32_t>(*attribute, mesh, components, decoded.bytes); break;
+                case 5121:
+                    converted = appendAttribute<std::uint8_t>(*attribute, mesh, components, decoded.bytes);
+                    break;
+                case 5122:
+                    converted = appendAttribute<std::int16_t>(*attribute, mesh, components, decoded.bytes);
+                    break;
+                case 5123:
+                    converted = appendAttribute<std::uint16_t>(*attribute, mesh, components, decoded.bytes);
+                    break;
+                case 5125:
+                    converted = appendAttribute<std::uint32_t>(*attribute, mesh, components, decoded.bytes);
+                    break;
                 case 5126: converted = appendAttribute<float>(*attribute, mesh, components, decoded.bytes); break;
                 default: doc.fail(accessorWhere + "/componentType", "is not a glTF component type");
                 }
@@ -122,9 +134,11 @@ void decodeDracoPrimitives(GltfDocument& doc) {
                 pointAccessor(index, start);
             }
 
-            const std::string indicesUse = "/meshes/" + std::to_string(m) + "/primitives/" + std::to_string(p) + "/indices";
+            const std::string indicesUse =
+                "/meshes/" + std::to_string(m) + "/primitives/" + std::to_string(p) + "/indices";
             const std::size_t indices = accessorOf(member(primitive, "indices"), indicesUse);
-            const std::size_t count = requiredUnsigned(doc, (*accessors)[indices], "count", "/accessors/" + std::to_string(indices));
+            const std::size_t count =
+                requiredUnsigned(doc, (*accessors)[indices], "count", "/accessors/" + std::to_string(indices));
             if (count != std::size_t(mesh.num_faces()) * 3)
                 doc.fail("/accessors/" + std::to_string(indices) + "/count",
                          "is " + std::to_string(count) + ", but the Draco stream of " + where + " decodes " +
@@ -135,7 +149,8 @@ void decodeDracoPrimitives(GltfDocument& doc) {
             for (draco::FaceIndex f(0); f < mesh.num_faces(); ++f)
                 for (int k = 0; k < 3; ++k) {
                     const std::uint32_t v = mesh.face(f)[k].value();
-                    std::memcpy(decoded.bytes.data() + start + (std::size_t(f.value()) * 3 + std::size_t(k)) * 4, &v, 4);
+                    std::memcpy(decoded.bytes.data() + start + (std::size_t(f.value()) * 3 + std::size_t(k)) * 4, &v,
+                                4);
                 }
             // Written as unsigned ints whatever the file declared: every index fits.
             (*accessors)[indices]["componentType"] = 5125;

@@ -130,8 +130,8 @@ std::vector<Image> readGltfImages(GltfDocument& doc, std::vector<std::string>& w
             if (!member(image, "mimeType")) doc.fail(where, "has a bufferView but no mimeType");
             const ViewBytes v = viewBytes(doc, index, where + "/bufferView");
             if (member(doc.json["bufferViews"][index], "byteStride"))
-                doc.fail(where + "/bufferView", "buffer view " + std::to_string(index) +
-                                                    " has a byteStride; an image's view has none");
+                doc.fail(where + "/bufferView",
+                         "buffer view " + std::to_string(index) + " has a byteStride; an image's view has none");
             bytes.assign(v.data, v.data + v.size);
         }
         Image decoded;

@@ -28,7 +28,8 @@ void decodeMeshoptViews(GltfDocument& doc) {
         const std::size_t buffer = requiredUnsigned(doc, *ext, "buffer", where);
         const std::size_t offset = unsignedMember(doc, *ext, "byteOffset", where, 0);
         const std::size_t length = requiredUnsigned(doc, *ext, "byteLength", where);
-        if (buffer >= doc.buffers.size()) doc.fail(where + "/buffer", "buffer " + std::to_string(buffer) + " does not exist");
+        if (buffer >= doc.buffers.size())
+            doc.fail(where + "/buffer", "buffer " + std::to_string(buffer) + " does not exist");
         const GltfBuffer& source = doc.buffers[buffer];
         if (!source.absent.empty())
             doc.fail(where + "/buffer", "buffer " + std::to_string(buffer) + " has no bytes: " + source.absent);
@@ -48,8 +49,8 @@ void decodeMeshoptViews(GltfDocument& doc) {
         int status = 0;
         if (mode == "ATTRIBUTES") {
             if (stride % 4 != 0 || stride > 256)
-                doc.fail(where + "/byteStride", "is " + std::to_string(stride) +
-                                                    "; ATTRIBUTES take a multiple of 4 up to 256");
+                doc.fail(where + "/byteStride",
+                         "is " + std::to_string(stride) + "; ATTRIBUTES take a multiple of 4 up to 256");
             status = meshopt_decodeVertexBuffer(target.data, count, stride, stream.data(), stream.size());
         } else if (mode == "TRIANGLES" || mode == "INDICES") {
             if (stride != 2 && stride != 4)

@@ -58,7 +58,8 @@ Corners worldCorners(const ParsedModel& model) {
                 const glm::vec2 t = g.texcoords.empty() ? glm::vec2(0.0f) : g.texcoords[v];
                 const float c = std::cos(uv.rotation), s = std::sin(uv.rotation);
                 const glm::vec2 scaled = t * uv.scale;
-                out.texcoords.push_back(uv.offset + glm::vec2(c * scaled.x + s * scaled.y, -s * scaled.x + c * scaled.y));
+                out.texcoords.push_back(uv.offset +
+                                        glm::vec2(c * scaled.x + s * scaled.y, -s * scaled.x + c * scaled.y));
             }
             out.triangles += g.triangleCount();
         }
@@ -118,7 +119,8 @@ float step(float range, int bits, int components) {
 
 std::string writeSource(const Geometry& g) {
     GltfWriter w;
-    const int position = w.accessor(g.positions.data(), g.positions.size(), "VEC3", GltfWriter::kFloat, {.bounds = true});
+    const int position =
+        w.accessor(g.positions.data(), g.positions.size(), "VEC3", GltfWriter::kFloat, {.bounds = true});
     const int normal = w.accessor(g.normals.data(), g.normals.size(), "VEC3", GltfWriter::kFloat);
     const int uv = w.accessor(g.texcoords.data(), g.texcoords.size(), "VEC2", GltfWriter::kFloat);
     const int indices = w.accessor(g.indices.data(), g.indices.size(), "SCALAR", GltfWriter::kUnsignedInt);
@@ -133,7 +135,8 @@ std::string writeSource(const Geometry& g) {
 // that no texture uses.
 std::string writeTexturedSource(const Geometry& g) {
     std::string text = writeSource(g);
-    text.insert(text.rfind('}'), R"(, "images": [{"uri": "data:image/png;base64,)" + std::string(arcomp::test::kTinyPng) +
+    text.insert(text.rfind('}'), R"(, "images": [{"uri": "data:image/png;base64,)" +
+                                     std::string(arcomp::test::kTinyPng) +
                                      R"("}], "textures": [{"source": 0}],
         "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}])");
     text.replace(text.find(R"("indices")"), 0, R"("material": 0, )");
@@ -211,8 +214,8 @@ TEST(GltfCompressed, meshoptAndQuantizedCopiesDecodeToTheSourceWithinEachAttribu
         EXPECT_EQ(decoded.triangles, source.triangleCount());
         // gltfpack's defaults: 14-bit positions over the mesh's extent,
         // 8-bit normals, 12-bit texture coordinates.
-        const Steps steps = copy.quantized ? Steps{step(1.6f, 14, 3), step(2.0f, 8, 3), step(1.0f, 12, 2)}
-                                           : Steps{1e-6f, 1e-6f, 1e-6f};
+        const Steps steps =
+            copy.quantized ? Steps{step(1.6f, 14, 3), step(2.0f, 8, 3), step(1.0f, 12, 2)} : Steps{1e-6f, 1e-6f, 1e-6f};
         expectSameVertices(source, decoded, steps);
     }
 }
@@ -232,7 +235,8 @@ TEST(GltfCompressed, aWebpTextureDecodesToItsPixels) {
     std::string text = writeSource(g);
     // The WebP image is the texture's source; the PNG-less fallback slot
     // is absent, as gltfpack writes with -tw.
-    text.insert(text.rfind('}'), R"(, "extensionsUsed": ["EXT_texture_webp"], "extensionsRequired": ["EXT_texture_webp"],
+    text.insert(text.rfind('}'),
+                R"(, "extensionsUsed": ["EXT_texture_webp"], "extensionsRequired": ["EXT_texture_webp"],
         "images": [{"uri": "texture.webp"}],
         "textures": [{"extensions": {"EXT_texture_webp": {"source": 0}}}],
         "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}])");

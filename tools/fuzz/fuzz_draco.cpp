@@ -19,15 +19,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}, "indices": 3,
         "extensions": {"KHR_draco_mesh_compression": {"bufferView": 0,
           "attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}}}}]}],
-      "accessors": [{"componentType": 5126, "count": )" + points + R"(, "type": "VEC3"},
-                    {"componentType": 5126, "count": )" + points + R"(, "type": "VEC3"},
-                    {"componentType": 5126, "count": )" + points + R"(, "type": "VEC2"},
-                    {"componentType": 5125, "count": )" + indices + R"(, "type": "SCALAR"}],
-      "bufferViews": [{"buffer": 0, "byteLength": )" + std::to_string(size - 8) + R"(}],
-      "buffers": [{"byteLength": )" + std::to_string(size - 8) + R"(}],
+      "accessors": [{"componentType": 5126, "count": )" +
+                             points + R"(, "type": "VEC3"},
+                    {"componentType": 5126, "count": )" +
+                             points + R"(, "type": "VEC3"},
+                    {"componentType": 5126, "count": )" +
+                             points + R"(, "type": "VEC2"},
+                    {"componentType": 5125, "count": )" +
+                             indices + R"(, "type": "SCALAR"}],
+      "bufferViews": [{"buffer": 0, "byteLength": )" +
+                             std::to_string(size - 8) + R"(}],
+      "buffers": [{"byteLength": )" +
+                             std::to_string(size - 8) + R"(}],
       "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}]})";
     const std::string glb = arcomp::fuzz::glbAround(json, data + 8, size - 8);
-    return arcomp::fuzz::parseAsFile<arcomp::ModelError>(reinterpret_cast<const std::uint8_t*>(glb.data()),
-                                                         glb.size(), "model.glb",
-                                                         [](const std::filesystem::path& file) { arcomp::parseGltf(file); });
+    return arcomp::fuzz::parseAsFile<arcomp::ModelError>(
+        reinterpret_cast<const std::uint8_t*>(glb.data()), glb.size(), "model.glb",
+        [](const std::filesystem::path& file) { arcomp::parseGltf(file); });
 }

@@ -19,17 +19,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string length = std::to_string(size - 5), decoded = std::to_string(stride * count);
     const std::string json = R"({"asset": {"version": "2.0"},
       "extensionsUsed": ["EXT_meshopt_compression"], "extensionsRequired": ["EXT_meshopt_compression"],
-      "buffers": [{"byteLength": )" + length + R"(},
-                  {"byteLength": )" + decoded + R"(, "extensions": {"EXT_meshopt_compression": {"fallback": true}}}],
-      "bufferViews": [{"buffer": 1, "byteLength": )" + decoded + R"(, "byteStride": )" + std::to_string(stride) + R"(,
-        "extensions": {"EXT_meshopt_compression": {"buffer": 0, "byteLength": )" + length +
-                             R"(, "byteStride": )" + std::to_string(stride) + R"(, "count": )" + std::to_string(count) +
-                             R"(, "mode": ")" + mode + R"(", "filter": ")" + filter + R"("}}}],
-      "accessors": [{"bufferView": 0, "componentType": 5126, "count": )" + std::to_string(count) + R"(, "type": "VEC3"}],
+      "buffers": [{"byteLength": )" +
+                             length + R"(},
+                  {"byteLength": )" +
+                             decoded + R"(, "extensions": {"EXT_meshopt_compression": {"fallback": true}}}],
+      "bufferViews": [{"buffer": 1, "byteLength": )" +
+                             decoded + R"(, "byteStride": )" + std::to_string(stride) + R"(,
+        "extensions": {"EXT_meshopt_compression": {"buffer": 0, "byteLength": )" +
+                             length + R"(, "byteStride": )" + std::to_string(stride) + R"(, "count": )" +
+                             std::to_string(count) + R"(, "mode": ")" + mode + R"(", "filter": ")" + filter + R"("}}}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": )" +
+                             std::to_string(count) + R"(, "type": "VEC3"}],
       "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
       "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}]})";
     const std::string glb = arcomp::fuzz::glbAround(json, data + 5, size - 5);
-    return arcomp::fuzz::parseAsFile<arcomp::ModelError>(reinterpret_cast<const std::uint8_t*>(glb.data()),
-                                                         glb.size(), "model.glb",
-                                                         [](const std::filesystem::path& file) { arcomp::parseGltf(file); });
+    return arcomp::fuzz::parseAsFile<arcomp::ModelError>(
+        reinterpret_cast<const std::uint8_t*>(glb.data()), glb.size(), "model.glb",
+        [](const std::filesystem::path& file) { arcomp::parseGltf(file); });
 }
