@@ -3,6 +3,7 @@
 #include "graph/core/BadInput.hpp"
 #include "runtime/config/CameraFile.hpp"
 #include "runtime/config/YamlMap.hpp"
+#include "runtime/config/ZoneConfig.hpp"
 
 #include <limits>
 
@@ -183,6 +184,7 @@ StationConfig loadStationConfig(const std::filesystem::path& file) {
     readGazeConfig(root, cfg.gaze);
     readPointCloudConfig(root, cfg.pointClouds);
     readShowControlConfig(root, cfg.showControl);
+    readZoneConfig(root, cfg.camera.calibrated, cfg.zones);
     root.finish();
     report.throwIfAny();
     return cfg;

@@ -15,6 +15,7 @@
 #include "runtime/config/OperatorConfig.hpp"
 #include "runtime/config/PointCloudConfig.hpp"
 #include "runtime/config/ShowControlConfig.hpp"
+#include "runtime/zones/Zone.hpp"
 
 #include <glm/glm.hpp>
 
@@ -93,6 +94,7 @@ struct StationConfig {
     GazeConfig gaze;
     PointCloudConfig pointClouds;
     ShowControlConfig showControl;  // where the people are sent
+    std::vector<Zone> zones;        // where visitors are counted
 };
 
 StationConfig loadStationConfig(const std::filesystem::path& file);

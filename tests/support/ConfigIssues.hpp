@@ -7,6 +7,7 @@
 #include "runtime/config/ConfigError.hpp"
 #include "runtime/config/StationConfig.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -31,6 +32,13 @@ inline bool hasIssue(const std::vector<ConfigIssue>& issues, int line, const std
         if (i.line == line && (!column || i.column == *column) && i.message.find(part) != std::string::npos)
             return true;
     return false;
+}
+
+// The 1-based line of `text` that first holds `part`; 0 when none does.
+inline int lineOf(const std::string& text, const std::string& part) {
+    const auto at = text.find(part);
+    if (at == std::string::npos) return 0;
+    return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
 }
 
 inline std::string describe(const std::vector<ConfigIssue>& issues) {
