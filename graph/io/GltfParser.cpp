@@ -90,10 +90,12 @@ struct SetAside {
 };
 
 SetAside setAside(const GltfDocument& doc) {
-    SetAside out{doc.json, {}, {}};
+    SetAside out{nlohmann::json::object(), {}, {}};
     nlohmann::json& j = out.tinygltfJson;
-    j.erase("buffers");
-    j.erase("images");
+    // Copied member by member: the buffers' and images' data URIs can be
+    // most of the document.
+    for (const auto& [key, value] : doc.json.items())
+        if (key != "buffers" && key != "images") j[key] = value;
     if (auto t = j.find("textures"); t != j.end() && t->is_array())
         for (auto& texture : *t)
             if (const nlohmann::json* ext = member(texture, "extensions"))

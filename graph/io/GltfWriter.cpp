@@ -160,7 +160,7 @@ int GltfWriter::pngImage(const std::vector<std::uint8_t>& png) {
 
 int GltfWriter::image(std::string_view json) { return add(images_, json); }
 
-std::string GltfWriter::text() const {
+GltfWriter::Json GltfWriter::document(bool embedBuffer) const {
     Json doc = {{"asset", {{"version", "2.0"}, {"generator", generator}}}};
     const auto put = [&doc](const char* key, const Json& list) {
         if (!list.empty()) doc[key] = list;  // a glTF array, when present, has at least one element
@@ -179,10 +179,36 @@ std::string GltfWriter::text() const {
     put("animations", animations);
     put("accessors", accessors_);
     put("bufferViews", views_);
-    if (!buffer_.empty())
-        doc["buffers"] = Json::array(
-            {{{"byteLength", buffer_.size()}, {"uri", "data:application/octet-stream;base64," + base64(buffer_)}}});
-    return doc.dump(1) + "\n";
+    if (!buffer_.empty()) {
+        Json buffer = {{"byteLength", buffer_.size()}};
+        if (embedBuffer) buffer["uri"] = "data:application/octet-stream;base64," + base64(buffer_);
+        doc["buffers"] = Json::array({buffer});
+    }
+    return doc;
+}
+
+std::string GltfWriter::text() const { return document(true).dump(1) + "\n"; }
+
+std::string GltfWriter::glb() const {
+    std::string json = document(false).dump();
+    while (json.size() % 4) json += ' ';
+    const std::size_t bin = (buffer_.size() + 3) / 4 * 4;
+    std::string out;
+    const auto u32 = [&out](std::size_t v) {
+        for (int k = 0; k < 4; ++k) out += static_cast<char>((v >> (8 * k)) & 0xFF);
+    };
+    out += "glTF";
+    u32(2);
+    u32(12 + 8 + json.size() + (buffer_.empty() ? 0 : 8 + bin));
+    u32(json.size());
+    out += "JSON" + json;
+    if (!buffer_.empty()) {
+        u32(bin);
+        out += std::string("BIN\0", 4);
+        out.append(buffer_.begin(), buffer_.end());
+        out.append(bin - buffer_.size(), '\0');
+    }
+    return out;
 }
 
 }  // namespace arcomp

@@ -92,8 +92,13 @@ public:
 
     // The whole document, ending in a newline.
     std::string text() const;
+    // The same as a GLB: the JSON chunk, then the buffer as the BIN chunk
+    // (images stay data URIs).
+    std::string glb() const;
 
 private:
+    Json document(bool embedBuffer) const;
+
     Json accessors_ = Json::array(), views_ = Json::array(), images_ = Json::array();
     std::vector<std::uint8_t> buffer_;
 };

@@ -67,3 +67,18 @@ TEST(GltfWriter, aHandWrittenPartThatIsNotJsonIsRefusedWhereItIsAdded) {
     EXPECT_THROW(w.accessor(&one, 1, "VEC5", GltfWriter::kFloat), std::invalid_argument);
     EXPECT_THROW(w.accessor(&one, 1, "SCALAR", GltfWriter::kUnsignedByte, {.bounds = true}), std::invalid_argument);
 }
+
+TEST(GltfWriter, theGlbHoldsTheSameModelWithTheBufferInItsBinChunk) {
+    const GltfWriter w = triangle();
+    TempDir dir;
+    const std::string glb = w.glb();
+    ASSERT_EQ(glb.substr(0, 4), "glTF");
+    EXPECT_EQ(glb.size() % 4, 0u);
+    EXPECT_EQ(glb.find("base64"), std::string::npos);
+    Scene fromText, fromGlb;
+    loadModel(dir.write("tri.gltf", w.text()), fromText, fromText.root());
+    loadModel(dir.write("tri.glb", glb), fromGlb, fromGlb.root());
+    ASSERT_EQ(fromGlb.geometries().size(), 1u);
+    EXPECT_EQ(fromGlb.geometry(0).positions, fromText.geometry(0).positions);
+    EXPECT_EQ(fromGlb.geometry(0).indices, fromText.geometry(0).indices);
+}

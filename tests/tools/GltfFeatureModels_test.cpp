@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include <fstream>
 #include <set>
 #include <stdexcept>
 
@@ -25,8 +26,10 @@ YAML::Node document(const std::string& name) { return YAML::Load(featureModelGlt
 TEST(GltfFeatureModels, everyFeatureOfTheIssueHasAModel) {
     std::set<std::string> names;
     for (const FeatureModel& m : featureModels()) EXPECT_TRUE(names.insert(m.name).second) << m.name << " twice";
-    for (const char* name : {"emissive", "emissive-unlit", "normal-map", "alpha-mask", "alpha-blend",
-                             "texture-transform", "metal-rough", "vertex-colors", "animated-node", "skinned-bend"})
+    for (const char* name :
+         {"emissive", "emissive-unlit", "normal-map", "alpha-mask", "alpha-blend", "texture-transform", "metal-rough",
+          "vertex-colors", "animated-node", "skinned-bend", "checker-ball", "checker-ball-draco",
+          "checker-ball-meshopt", "checker-ball-quantized", "webp-plane"})
         EXPECT_TRUE(names.count(name)) << name;
 }
 
@@ -34,7 +37,7 @@ TEST(GltfFeatureModels, eachLoadsWithoutWarnings) {
     TempDir dir;
     for (const FeatureModel& m : featureModels()) {
         const auto file = writeFeatureModel(m, dir.path());
-        EXPECT_EQ(file, dir.path() / (m.name + ".gltf"));
+        EXPECT_EQ(file, dir.path() / (m.name + (m.packedFrom.empty() ? ".gltf" : ".glb")));
         Scene scene;
         const LoadedModel loaded = loadModel(file, scene, scene.root());
         for (const std::string& w : loaded.warnings) ADD_FAILURE() << m.name << ": " << w;
@@ -145,7 +148,45 @@ TEST(GltfFeatureModels, animatedModelsAreShownAtTimesWithinTheirClip) {
     }
 }
 
-TEST(GltfFeatureModels, unknownNameThrows) { EXPECT_THROW(featureModelGltf("teapot"), std::invalid_argument); }
+TEST(GltfFeatureModels, unknownNameThrows) {
+    EXPECT_THROW(featureModelGltf("teapot"), std::invalid_argument);
+    EXPECT_THROW(featureModelGltf("checker-ball-meshopt"), std::invalid_argument);  // gltfpack makes it
+}
+
+// Each compressed copy of the ball uses its extension and draws the
+// ball's triangles; the WebP plane's texture decodes.
+TEST(GltfFeatureModels, theCompressedCopiesAreTheBallCompressed) {
+    TempDir dir;
+    const auto parsed = [&](const std::string& name) {
+        for (const FeatureModel& m : featureModels())
+            if (m.name == name) {
+                const auto file = writeFeatureModel(m, dir.path());
+                std::ifstream in(file, std::ios::binary);
+                return std::pair{parseModel(file), std::string{std::istreambuf_iterator<char>(in), {}}};
+            }
+        throw std::invalid_argument(name);
+    };
+    const auto triangles = [](const ParsedModel& m) {
+        std::size_t n = 0;
+        for (const Geometry& g : m.geometries) n += g.triangleCount();
+        return n;
+    };
+    const std::size_t ball = triangles(parsed("checker-ball").first);
+    for (const auto& [name, extension] : {std::pair{"checker-ball-draco", "KHR_draco_mesh_compression"},
+                                          std::pair{"checker-ball-meshopt", "EXT_meshopt_compression"},
+                                          std::pair{"checker-ball-quantized", "KHR_mesh_quantization"}}) {
+        const auto [model, bytes] = parsed(name);
+        EXPECT_NE(bytes.find(extension), std::string::npos) << name;
+        EXPECT_EQ(triangles(model), ball) << name;
+        ASSERT_FALSE(model.images.empty()) << name;
+        EXPECT_EQ(model.images[0].width, 256) << name;
+    }
+    const auto [plane, bytes] = parsed("webp-plane");
+    EXPECT_NE(bytes.find("image/webp"), std::string::npos);
+    ASSERT_EQ(plane.images.size(), 1u);
+    EXPECT_EQ(plane.images[0].width, 128);
+    EXPECT_EQ(plane.materials[0].baseColorTexture.image, 0);
+}
 
 }  // namespace
 }  // namespace arcomp

@@ -22,7 +22,8 @@ import { fileURLToPath } from 'node:url';
 
 const here = dirname(fileURLToPath(import.meta.url));
 const types = { '.html': 'text/html', '.js': 'text/javascript', '.gltf': 'model/gltf+json', '.glb': 'model/gltf-binary',
-                '.bin': 'application/octet-stream', '.hdr': 'application/octet-stream', '.png': 'image/png' };
+                '.bin': 'application/octet-stream', '.hdr': 'application/octet-stream', '.png': 'image/png',
+                '.wasm': 'application/wasm' };
 
 if (process.argv.length !== 3) {
   console.error('usage: node render.mjs JOBS.json');
@@ -32,7 +33,8 @@ const jobsFile = process.argv[2];
 const spec = JSON.parse(await readFile(jobsFile, 'utf8'));
 
 // The page may fetch only the files the jobs name (by number), three.js
-// itself and the page: a model's data is embedded, so nothing else is needed.
+// itself (its Draco decoder included) and the page: a model's data is
+// embedded, so nothing else is needed.
 const files = [];
 const urlOf = (path) => {
   if (path === null || path === undefined) return null;

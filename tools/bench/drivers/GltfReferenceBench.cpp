@@ -17,7 +17,8 @@
 //    absolute difference there (0-255), as SSIM forgives a smooth surface
 //    of the wrong colour.
 //  - The environment is arcomp's neutral studio, written as .hdr.
-//  - DIR gets models/ (the .gltf files and the .hdr), three/ and
+//  - DIR gets models/ (the .gltf files, gltfpack's .glb copies and the
+//    .hdr), three/ and
 //    arcomp-<api>/ (the renders), and strip-<model>.png: three.js | each
 //    arcomp API | |three.js - first API| x4.
 //  - Without chromium, node or the npm packages the reference is skipped:
@@ -72,6 +73,7 @@ struct Job {
     const FeatureModel* model;
     std::optional<float> time;
     std::string id;  // file stem: the model's name, "-t<seconds>" when timed
+    fs::path file;   // the model as written: .gltf, or gltfpack's .glb
 };
 
 // Why the three.js side cannot run here, or empty when it can.
@@ -132,7 +134,7 @@ std::string threeJobs(const std::vector<Job>& jobs, const fs::path& models, cons
             j.beginArray(key).value(v.x).value(v.y).value(v.z).end();
         };
         j.beginObject();
-        j.field("model", fs::absolute(models / (m.name + ".gltf")).string());
+        j.field("model", fs::absolute(job.file).string());
         j.field("out", fs::absolute(outDir / (job.id + ".png")).string());
         j.field("width", size.x).field("height", size.y);
         array("eye", m.camera.eye);
@@ -229,10 +231,10 @@ int run(const Options& o) {
     const fs::path out(o.out), models = out / "models";
     std::vector<Job> jobs;
     for (const FeatureModel* m : chosen) {
-        writeFeatureModel(*m, models);
+        const fs::path file = writeFeatureModel(*m, models);
         if (!m->environment.empty()) environmentFile(m->environment, models);
-        if (m->times.empty()) jobs.push_back({m, std::nullopt, m->name});
-        for (float t : m->times) jobs.push_back({m, t, m->name + "-t" + timeText(t)});
+        if (m->times.empty()) jobs.push_back({m, std::nullopt, m->name, file});
+        for (float t : m->times) jobs.push_back({m, t, m->name + "-t" + timeText(t), file});
     }
 
     if (const std::string why = missingReference(o); !why.empty()) {
@@ -286,8 +288,7 @@ int run(const Options& o) {
                 m.environment.empty() ? fs::path() : fs::absolute(environmentFile(m.environment, models));
             std::cerr << "gltf-reference: arcomp " << api << " renders " << job.id << "\n";
             const ShellResult ran = runShellCommand(
-                shellQuote(self) + " " +
-                arcompRenderArgs(job, fs::absolute(models / (m.name + ".gltf")), environment, api, size, png));
+                shellQuote(self) + " " + arcompRenderArgs(job, fs::absolute(job.file), environment, api, size, png));
             if (ran.status != 0) {
                 score.ssim.push_back(std::nullopt);
                 score.object.push_back(std::nullopt);

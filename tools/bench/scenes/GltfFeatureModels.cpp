@@ -1,5 +1,6 @@
 #include "tools/bench/scenes/GltfFeatureModels.hpp"
 
+#include "graph/io/Base64.hpp"
 #include "graph/io/GltfWriter.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -8,7 +9,12 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <webp/encode.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -395,6 +401,98 @@ std::string skinnedBend() {
     return b.text();
 }
 
+// A checker on a ball: the texture shows where each texture coordinate
+// went, the shading where each normal went, so the compressed copies show
+// what decoding got wrong.
+cv::Mat ballChecker() {
+    cv::Mat3b checker(128, 256);
+    for (int y = 0; y < checker.rows; ++y)
+        for (int x = 0; x < checker.cols; ++x)
+            checker(y, x) = ((x / 16) + (y / 16)) % 2 == 0 ? cv::Vec3b(40, 160, 230) : cv::Vec3b(230, 230, 230);
+    return checker;
+}
+
+int ballMaterial(GltfBuilder& b) {
+    const int t = b.texture(ballChecker(), kRepeatSampler);
+    return GltfBuilder::add(b.materials, R"({"name":"checker","pbrMetallicRoughness":{"baseColorTexture":{"index":)" +
+                                             std::to_string(t) + R"(},"metallicFactor":0,"roughnessFactor":0.5}})");
+}
+
+std::string checkerBall() {
+    GltfBuilder b;
+    const int m = ballMaterial(b);
+    b.sceneNodes.push_back(meshNode(b, "ball", mesh(b, primitiveData(b, sphere(0.9f)), m)));
+    return b.text();
+}
+
+// The same ball, its primitive compressed by libdraco as exporters do:
+// 14-bit positions, 10-bit normals, 12-bit texture coordinates.
+std::string checkerBallDraco() {
+    GltfBuilder b;
+    const int m = ballMaterial(b);
+    const MeshData ball = sphere(0.9f);
+    const std::vector<std::uint32_t> indices(ball.indices.begin(), ball.indices.end());
+    std::string primitive = b.dracoPrimitive(
+        ball.positions.size(),
+        {{.semantic = "POSITION", .data = &ball.positions[0].x, .components = 3, .quantizationBits = 14},
+         {.semantic = "NORMAL", .data = &ball.normals[0].x, .components = 3, .quantizationBits = 10},
+         {.semantic = "TEXCOORD_0", .data = &ball.uvs[0].x, .components = 2, .quantizationBits = 12}},
+        indices);
+    primitive.insert(primitive.size() - 1, ",\"material\":" + std::to_string(m));
+    const int meshIndex = GltfBuilder::add(b.meshes, "{\"primitives\":[" + primitive + "]}");
+    b.sceneNodes.push_back(meshNode(b, "ball", meshIndex));
+    return b.text();
+}
+
+// A plane with a lossless WebP texture (EXT_texture_webp, required: no PNG
+// fallback), a gradient under a checker so that both colour and edges show.
+std::string webpPlane() {
+    const int w = 128, h = 128;
+    std::vector<std::uint8_t> rgba(static_cast<std::size_t>(w) * h * 4);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            std::uint8_t* p = &rgba[(static_cast<std::size_t>(y) * w + x) * 4];
+            const bool dark = ((x / 32) + (y / 32)) % 2 == 1;
+            p[0] = static_cast<std::uint8_t>(dark ? 40 : 60 + x * 3 / 2);
+            p[1] = static_cast<std::uint8_t>(dark ? 40 : 60 + y * 3 / 2);
+            p[2] = static_cast<std::uint8_t>(dark ? 120 : 200);
+            p[3] = 255;
+        }
+    std::uint8_t* encoded = nullptr;
+    const std::size_t size = WebPEncodeLosslessRGBA(rgba.data(), w, h, w * 4, &encoded);
+    if (size == 0) throw std::runtime_error("feature model: libwebp cannot encode the plane's texture");
+    const std::string uri = "data:image/webp;base64," + base64(encoded, size);
+    WebPFree(encoded);
+    GltfBuilder b;
+    b.extensionsUsed.push_back("EXT_texture_webp");
+    b.extensionsRequired.push_back("EXT_texture_webp");
+    const int image = b.image(R"({"uri":")" + uri + R"("})");
+    const int sampler = GltfBuilder::add(b.samplers, kClampSampler);
+    const int t = GltfBuilder::add(b.textures, R"({"sampler":)" + std::to_string(sampler) +
+                                                   R"(,"extensions":{"EXT_texture_webp":{"source":)" +
+                                                   std::to_string(image) + "}}}");
+    const int m =
+        GltfBuilder::add(b.materials, R"({"name":"webp","pbrMetallicRoughness":{"baseColorTexture":{"index":)" +
+                                          std::to_string(t) + R"(},"metallicFactor":0,"roughnessFactor":0.9}})");
+    b.sceneNodes.push_back(meshNode(b, "plane", mesh(b, primitiveData(b, plane(2.0f)), m)));
+    return b.text();
+}
+
+// Runs gltfpack with an argument list, no shell: its exit status, or -1
+// when it cannot be started.
+int runGltfpack(const std::vector<std::string>& arguments) {
+    std::vector<char*> argv;
+    std::vector<std::string> owned{"gltfpack"};
+    owned.insert(owned.end(), arguments.begin(), arguments.end());
+    for (std::string& a : owned) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    if (posix_spawnp(&pid, "gltfpack", nullptr, nullptr, argv.data(), environ) != 0) return -1;
+    int status = 0;
+    if (waitpid(pid, &status, 0) != pid) return -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
 struct Entry {
     FeatureModel model;
     std::string (*gltf)();
@@ -460,6 +558,40 @@ const std::vector<Entry>& entries() {
           1.0f,
           {0.0f, 1.0f, 2.0f}},
          skinnedBend},
+        {{"checker-ball",
+          "a checker-textured ball, the source of the compressed copies",
+          {{0, 0, 3}, {0, 0, 0}},
+          kKeyLight,
+          "neutral"},
+         checkerBall},
+        {{"checker-ball-draco",
+          "the ball, KHR_draco_mesh_compression (14/10/12-bit)",
+          {{0, 0, 3}, {0, 0, 0}},
+          kKeyLight,
+          "neutral"},
+         checkerBallDraco},
+        {{"checker-ball-meshopt",
+          "the ball, EXT_meshopt_compression by gltfpack -c -noq",
+          {{0, 0, 3}, {0, 0, 0}},
+          kKeyLight,
+          "neutral",
+          1.0f,
+          {},
+          "checker-ball",
+          "-c -noq"},
+         nullptr},
+        {{"checker-ball-quantized",
+          "the ball, KHR_mesh_quantization by gltfpack",
+          {{0, 0, 3}, {0, 0, 0}},
+          kKeyLight,
+          "neutral",
+          1.0f,
+          {},
+          "checker-ball",
+          ""},
+         nullptr},
+        {{"webp-plane", "EXT_texture_webp, a lossless WebP texture", {{0, 0, 3}, {0, 0, 0}}, kKeyLight, "neutral"},
+         webpPlane},
     };
     return all;
 }
@@ -477,11 +609,34 @@ const std::vector<FeatureModel>& featureModels() {
 
 std::string featureModelGltf(const std::string& name) {
     for (const Entry& e : entries())
-        if (e.model.name == name) return e.gltf();
+        if (e.model.name == name) {
+            if (!e.gltf)
+                throw std::invalid_argument("feature model '" + name + "' is gltfpack's copy of " + e.model.packedFrom);
+            return e.gltf();
+        }
     throw std::invalid_argument("no feature model named '" + name + "'");
 }
 
 fs::path writeFeatureModel(const FeatureModel& model, const fs::path& folder) {
+    if (!model.packedFrom.empty()) {
+        const auto& all = featureModels();
+        const auto from =
+            std::find_if(all.begin(), all.end(), [&](const FeatureModel& m) { return m.name == model.packedFrom; });
+        if (from == all.end()) throw std::invalid_argument("no feature model named '" + model.packedFrom + "'");
+        const fs::path source = writeFeatureModel(*from, folder);
+        const fs::path file = folder / (model.name + ".glb");
+        std::vector<std::string> arguments{"-i", source.string(), "-o", file.string()};
+        for (std::size_t at = 0; at < model.packOptions.size();) {
+            const std::size_t end = std::min(model.packOptions.find(' ', at), model.packOptions.size());
+            if (end > at) arguments.push_back(model.packOptions.substr(at, end - at));
+            at = end + 1;
+        }
+        if (const int status = runGltfpack(arguments); status != 0)
+            throw std::runtime_error("cannot make feature model " + file.string() + ": gltfpack " +
+                                     (status < 0 ? "is not installed (Debian: gltfpack; scripts/setup installs it)"
+                                                 : "exited with " + std::to_string(status)));
+        return file;
+    }
     const std::string text = featureModelGltf(model.name);
     std::error_code ec;
     fs::create_directories(folder, ec);

@@ -2,9 +2,11 @@
 // The glTF feature models: one small, self-contained .gltf per material or
 // animation feature that a station's renderer must draw like every other
 // glTF viewer does (emission, normal maps, MASK and BLEND, texture
-// transforms, metallic/roughness, vertex colours, node animation, skinning).
-// Buffers and PNG images are data URIs, so a model is one file that any
-// viewer opens. Each model carries how it is to be looked at: camera,
+// transforms, metallic/roughness, vertex colours, node animation, skinning),
+// and glTF as pipelines ship it (Draco, meshopt and quantized copies of a
+// textured ball, a WebP-textured plane). Buffers and images are data URIs,
+// so a model is one file that any viewer opens; the meshopt and quantized
+// copies are gltfpack's .glb of another model. Each model carries how it is to be looked at: camera,
 // directional light, environment and, when animated, the times to show.
 // `arcomp-bench gltf-reference` renders them with arcomp and with three.js
 // and compares; the tests load them with arcomp's loader.
@@ -44,17 +46,22 @@ struct FeatureModel {
     std::string environment;  // "neutral" (image-based light), or empty for none
     float environmentIntensity = 1.0f;
     std::vector<float> times{};  // seconds into the animation to show; empty when nothing moves
+    std::string packedFrom{};    // a gltfpack copy of this model, or empty
+    std::string packOptions{};   // gltfpack's options for the copy: "-c -noq" meshopt, "" quantized
 };
 
 // Every feature model, in a fixed order.
 const std::vector<FeatureModel>& featureModels();
 
 // The model's glTF JSON, buffers and images embedded. Throws
-// std::invalid_argument for a name featureModels() does not have.
+// std::invalid_argument for a name featureModels() does not have, or for a
+// gltfpack copy (writeFeatureModel makes those).
 std::string featureModelGltf(const std::string& name);
 
 // Writes <folder>/<name>.gltf (creating the folder) and returns its path;
-// throws std::runtime_error naming the file when it cannot be written.
+// a gltfpack copy is <folder>/<name>.glb, made from its source's .gltf.
+// Throws std::runtime_error naming the file when it cannot be written, or
+// gltfpack when it is missing or fails.
 std::filesystem::path writeFeatureModel(const FeatureModel& model, const std::filesystem::path& folder);
 
 }  // namespace arcomp
