@@ -80,14 +80,27 @@ void checkExtensions(const nlohmann::json& doc, const std::string& name, ParsedM
 
 // What tinygltf 2.7 would refuse while parsing, set aside so that arcomp's
 // own checks see it: tinygltf gets the document without buffers and images
-// (arcomp read and decoded them), with a WebP texture's source in place of
-// its fallback, an unknown accessor type as SCALAR and indices without a
-// buffer view left out; parseGltf puts the last two back.
+// (arcomp read and decoded them), whole floats as integers, with a WebP
+// texture's source in place of its fallback, an unknown accessor type as
+// SCALAR and indices without a buffer view left out; parseGltf puts the
+// last two back.
 struct SetAside {
     nlohmann::json tinygltfJson;
     std::vector<std::size_t> unknownTypes;            // accessors
     std::vector<std::array<std::size_t, 3>> indices;  // mesh, primitive, accessor
 };
+
+// JSON has one number type, and the validator takes 4.0 where the schema
+// asks for an integer; tinygltf 2.7 does not. Every whole float becomes an
+// integer, which tinygltf also takes wherever it expects a number.
+void wholeFloatsAsIntegers(nlohmann::json& value) {
+    if (value.is_structured()) {
+        for (auto& child : value) wholeFloatsAsIntegers(child);
+    } else if (value.is_number_float()) {
+        const double d = value.get<double>();
+        if (std::abs(d) <= 9007199254740992.0 && d == std::trunc(d)) value = static_cast<std::int64_t>(d);
+    }
+}
 
 SetAside setAside(const GltfDocument& doc) {
     SetAside out{nlohmann::json::object(), {}, {}};
@@ -96,6 +109,7 @@ SetAside setAside(const GltfDocument& doc) {
     // most of the document.
     for (const auto& [key, value] : doc.json.items())
         if (key != "buffers" && key != "images") j[key] = value;
+    wholeFloatsAsIntegers(j);
     if (auto t = j.find("textures"); t != j.end() && t->is_array())
         for (auto& texture : *t)
             if (const nlohmann::json* ext = member(texture, "extensions"))
