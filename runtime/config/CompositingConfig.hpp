@@ -61,6 +61,7 @@ struct OutputConfig {
     std::filesystem::path videoFile;  // empty: none
     std::string videoFourcc = "MJPG";
     std::filesystem::path matteDir;  // the matte's alpha per frame, for inspection; empty: none
+    std::filesystem::path events;    // the zone events as JSON Lines (runtime/station/EventLog.hpp); empty: none
     bool window = false;             // for `arcomp run`; replay ignores it
 };
 

@@ -112,6 +112,9 @@ void readZoneConfig(YamlMap& root, const std::optional<CalibratedCamera>& camera
                 ok = false;
             }
         }
+        zone.enterMargin = zone.leaveMargin = defaultMargin(zone.space);
+        z.number("enter_margin", zone.enterMargin, 0.0, 100.0);
+        z.number("leave_margin", zone.leaveMargin, 0.0, 100.0);
         z.finish();
         if (!ok) continue;
         if (zone.space == ZoneSpace::Floor && !camera) {

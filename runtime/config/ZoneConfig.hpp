@@ -7,7 +7,9 @@
 //     - {name: dino, circle: {center: [2, 1.5], radius: 0.8}}            # metres
 //     - {name: door, image_rect: {min: [0, 0.5], max: [0.2, 1]}}         # picture 0..1, u right, v down
 //
-// Each is checked where it is written: one shape each, a name used once, a
+// `enter_margin` and `leave_margin` (in the zone's units; 0.15 m on the
+// floor, 0.02 of the picture by default) keep a person on the edge from
+// flickering in and out. Each is checked where it is written: one shape each, a name used once, a
 // polygon with area whose edges do not cross, metres only with
 // camera.calibration, and a floor zone the calibrated camera sees some of.
 

@@ -74,6 +74,7 @@ const PeopleFrame& FloorPeople::update(const std::vector<TrackedPerson>& tracks,
         const glm::vec2 foot = framePixel(t.foot, scale);
         f.box = {t.box.x * scale, t.box.y * scale, t.box.width * scale, t.box.height * scale};
         if (t.missed == 0 && t.feetVisible) {
+            f.picture = foot / size_;
             if (!camera_) {
                 moveTo(f, foot / size_, seconds);
             } else if (const std::optional<glm::dvec3> middle = middleOnFloor(foot)) {
@@ -98,7 +99,9 @@ const PeopleFrame& FloorPeople::update(const std::vector<TrackedPerson>& tracks,
                                .position = f.position,
                                .velocity = f.velocity,
                                .heightMetres = f.height,
-                               .box = f.box});
+                               .box = f.box,
+                               .picture = f.picture,
+                               .zones = {}});
     }
     std::sort(now_.people.begin(), now_.people.end(), [](const Person& a, const Person& b) { return a.id < b.id; });
     for (const Person& p : now_.people)

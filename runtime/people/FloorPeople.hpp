@@ -58,6 +58,7 @@ private:
         glm::vec2 position{0.0f}, velocity{0.0f};
         float height = 0.0f;
         PixelBox box;
+        glm::vec2 picture{0.0f};              // the foot point, 0..1
         bool placed = false, moving = false;  // a position measured; a velocity measured
     };
     // The middle of a person whose feet are at `foot` (frame pixels); none

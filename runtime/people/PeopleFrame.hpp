@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace arcomp {
@@ -39,17 +40,42 @@ struct Person {
     glm::vec2 velocity{0.0f};   // position's units per second
     float heightMetres = 0.0f;  // estimated; 0 when unknown (no calibration, head out of the picture)
     PixelBox box;               // in the picture, where last seen
+    glm::vec2 picture{0.0f};    // the foot point in the picture, 0..1 (u right, v down), where last seen
+    std::vector<int> zones{};   // indices into PeopleFrame::zones of the zones the person is in, ascending
 
     bool operator==(const Person&) const = default;
 };
+
+// One configured zone this frame (runtime/zones/ZoneOccupancy.hpp).
+struct ZoneCount {
+    std::string name;
+    int people = 0;             // in it now
+    std::uint64_t entries = 0;  // people who entered it since the station started
+
+    bool operator==(const ZoneCount&) const = default;
+};
+
+// A person entering or leaving a zone, on the frame it happened.
+struct ZoneEvent {
+    enum class Kind { Enter, Leave };
+    Kind kind = Kind::Enter;
+    int zone = 0;    // index into PeopleFrame::zones
+    int person = 0;  // id
+
+    bool operator==(const ZoneEvent&) const = default;
+};
+// "enter" or "leave": the word messages and the event log carry.
+inline const char* kindName(ZoneEvent::Kind kind) { return kind == ZoneEvent::Kind::Enter ? "enter" : "leave"; }
 
 struct PeopleFrame {
     std::uint64_t frame = 0;  // the station's frame number, from 0
     double seconds = 0.0;     // video time: the file's own in replay, so that a replay repeats
     PositionUnits units = PositionUnits::ImageNormalised;
-    std::vector<Person> people;  // in the order of their ids
-    std::vector<int> entered;    // ids in `people` for the first time this frame
-    std::vector<int> left;       // ids in the previous frame's `people` and not in this one's
+    std::vector<Person> people;         // in the order of their ids
+    std::vector<int> entered;           // ids in `people` for the first time this frame
+    std::vector<int> left;              // ids in the previous frame's `people` and not in this one's
+    std::vector<ZoneCount> zones;       // per configured zone, in the config's order; empty without zones
+    std::vector<ZoneEvent> zoneEvents;  // this frame's: people no longer followed first, then by id and zone
 };
 
 // The person with `id` in `frame`; null when there is none.

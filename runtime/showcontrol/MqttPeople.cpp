@@ -35,7 +35,9 @@ void check(int rc, const std::string& what) {
     if (rc != MOSQ_ERR_SUCCESS) throw ShowControlError("show_control.mqtt: " + what + ": " + mosquitto_strerror(rc));
 }
 
-nlohmann::json personJson(const Person& p) {
+nlohmann::json personJson(const Person& p, const std::vector<ZoneCount>& zones) {
+    nlohmann::json in = nlohmann::json::array();
+    for (const int z : p.zones) in.push_back(zones[static_cast<std::size_t>(z)].name);
     return {{"id", p.id},
             {"x", p.position.x},
             {"y", p.position.y},
@@ -44,7 +46,8 @@ nlohmann::json personJson(const Person& p) {
             {"height_m", p.heightMetres},
             {"age_s", p.ageSeconds},
             {"seen", p.seen},
-            {"box", {p.box.x, p.box.y, p.box.width, p.box.height}}};
+            {"box", {p.box.x, p.box.y, p.box.width, p.box.height}},
+            {"zones", std::move(in)}};
 }
 
 }  // namespace
@@ -159,7 +162,7 @@ void MqttPeople::publish(const PeopleFrame& frame) {
     std::lock_guard lock(mutex_);
     for (const int id : frame.entered)
         if (const Person* p = findPerson(frame, id)) {
-            nlohmann::json e = personJson(*p);
+            nlohmann::json e = personJson(*p, frame.zones);
             e["frame"] = frame.frame;
             e["seconds"] = frame.seconds;
             e["units"] = units;
@@ -174,10 +177,14 @@ void MqttPeople::publish(const PeopleFrame& frame) {
     if (slot <= lastPeopleSlot_) return;
     lastPeopleSlot_ = slot;
     nlohmann::json people = nlohmann::json::array();
-    for (const Person& p : frame.people) people.push_back(personJson(p));
+    for (const Person& p : frame.people) people.push_back(personJson(p, frame.zones));
+    nlohmann::json zones = nlohmann::json::array();
+    for (const ZoneCount& z : frame.zones)
+        zones.push_back({{"name", z.name}, {"people", z.people}, {"entries", z.entries}});
     const Message m{
         cfg_.topicPrefix + "/people",
-        nlohmann::json{{"frame", frame.frame}, {"seconds", frame.seconds}, {"units", units}, {"people", people}}
+        nlohmann::json{
+            {"frame", frame.frame}, {"seconds", frame.seconds}, {"units", units}, {"people", people}, {"zones", zones}}
             .dump()};
     if (!send(m, 0)) ++status_.dropped;
 }

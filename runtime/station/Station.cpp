@@ -1,6 +1,7 @@
 #include "runtime/station/Station.hpp"
 
 #include "graph/core/ElapsedTime.hpp"
+#include "graph/core/JoinText.hpp"
 #include "graph/core/SelectPass.hpp"
 #include "runtime/composite/ShadowCatcher.hpp"
 #include "runtime/config/CalibrationFile.hpp"
@@ -8,6 +9,8 @@
 #include "runtime/render/ImpostorBaker.hpp"
 #include "runtime/render/PointCloudLayer.hpp"
 #include "runtime/station/SceneFile.hpp"
+
+#include <spdlog/spdlog.h>
 
 namespace arcomp {
 
@@ -56,11 +59,18 @@ Station::Station(const StationConfig& cfg, StationInput input)
     : cfg_(cfg), capture_(std::move(input)), matte_(cfg_.compositing.matte),
       personDepths_(cfg_.compositing.compositor.personDepthFromFeet ? cfg_.camera.calibrated : std::nullopt,
                     cfg_.compositing.compositor.personPlaneMetres, capture_.size()),
-      people_(cfg_.camera.calibrated, capture_.size()), showControl_(cfg_.showControl),
+      people_(cfg_.camera.calibrated, capture_.size()), zones_(cfg_.zones), showControl_(cfg_.showControl),
       outputs_(cfg_.compositing.output, capture_.fps(), capture_.size()) {
     const std::filesystem::path cache = bakeCacheFolder(cfg_.compositing.compositor);
     lodBake_ = buildScene(cfg_, world_, warnings_, cache);
     warnings_.insert(warnings_.end(), showControl_.problems().begin(), showControl_.problems().end());
+    if (!cfg_.compositing.output.events.empty()) {
+        try {
+            events_.emplace(cfg_.compositing.output.events);
+        } catch (const std::exception& e) {
+            warnings_.push_back(std::string(e.what()) + "; the station runs without its event log");
+        }
+    }
     world_.scene.update();
     // The CG camera is the video camera: its pose and field of view from the
     // config or its calibration file, its image size the video's.
@@ -162,9 +172,18 @@ bool Station::frame() {
     personDepths_.run(now.person, now.newFrame);
     stats_.people = static_cast<std::size_t>(personDepths_.depths().people);
     stats_.trackMs = clock.lap();
-    people_.update(personDepths_.people(), personDepths_.scale(), stats_.frame, now.seconds, now.newFrame);
+    const PeopleFrame& visitors = zones_.update(
+        people_.update(personDepths_.people(), personDepths_.scale(), stats_.frame, now.seconds, now.newFrame));
+    if (events_ && now.newFrame) {
+        try {
+            events_->write(visitors);
+        } catch (const std::exception& e) {
+            spdlog::error(joinText(e.what(), "; the event log stops here, the station goes on"));
+            events_.reset();
+        }
+    }
     if (now.newFrame && !showControl_.empty()) {
-        const auto sent = showControl_.publish(people_.people());
+        const auto sent = showControl_.publish(visitors);
         stats_.captureToPeopleSentMs = std::chrono::duration<double, std::milli>(sent - now.capturedAt).count();
     }
     stats_.peopleMs = clock.lap();

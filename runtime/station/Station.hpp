@@ -1,12 +1,11 @@
 #pragma once
 // One compositing station's frame, in one place. Station::frame() is the
 // pipeline, each stage a class of its own:
-//   capture -> matte -> people (depths, floor, show control) -> update -> select -> budget
+//   capture -> matte -> people (depths, floor, zones, show control) -> update -> select -> budget
 //   -> backdrop -> contact shadows -> render -> holdout -> composite -> output
-// (CaptureStage, MatteStage, PersonDepthStage, FloorPeople and ShowControl, moveObjects and animateObjects, select,
-// BudgetStage, Compositor, ShadowCatcher, Renderer and PointCloudLayer,
-// HoldoutStage, Compositor, OutputStage), and it records
-// each stage's milliseconds in stats() (runtime/station/FrameStats.hpp).
+// (CaptureStage, MatteStage, PersonDepthStage, FloorPeople, ZoneOccupancy and ShowControl, moveObjects and
+// animateObjects, select, BudgetStage, Compositor, ShadowCatcher, Renderer and PointCloudLayer, HoldoutStage,
+// Compositor, OutputStage), and it records each stage's milliseconds in stats() (runtime/station/FrameStats.hpp).
 //
 //   auto ctx = HeadlessContext::create(GlRequest::Auto);   // or a window's context
 //   Station station(cfg, StationInput::fromReplay(std::move(grabber), fps));
@@ -59,6 +58,7 @@
 #include "runtime/showcontrol/ShowControl.hpp"
 #include "runtime/station/BudgetStage.hpp"
 #include "runtime/station/CaptureStage.hpp"
+#include "runtime/station/EventLog.hpp"
 #include "runtime/station/FrameStats.hpp"
 #include "runtime/station/GazeSource.hpp"
 #include "runtime/station/HoldoutBake.hpp"
@@ -67,6 +67,7 @@
 #include "runtime/station/OutputStage.hpp"
 #include "runtime/station/PersonDepthStage.hpp"
 #include "runtime/station/WorkerThread.hpp"
+#include "runtime/zones/ZoneOccupancy.hpp"
 
 #include <array>
 #include <chrono>
@@ -142,7 +143,7 @@ public:
     const std::vector<StandingPerson>& standingPeople() const { return personDepths_.standing(); }
     // The last frame's visitors as the outputs publish them: on the floor in
     // metres with a calibrated camera, else in the picture.
-    const PeopleFrame& people() const { return people_.people(); }
+    const PeopleFrame& people() const { return zones_.people(); }
     // Where the people go: each OSC, TUIO and MQTT output's state and counts.
     const ShowControl& showControl() const { return showControl_; }
     // Overrides the camera (tests move it along a path); keeps the intrinsics.
@@ -189,6 +190,8 @@ private:
     MatteStage matte_;
     PersonDepthStage personDepths_;
     FloorPeople people_;
+    ZoneOccupancy zones_;  // the people with their zones: what is published
+    std::optional<EventLog> events_;
     ShowControl showControl_;
     World world_;
     View view_;

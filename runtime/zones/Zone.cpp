@@ -38,6 +38,8 @@ bool segmentsCross(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 d) {
 
 }  // namespace
 
+float defaultMargin(ZoneSpace space) { return space == ZoneSpace::Floor ? 0.15f : 0.02f; }
+
 float signedDistance(const Zone& zone, glm::vec2 point) {
     if (zone.polygon.empty()) return glm::length(point - zone.center) - zone.radius;
     float nearest = std::numeric_limits<float>::max();

@@ -5,7 +5,8 @@
 // camera without a calibration. Values only.
 //
 //   Zone front{.name = "front", .space = ZoneSpace::Floor,
-//              .polygon = {{-1, 1}, {1, 1}, {1, 2.5f}, {-1, 2.5f}}, .center = {}, .radius = 0.0f};
+//              .polygon = {{-1, 1}, {1, 1}, {1, 2.5f}, {-1, 2.5f}}, .center = {}, .radius = 0.0f,
+//              .enterMargin = 0.15f, .leaveMargin = 0.15f};
 //   bool in = signedDistance(front, {0.0f, 2.0f}) < 0.0f;   // true
 
 #include <glm/vec2.hpp>
@@ -23,7 +24,15 @@ struct Zone {
     std::vector<glm::vec2> polygon;  // corners in order; empty for a circle
     glm::vec2 center{0.0f};          // a circle's, when radius > 0
     float radius = 0.0f;
+    // Hysteresis, in the zone's units: a person enters once this far inside
+    // the edge and leaves once this far outside it, so that someone
+    // standing on the edge does not flicker in and out.
+    float enterMargin = 0.0f, leaveMargin = 0.0f;
 };
+
+// The margins a zone gets when the config gives none: 15 cm on the floor,
+// 2 % of the picture.
+float defaultMargin(ZoneSpace space);
 
 // How far `point` lies outside the zone's edge, in the zone's units;
 // negative inside. Enter and leave margins compare against it.

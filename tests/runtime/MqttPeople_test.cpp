@@ -30,7 +30,8 @@ MqttOutputConfig brokerAt(int port, const std::string& prefix) {
     return c;
 }
 
-// Frame `i` at 25 fps; `ids` standing, `entered` and `left` as given.
+// Frame `i` at 25 fps; `ids` standing, all in zone "front", `entered` and
+// `left` as given.
 PeopleFrame frameWith(std::uint64_t i, const std::vector<int>& ids, std::vector<int> entered = {},
                       std::vector<int> left = {}) {
     PeopleFrame f;
@@ -42,8 +43,10 @@ PeopleFrame frameWith(std::uint64_t i, const std::vector<int>& ids, std::vector<
         p.id = id;
         p.seen = true;
         p.position = {0.5f * static_cast<float>(id), 2.0f};
+        p.zones = {0};
         f.people.push_back(p);
     }
+    f.zones = {{.name = "front", .people = static_cast<int>(ids.size()), .entries = 1}};
     f.entered = std::move(entered);
     f.left = std::move(left);
     return f;
@@ -99,6 +102,7 @@ TEST(MqttPeople, peopleAtTheRateInVideoTimeAndEnterAndLeaveAtQos1) {
             EXPECT_EQ(j["frame"], 2);
             EXPECT_EQ(j["units"], "floor_m");
             EXPECT_FLOAT_EQ(j["x"].get<float>(), 1.5f);
+            EXPECT_EQ(j["zones"], nlohmann::json::array({"front"}));
         } else if (m.topic == "hall/entrance/leave") {
             EXPECT_EQ(m.qos, 1);
             EXPECT_EQ(j["id"], 3);
@@ -107,6 +111,8 @@ TEST(MqttPeople, peopleAtTheRateInVideoTimeAndEnterAndLeaveAtQos1) {
             EXPECT_DOUBLE_EQ(j["seconds"].get<double>(), 0.2);
             ASSERT_EQ(j["people"].size(), 1u);
             EXPECT_EQ(j["people"][0]["id"], 3);
+            EXPECT_EQ(j["people"][0]["zones"], nlohmann::json::array({"front"}));
+            EXPECT_EQ(j["zones"], nlohmann::json::parse(R"([{"name": "front", "people": 1, "entries": 1}])"));
         } else if (m.topic == "hall/entrance/state") {
             EXPECT_EQ(m.payload, "online");
         }

@@ -93,6 +93,30 @@ TEST(ShowControl, oscBundleIsTheFrameThenEnterThenEachPersonThenLeave) {
     EXPECT_EQ(show.outputs().at(0).state, "sending");
 }
 
+TEST(ShowControl, oscCarriesEachPersonsZonesAndEachZonesCount) {
+    TempDir dir;
+    OscReceiver rx(dir.path());
+    ShowControlConfig cfg;
+    cfg.osc.targets = {loopback(rx)};
+    ShowControl show(cfg);
+    PeopleFrame frame = frameAt(3, 0.12, PositionUnits::FloorMetres);
+    frame.people = {personAt(2, {0.5f, 1.0f}), personAt(5, {3.0f, 1.0f})};
+    frame.people[0].zones = {0, 1};
+    frame.zones = {{.name = "front", .people = 1, .entries = 4}, {.name = "dino", .people = 1, .entries = 1}};
+    show.publish(frame);
+    const auto got = rx.receive(std::chrono::seconds(2), 1);
+    EXPECT_EQ(pathsAndFirstWords(got), (std::vector<std::string>{"/arcomp/frame", "/arcomp/person", "/arcomp/person",
+                                                                 "/arcomp/zone front", "/arcomp/zone dino"}));
+    ASSERT_EQ(got.size(), 5u);
+    EXPECT_EQ(got[1].types, "iffffffiiiiiss");
+    EXPECT_EQ(got[1].s(12), "front");
+    EXPECT_EQ(got[1].s(13), "dino");
+    EXPECT_EQ(got[2].types, "iffffffiiiii") << "person 5 is in no zone";
+    EXPECT_EQ(got[3].types, "sii");
+    EXPECT_EQ(got[3].i(1), 1);
+    EXPECT_EQ(got[3].i(2), 4);
+}
+
 TEST(ShowControl, tuioCursorsAreSourceAliveSetFseqOnTheFloorRectangle) {
     TempDir dir;
     OscReceiver rx(dir.path());

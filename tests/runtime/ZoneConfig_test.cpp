@@ -47,11 +47,19 @@ TEST(Zone, signedDistanceIsNegativeInsideAPolygonAndACircle) {
                       .space = ZoneSpace::Floor,
                       .polygon = {{0, 0}, {2, 0}, {2, 2}, {0, 2}},
                       .center = {},
-                      .radius = 0.0f};
+                      .radius = 0.0f,
+                      .enterMargin = 0.0f,
+                      .leaveMargin = 0.0f};
     EXPECT_NEAR(signedDistance(square, {1.0f, 1.0f}), -1.0f, 1e-6f);
     EXPECT_NEAR(signedDistance(square, {3.0f, 1.0f}), 1.0f, 1e-6f);
     EXPECT_NEAR(signedDistance(square, {2.0f, 0.5f}), 0.0f, 1e-6f);
-    const Zone disc{.name = "disc", .space = ZoneSpace::Floor, .polygon = {}, .center = {1, 1}, .radius = 0.5f};
+    const Zone disc{.name = "disc",
+                    .space = ZoneSpace::Floor,
+                    .polygon = {},
+                    .center = {1, 1},
+                    .radius = 0.5f,
+                    .enterMargin = 0.0f,
+                    .leaveMargin = 0.0f};
     EXPECT_NEAR(signedDistance(disc, {1.0f, 1.25f}), -0.25f, 1e-6f);
     EXPECT_NEAR(signedDistance(disc, {2.0f, 1.0f}), 0.5f, 1e-6f);
 }

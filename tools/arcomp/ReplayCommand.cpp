@@ -10,6 +10,7 @@
 #include "runtime/station/ReplayInput.hpp"
 #include "tools/cli/Command.hpp"
 
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -37,6 +38,9 @@ void applyCommandLine(const ReplayOptions& o, StationConfig& cfg) {
     if (!cfg.compositing.video)
         throw InputError(cfg.file.string() + ": no `video` section and no --video FILE: nothing to replay");
     cfg.compositing.output.pngDir = o.out;
+    // The event log goes beside the frames, as the review of one replay.
+    if (!cfg.compositing.output.events.empty())
+        cfg.compositing.output.events = std::filesystem::path(o.out) / cfg.compositing.output.events.filename();
     if (!o.videoOut.empty()) cfg.compositing.output.videoFile = o.videoOut;
     if (!o.gl.empty()) cfg.render.gl = o.gl;
 }

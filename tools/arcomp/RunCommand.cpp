@@ -15,6 +15,7 @@
 #include "runtime/app/StationRunner.hpp"
 #include "runtime/app/StatsOverlay.hpp"
 #include "runtime/app/WindowPresenter.hpp"
+#include "runtime/app/ZoneOverlay.hpp"
 #include "runtime/gl/WindowContext.hpp"
 #include "runtime/operator/StationLog.hpp"
 #include "runtime/station/ImageFile.hpp"
@@ -88,6 +89,7 @@ int run(const RunOptions& o) {
     WindowPresenter presenter;
     StatsOverlay overlay;
     CalibrationOverlay calibration;
+    ZoneOverlay zoneOverlay;
 
     bool showOverlay = o.overlay, takeScreenshot = false;
     window->onKey([&](int key) {
@@ -121,10 +123,17 @@ int run(const RunOptions& o) {
                     frameMs, stats.budget ? runner->config().budget.targetMs : 1000.0 / 60.0);
         // The config of the station running now: a reload may bring another camera file.
         const std::optional<CalibratedCamera>& camera = runner->config().camera.calibrated;
-        if (showOverlay && camera) calibration.draw(*camera, station.size(), station.standingPeople());
+        const cv::Mat* frameOverlay = nullptr;
+        if (showOverlay && camera) {
+            calibration.draw(*camera, station.size(), station.standingPeople());
+            frameOverlay = &calibration.image();
+        }
+        if (showOverlay && !runner->config().zones.empty()) {
+            zoneOverlay.draw(frameOverlay, runner->config().zones, station.people().zones, camera, station.size());
+            frameOverlay = &zoneOverlay.image();
+        }
         const glm::ivec2 size = window->framebufferSize();
-        presenter.present(station.compositedFrame(), size, showOverlay ? &overlay.image() : nullptr,
-                          showOverlay && camera ? &calibration.image() : nullptr);
+        presenter.present(station.compositedFrame(), size, showOverlay ? &overlay.image() : nullptr, frameOverlay);
         const bool finalFrame = o.frames >= 0 && done == o.frames;
         if (takeScreenshot || (finalFrame && !o.screenshot.empty())) {
             const std::string file =
