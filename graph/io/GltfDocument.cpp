@@ -113,20 +113,13 @@ GltfBuffer readBuffer(const GltfDocument& doc, const json& buffer, std::size_t i
         }
         return out;
     }
-    const std::string text = uri->get<std::string>();
-    if (isDataUri(text)) {
-        DataUri data = decodeDataUri(text);
-        if (!data.error.empty()) doc.fail(where + "/uri", data.error);
-        if (data.mediaType != "application/octet-stream" && data.mediaType != "application/gltf-buffer")
-            doc.fail(where + "/uri", "data URI has media type '" + data.mediaType +
-                                         "'; a buffer's is application/octet-stream or application/gltf-buffer");
-        out.bytes = std::move(data.bytes);
-    } else {
-        std::string reason;
-        const auto path = containedPath(doc.folder, text, reason);
-        if (!path) doc.fail(where + "/uri", reason);
-        out.bytes = readFile(*path, doc.file, where + "/uri");
-    }
+    UriBytes read = uriBytes(doc, uri->get<std::string>(), where + "/uri");
+    if (!read.readable) doc.fail(where + "/uri", "cannot read " + read.file);
+    if (read.file.empty() && read.mediaType != "application/octet-stream" &&
+        read.mediaType != "application/gltf-buffer")
+        doc.fail(where + "/uri", "data URI has media type '" + read.mediaType +
+                                     "'; a buffer's is application/octet-stream or application/gltf-buffer");
+    out.bytes = std::move(read.bytes);
     if (out.bytes.size() < length)
         doc.fail(where + "/byteLength",
                  std::to_string(length) + " bytes, but its uri holds " + std::to_string(out.bytes.size()));
@@ -135,6 +128,25 @@ GltfBuffer readBuffer(const GltfDocument& doc, const json& buffer, std::size_t i
 }
 
 }  // namespace
+
+UriBytes uriBytes(const GltfDocument& doc, const std::string& uri, const std::string& where) {
+    UriBytes out;
+    if (isDataUri(uri)) {
+        DataUri data = decodeDataUri(uri);
+        if (!data.error.empty()) doc.fail(where, data.error);
+        out.bytes = std::move(data.bytes);
+        out.mediaType = std::move(data.mediaType);
+        return out;
+    }
+    std::string reason;
+    const auto path = containedPath(doc.folder, uri, reason);
+    if (!path) doc.fail(where, reason);
+    out.file = path->string();
+    std::ifstream in(*path, std::ios::binary);
+    out.readable = static_cast<bool>(in);
+    out.bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    return out;
+}
 
 const json* member(const json& object, const char* key) {
     if (!object.is_object()) return nullptr;

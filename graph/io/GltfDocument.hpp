@@ -40,6 +40,18 @@ struct GltfDocument {
 // byteLength, is a ModelError.
 GltfDocument readGltfDocument(const std::filesystem::path& file);
 
+// The bytes a buffer's or an image's uri names: a data URI, or a file
+// inside the model's folder. A data URI that does not decode, or a path that
+// leads outside the folder, is a ModelError at `where`; a file that cannot
+// be read leaves `readable` false, for the caller to refuse or draw without.
+struct UriBytes {
+    std::vector<std::uint8_t> bytes;
+    std::string mediaType;  // a data URI's; empty for a file
+    bool readable = true;
+    std::string file;  // the file read, for messages; empty for a data URI
+};
+UriBytes uriBytes(const GltfDocument& doc, const std::string& uri, const std::string& where);
+
 // JSON access that names the pointer of what is wrong.
 const nlohmann::json* member(const nlohmann::json& object, const char* key);
 std::size_t unsignedMember(const GltfDocument& doc, const nlohmann::json& object, const char* key,

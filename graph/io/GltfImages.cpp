@@ -1,14 +1,9 @@
 #include "graph/io/GltfImages.hpp"
 
-#include "graph/io/ContainedPath.hpp"
-#include "graph/io/DataUri.hpp"
-
 #include <tiny_gltf.h>
 #include <webp/decode.h>
 
 #include <cstring>
-#include <fstream>
-#include <iterator>
 
 namespace arcomp::gltf {
 
@@ -112,19 +107,9 @@ std::vector<Image> readGltfImages(GltfDocument& doc, std::vector<std::string>& w
         std::string why;
         if (uri) {
             if (!uri->is_string()) doc.fail(where + "/uri", "is not a string");
-            const std::string text = uri->get<std::string>();
-            if (isDataUri(text)) {
-                DataUri data = decodeDataUri(text);
-                if (!data.error.empty()) doc.fail(where + "/uri", data.error);
-                bytes = std::move(data.bytes);
-            } else {
-                std::string reason;
-                const auto path = containedPath(doc.folder, text, reason);
-                if (!path) doc.fail(where + "/uri", reason);
-                std::ifstream in(*path, std::ios::binary);
-                if (!in) why = "cannot be read from " + path->string();
-                bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-            }
+            UriBytes read = uriBytes(doc, uri->get<std::string>(), where + "/uri");
+            if (!read.readable) why = "cannot be read from " + read.file;
+            bytes = std::move(read.bytes);
         } else {
             const std::size_t index = unsignedMember(doc, image, "bufferView", where, 0);
             if (!member(image, "mimeType")) doc.fail(where, "has a bufferView but no mimeType");
