@@ -1,5 +1,6 @@
 #include "graph/animation/AnimationPlayer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -19,12 +20,48 @@ AnimationPlayer::AnimationPlayer(ModelAnimation animation, PlaybackOptions optio
     pose_.resize(animation_.nodes.size());
 }
 
+const char* transportName(Transport t) {
+    switch (t) {
+    case Transport::Playing: return "playing";
+    case Transport::Paused: return "paused";
+    case Transport::Stopped: return "stopped";
+    }
+    return "?";
+}
+
 double AnimationPlayer::clipTime(double seconds) const {
     const double duration = animation_.clip.duration();
-    const double t = seconds * options_.speed;
-    if (duration <= 0.0 || t <= 0.0) return 0.0;
+    const double t = transport_ == Transport::Playing ? held_ + (seconds - origin_) * options_.speed : held_;
+    if (duration <= 0.0 || !(t > 0.0)) return 0.0;
     if (!options_.loop) return std::min(t, duration);
     return std::fmod(t, duration);
+}
+
+void AnimationPlayer::play(double seconds) {
+    if (transport_ == Transport::Playing) {
+        // A clip that played once to its end starts again.
+        if (options_.loop || clipTime(seconds) < animation_.clip.duration()) return;
+        held_ = 0.0;
+    }
+    transport_ = Transport::Playing;
+    origin_ = seconds;
+}
+
+void AnimationPlayer::pause(double seconds) {
+    if (transport_ != Transport::Playing) return;
+    held_ = clipTime(seconds);
+    transport_ = Transport::Paused;
+}
+
+void AnimationPlayer::stop() {
+    held_ = 0.0;
+    transport_ = Transport::Stopped;
+}
+
+void AnimationPlayer::jump(double clipSeconds, double seconds) {
+    held_ = std::clamp(std::isfinite(clipSeconds) ? clipSeconds : 0.0, 0.0, double(animation_.clip.duration()));
+    origin_ = seconds;
+    if (transport_ == Transport::Stopped) transport_ = Transport::Paused;
 }
 
 void AnimationPlayer::apply(Scene& scene, double seconds) {

@@ -264,6 +264,7 @@ void select(World& world, const View& view, const SelectSettings& settings, Draw
                     static_cast<float>(view.viewport.x) * static_cast<float>(view.viewport.y),
                     gaze};
     pass.visit(0, false, 0, 1.0f);
+    applyOpacity(scene, world.opacity, out);
 }
 
 }  // namespace arcomp

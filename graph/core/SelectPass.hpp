@@ -4,7 +4,9 @@
 // silhouette region. It sorts what it finds into the draw list's bins: CG
 // items, holdouts (a CG mesh with an entry in world.holdouts), point clouds
 // (graph/core/DrawList.hpp). Grouping proxies have no holdout: a group far
-// enough to be drawn as its translucent proxy cuts no one out.
+// enough to be drawn as its translucent proxy cuts no one out. Objects
+// hidden or fading (world.opacity, graph/core/ObjectOpacity.hpp) are
+// applied last.
 //
 //   world.scene.update();
 //   DrawList list;

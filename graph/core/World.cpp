@@ -2,6 +2,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <map>
 
 namespace arcomp {
@@ -27,6 +28,21 @@ void animateObjects(World& world, double seconds) {
     for (const ObjectAnimation& a : world.animations)
         if (a.groupingNode != kNoNode) changed[a.groupingNode].push_back({a.groupingObject, glm::vec3(0.0f)});
     for (const auto& [node, objects] : changed) regroupMoved(world.scene, node, world.grouping, objects);
+}
+
+std::pair<NodeId, std::uint32_t> groupingSlot(const World& world, NodeId node) {
+    const NodeId parent = world.scene.parent(node);
+    if (parent == kNoNode || world.scene.kind(parent) != NodeKind::Grouping) return {kNoNode, 0};
+    const std::vector<NodeId>& objects = world.grouping.nodes[world.scene.payload(parent)].objects;
+    const auto it = std::find(objects.begin(), objects.end(), node);
+    if (it == objects.end()) return {kNoNode, 0};
+    return {parent, static_cast<std::uint32_t>(it - objects.begin())};
+}
+
+const NamedObject* findObject(const World& world, const std::string& name) {
+    for (const NamedObject& o : world.objects)
+        if (o.name == name) return &o;
+    return nullptr;
 }
 
 bool movesOverTime(const World& world, NodeId n) {

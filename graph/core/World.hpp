@@ -17,6 +17,7 @@
 
 #include "graph/animation/AnimationPlayer.hpp"
 #include "graph/core/ObjectMotion.hpp"
+#include "graph/core/ObjectOpacity.hpp"
 #include "graph/core/Scene.hpp"
 #include "graph/grouping/GroupingNodes.hpp"
 #include "graph/lod/Lod.hpp"
@@ -24,6 +25,8 @@
 #include "graph/silhouette/HoldoutMeshes.hpp"
 #include "graph/silhouette/SilhouetteNodes.hpp"
 
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace arcomp {
@@ -39,6 +42,14 @@ struct ObjectAnimation {
     std::uint32_t groupingObject = 0;
 };
 
+// A config object by its name: the transform that places it, and its
+// model's animations, any of which a trigger or a cue may play.
+struct NamedObject {
+    std::string name;
+    NodeId node = kNoNode;
+    std::vector<ModelAnimation> animations{};
+};
+
 struct World {
     Scene scene;
     LodTable lods;                            // NodeKind::Lod
@@ -48,7 +59,16 @@ struct World {
     HoldoutMeshes holdouts;                   // per mesh node that cuts people out of the video
     std::vector<ObjectMotion> motions;        // the config's movers
     std::vector<ObjectAnimation> animations;  // the config's animated models
+    std::vector<ObjectOpacity> opacity;       // objects hidden or fading, applied by select()
+    std::vector<NamedObject> objects;         // the config's objects, in its order
 };
+
+// The grouping node that holds `node` as one of its objects, and the
+// object's index there, so that a change to it rebuilds only its branch;
+// {kNoNode, 0} when its parent is no grouping node.
+std::pair<NodeId, std::uint32_t> groupingSlot(const World& world, NodeId node);
+// The object by name; null when there is none.
+const NamedObject* findObject(const World& world, const std::string& name);
 
 // Puts every mover where it is at `timeSeconds`, updates the scene and
 // rebuilds only the grouping branches that hold a mover.

@@ -2,6 +2,7 @@
 
 #include "graph/core/BadInput.hpp"
 #include "runtime/config/CameraFile.hpp"
+#include "runtime/config/TriggerConfig.hpp"
 #include "runtime/config/YamlMap.hpp"
 #include "runtime/config/ZoneConfig.hpp"
 
@@ -90,12 +91,14 @@ ObjectConfig readObject(YamlMap& m, std::size_t index) {
         m.text("animation", o.animation, Required::Yes);
         if (o.animation.empty()) m.report().add(m.mark(), m.where() + ".animation: give an animation's name or index");
     }
-    for (const char* key : {"loop", "speed"})
+    for (const char* key : {"loop", "speed", "playing"})
         if (m.has(key) && !m.has("animation"))
             m.report().add(m.mark(), m.where() + "." + key + ": only with 'animation'");
     m.boolean("loop", o.animationLoop);
     // Backwards play is not supported: a loop would need its own start.
     m.number("speed", o.animationSpeed, 1e-3, 1e3);
+    m.boolean("playing", o.animationPlaying);
+    m.boolean("visible", o.visible);
     for (int i = 0; i < 4; ++i)
         if (o.color[i] < 0.0f || o.color[i] > 1.0f) {
             m.report().add(m.mark(), m.where() + ".color: components must lie in 0..1 (linear RGBA)");
@@ -185,6 +188,12 @@ StationConfig loadStationConfig(const std::filesystem::path& file) {
     readPointCloudConfig(root, cfg.pointClouds);
     readShowControlConfig(root, cfg.showControl);
     readZoneConfig(root, cfg.camera.calibrated, cfg.zones);
+    readTriggerConfig(root,
+                      {.objects = cfg.objects,
+                       .zones = cfg.zones,
+                       .showControl = cfg.showControl,
+                       .calibrated = cfg.camera.calibrated.has_value()},
+                      cfg.triggers);
     root.finish();
     report.throwIfAny();
     return cfg;

@@ -15,6 +15,7 @@
 #include "runtime/config/OperatorConfig.hpp"
 #include "runtime/config/PointCloudConfig.hpp"
 #include "runtime/config/ShowControlConfig.hpp"
+#include "runtime/triggers/Trigger.hpp"
 #include "runtime/zones/Zone.hpp"
 
 #include <glm/glm.hpp>
@@ -52,7 +53,9 @@ struct ObjectConfig {
     std::string animation;
     bool animationLoop = true;
     float animationSpeed = 1.0f;
-    int line = 0;  // where it was declared, for messages about it later
+    bool animationPlaying = true;  // false: held at its start until a trigger or a cue plays it
+    bool visible = true;           // false: hidden until a trigger or a cue shows it
+    int line = 0;                  // where it was declared, for messages about it later
 };
 
 struct CameraConfig {
@@ -95,6 +98,7 @@ struct StationConfig {
     PointCloudConfig pointClouds;
     ShowControlConfig showControl;  // where the people are sent
     std::vector<Zone> zones;        // where visitors are counted
+    std::vector<Trigger> triggers;  // what visitors set off (runtime/config/TriggerConfig.hpp)
 };
 
 StationConfig loadStationConfig(const std::filesystem::path& file);

@@ -157,6 +157,11 @@ void MqttPeople::sendEvent(Message m) {
     status_.queued = events_.size();
 }
 
+void MqttPeople::publishMessage(std::string topic, std::string payload) {
+    std::lock_guard lock(mutex_);
+    sendEvent({std::move(topic), std::move(payload)});
+}
+
 void MqttPeople::publish(const PeopleFrame& frame) {
     const std::string units = unitsName(frame.units);
     std::lock_guard lock(mutex_);

@@ -48,6 +48,9 @@ public:
     MqttPeople& operator=(const MqttPeople&) = delete;
 
     void publish(const PeopleFrame& frame);
+    // A trigger's message to its own topic, QoS 1, held like an enter event
+    // while the broker is away.
+    void publishMessage(std::string topic, std::string payload);
     MqttStatus status() const;
 
 private:

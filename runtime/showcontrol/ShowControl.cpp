@@ -1,6 +1,9 @@
 #include "runtime/showcontrol/ShowControl.hpp"
 
+#include "runtime/showcontrol/OscBundle.hpp"
 #include "runtime/showcontrol/OscPeople.hpp"
+
+#include <stdexcept>
 
 namespace arcomp {
 
@@ -60,17 +63,45 @@ std::chrono::steady_clock::time_point ShowControl::publish(const PeopleFrame& fr
         if (!route.sender) continue;
         std::optional<std::vector<std::uint8_t>>& bytes = route.tuio ? tuio : osc;
         if (!bytes) bytes = route.tuio ? tuio_.bundle(frame) : oscPeopleBundle(frame);
-        OutputStatus& s = status_[route.status];
-        if (route.sender->send(*bytes)) {
-            ++s.sent;
-        } else {
-            ++s.dropped;
-            s.lastError = route.sender->lastError();
-        }
+        sendOn(route, *bytes);
     }
     const auto sent = std::chrono::steady_clock::now();
     if (mqtt_) mqtt_->publish(frame);
     return sent;
+}
+
+}  // namespace arcomp
+
+namespace arcomp {
+
+void ShowControl::send(const TriggerAction& message) {
+    if (message.kind == ActionKind::Mqtt) {
+        if (mqtt_) mqtt_->publishMessage(message.address, message.payload);
+        return;
+    }
+    if (message.kind != ActionKind::Osc)
+        throw std::invalid_argument(std::string("show control sends osc and mqtt messages, not '") +
+                                    actionName(message.kind) + "'");
+    OscBundle bundle;
+    OscBundle::Message m = bundle.add(message.address.c_str());
+    for (const OscArgument& a : message.args) {
+        if (a.type == OscArgument::Type::Int) m.i(a.i);
+        if (a.type == OscArgument::Type::Float) m.f(a.f);
+        if (a.type == OscArgument::Type::String) m.s(a.s.c_str());
+    }
+    const std::vector<std::uint8_t> bytes = bundle.bytes();
+    for (Route& route : routes_)
+        if (route.sender && !route.tuio) sendOn(route, bytes);
+}
+
+void ShowControl::sendOn(Route& route, const std::vector<std::uint8_t>& bytes) {
+    OutputStatus& s = status_[route.status];
+    if (route.sender->send(bytes)) {
+        ++s.sent;
+    } else {
+        ++s.dropped;
+        s.lastError = route.sender->lastError();
+    }
 }
 
 }  // namespace arcomp

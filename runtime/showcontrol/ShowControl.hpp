@@ -19,6 +19,7 @@
 #include "runtime/showcontrol/MqttPeople.hpp"
 #include "runtime/showcontrol/TuioCursors.hpp"
 #include "runtime/showcontrol/UdpSender.hpp"
+#include "runtime/triggers/Trigger.hpp"
 
 #include <chrono>
 #include <cstdint>
@@ -46,6 +47,11 @@ public:
     // Gives when the OSC and TUIO datagrams had left (MQTT's leave on its own thread).
     std::chrono::steady_clock::time_point publish(const PeopleFrame& frame);
 
+    // A trigger's OSC message (to every OSC target, not TUIO's) or MQTT
+    // message; other actions are not messages and are refused
+    // (std::invalid_argument). Never blocks, as publish().
+    void send(const TriggerAction& message);
+
     // Every output's state now (MQTT's changes on its own thread).
     std::vector<OutputStatus> outputs() const;
     const std::vector<std::string>& problems() const { return problems_; }
@@ -57,6 +63,8 @@ private:
         std::size_t status;               // index in status_
         bool tuio;
     };
+    void sendOn(Route& route, const std::vector<std::uint8_t>& bytes);
+
     TuioCursors tuio_;
     std::vector<Route> routes_;
     std::vector<OutputStatus> status_;  // OSC and TUIO in routes_' order, then an MQTT output that is off

@@ -12,8 +12,8 @@ EventLog::EventLog(const std::filesystem::path& file) : file_(file) {
     if (!out_) throw std::runtime_error("output.events: cannot write " + file.string());
 }
 
-void EventLog::write(const PeopleFrame& frame) {
-    if (frame.zoneEvents.empty()) return;
+void EventLog::write(const PeopleFrame& frame, const Triggers* triggers) {
+    const std::size_t before = lines_;
     for (const ZoneEvent& e : frame.zoneEvents) {
         // Ordered keys, so that the lines read the same in every replay and to a person.
         nlohmann::ordered_json line{{"frame", frame.frame},
@@ -24,6 +24,18 @@ void EventLog::write(const PeopleFrame& frame) {
         out_ << line.dump() << '\n';
         ++lines_;
     }
+    if (triggers)
+        for (const TriggerFiring& f : triggers->last().firings) {
+            nlohmann::ordered_json line{{"frame", frame.frame},
+                                        {"seconds", frame.seconds},
+                                        {"event", "trigger"},
+                                        {"trigger", triggers->triggers().at(static_cast<std::size_t>(f.trigger)).name},
+                                        {"state", f.ended ? "ended" : "fired"}};
+            if (f.person >= 0) line["person"] = f.person;
+            out_ << line.dump() << '\n';
+            ++lines_;
+        }
+    if (lines_ == before) return;
     out_.flush();
     if (!out_) throw std::runtime_error("output.events: cannot write " + file_.string());
 }

@@ -1,15 +1,17 @@
 #pragma once
 // The station's events as a file other software reads line by line (JSON
-// Lines, `output.events`): each person entering or leaving a zone, on its
-// frame and video time, so that two replays of one file write the same
+// Lines, `output.events`): each person entering or leaving a zone, and
+// each trigger firing and ending, on its frame and video time, so that two replays of one file write the same
 // bytes. Each frame's lines are flushed before the next frame, so a crash
 // or a power cut loses at most the frame in hand.
 //
 //   EventLog log("out/events.jsonl");
-//   log.write(station.people());   // each new video frame
+//   log.write(station.people(), &triggers);   // each new video frame
 //   // {"frame":41,"seconds":1.64,"event":"enter","zone":"front","person":3}
+//   // {"frame":41,"seconds":1.64,"event":"trigger","trigger":"sign","state":"fired","person":3}
 
 #include "runtime/people/PeopleFrame.hpp"
+#include "runtime/triggers/Triggers.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -22,7 +24,9 @@ public:
     // cannot be written.
     explicit EventLog(const std::filesystem::path& file);
 
-    void write(const PeopleFrame& frame);
+    // The frame's zone events, then its triggers' firings (`triggers`
+    // after its update() for this frame; none: no trigger lines).
+    void write(const PeopleFrame& frame, const Triggers* triggers = nullptr);
     std::uint64_t lines() const { return lines_; }
 
 private:

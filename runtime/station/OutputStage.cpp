@@ -7,6 +7,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <utility>
 
@@ -14,16 +16,16 @@ namespace arcomp {
 
 namespace {
 
-std::string numbered(const char* stem, std::uint64_t index) {
+std::string numbered(const char* stem, std::uint64_t index, const char* extension = ".png") {
     char name[64];
-    std::snprintf(name, sizeof name, "%s-%06llu.png", stem, static_cast<unsigned long long>(index));
+    std::snprintf(name, sizeof name, "%s-%06llu%s", stem, static_cast<unsigned long long>(index), extension);
     return name;
 }
 
 }  // namespace
 
 OutputStage::OutputStage(const OutputConfig& config, double fps, glm::ivec2 size, FrameReadback::Mode readback)
-    : config_(config), readback_(readback) {
+    : config_(config), readback_(readback), fps_(fps), size_(size) {
     if (!config_.videoFile.empty())
         video_ = std::make_unique<VideoFileWriter>(config_.videoFile.string(), config_.videoFourcc, fps,
                                                    cv::Size(size.x, size.y));
@@ -42,7 +44,7 @@ void OutputStage::counted(Step&& step) {
 void OutputStage::write(const RenderTarget& frame, const cv::Mat& person) {
     const std::uint64_t index = next_++;
     counted([&] { writeMatte(index, person); });
-    if (config_.pngDir.empty() && !video_) return;
+    if (config_.pngDir.empty() && !video_ && snapshots_.empty() && clips_.empty()) return;
     counted([&] {
         const std::uint64_t before = std::exchange(inFlight_, index);
         if (readback_.read(frame, image_)) writeFrame(readback_.latencyFrames() == 0 ? index : before, image_);
@@ -56,13 +58,53 @@ void OutputStage::writeMatte(std::uint64_t index, const cv::Mat& person) {
     if (!cv::imwrite(file.string(), alphaOf(person))) throw VideoError(file.string(), "matte", "cannot write");
 }
 
+void OutputStage::snapshot(const std::filesystem::path& folder) { snapshots_.push_back({next_, folder}); }
+
+void OutputStage::clip(const std::filesystem::path& folder, double seconds) {
+    const auto frames = static_cast<std::uint64_t>(std::max(1.0, std::round(seconds * fps_)));
+    clips_.push_back({next_, folder, frames, nullptr});
+}
+
 void OutputStage::writeFrame(std::uint64_t index, const Image& image) {
-    if (!config_.pngDir.empty()) writePng(config_.pngDir / numbered("frame", index), image);
-    if (video_) {
+    if (!config_.pngDir.empty()) counted([&] { writePng(config_.pngDir / numbered("frame", index), image); });
+    const bool toVideo =
+        video_ || std::any_of(clips_.begin(), clips_.end(), [&](const Clip& c) { return c.index <= index; });
+    if (toVideo) {
         const cv::Mat rgba(image.height, image.width, CV_8UC4, const_cast<std::uint8_t*>(image.rgba.data()));
         cv::cvtColor(rgba, bgr_, cv::COLOR_RGBA2BGR);
-        video_->write(bgr_);
+        if (video_) counted([&] { video_->write(bgr_); });
     }
+    writeRequested(index, image);
+}
+
+// Snapshots and clips from `index` on; each failure is counted on its own,
+// and a clip that cannot be opened or written is given up.
+void OutputStage::writeRequested(std::uint64_t index, const Image& image) {
+    for (const Snapshot& s : snapshots_)
+        if (s.index <= index)
+            counted([&] {
+                std::filesystem::create_directories(s.folder);
+                writePng(s.folder / numbered("snapshot", s.index), image);
+                ++snapshotsWritten_;
+            });
+    std::erase_if(snapshots_, [&](const Snapshot& s) { return s.index <= index; });
+    for (Clip& c : clips_) {
+        if (c.index > index) continue;
+        counted([&] {
+            if (!c.file) {
+                std::filesystem::create_directories(c.folder);
+                c.file = std::make_unique<VideoFileWriter>((c.folder / numbered("clip", c.index, ".avi")).string(),
+                                                           config_.videoFourcc, fps_, cv::Size(size_.x, size_.y));
+            }
+            c.file->write(bgr_);
+            if (--c.frames == 0) {
+                c.file->close();
+                ++clipsWritten_;
+            }
+        });
+        if (!c.file) c.frames = 0;
+    }
+    std::erase_if(clips_, [&](const Clip& c) { return c.index <= index && c.frames == 0; });
 }
 
 void OutputStage::finish() {
@@ -70,6 +112,13 @@ void OutputStage::finish() {
         if (readback_.drain(image_)) writeFrame(inFlight_, image_);
     });
     if (video_) video_->close();
+    // A clip cut short by the end of the input keeps what it has.
+    for (Clip& c : clips_)
+        if (c.file) {
+            c.file->close();
+            ++clipsWritten_;
+        }
+    clips_.clear();
 }
 
 }  // namespace arcomp

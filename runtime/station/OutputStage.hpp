@@ -10,6 +10,11 @@
 //   OutputStage out(cfg.compositing.output, capture.fps(), size);   // opens the video file
 //   out.write(compositor.output(), matte.person());                  // once a frame
 //   out.finish();                                                    // closes the video file
+//
+// A trigger or a cue asks for a snapshot (the next frame written, as
+// snapshot-NNNNNN.png in a folder) or a clip (the next frames for some
+// seconds, as clip-NNNNNN.avi through the same video writer); both are
+// numbered by the frame they start on, and fail as any file does: counted.
 
 #include "runtime/config/CompositingConfig.hpp"
 #include "runtime/gl/FrameReadback.hpp"
@@ -22,6 +27,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace arcomp {
 
@@ -35,6 +41,11 @@ public:
     // previous one stopped instead of overwriting its frames.
     void setFirstIndex(std::uint64_t index) { next_ = index; }
     void write(const RenderTarget& frame, const cv::Mat& person);
+    // From the next write() on.
+    void snapshot(const std::filesystem::path& folder);
+    void clip(const std::filesystem::path& folder, double seconds);
+    std::uint64_t snapshotsWritten() const { return snapshotsWritten_; }
+    std::uint64_t clipsWritten() const { return clipsWritten_; }
     // Writes the frame still being read back and closes the video file.
     // Safe to call twice; never throws (a failure is counted).
     void finish();
@@ -45,8 +56,20 @@ public:
 private:
     void writeMatte(std::uint64_t index, const cv::Mat& person);
     void writeFrame(std::uint64_t index, const Image& image);
+    void writeRequested(std::uint64_t index, const Image& image);
     template <class Step>
     void counted(Step&& step);
+
+    struct Snapshot {
+        std::uint64_t index;
+        std::filesystem::path folder;
+    };
+    struct Clip {
+        std::uint64_t index;
+        std::filesystem::path folder;
+        std::uint64_t frames;                   // still to write
+        std::unique_ptr<VideoFileWriter> file;  // opened with its first frame
+    };
 
     OutputConfig config_;
     std::unique_ptr<VideoFileWriter> video_;
@@ -54,6 +77,11 @@ private:
     std::uint64_t inFlight_ = 0;  // the index of the frame readback_ holds
     Image image_;                 // the frame read back, kept so that its 8 MB (at 1080p) are not allocated again
     cv::Mat bgr_;
+    double fps_;
+    glm::ivec2 size_;
+    std::vector<Snapshot> snapshots_;
+    std::vector<Clip> clips_;
+    std::uint64_t snapshotsWritten_ = 0, clipsWritten_ = 0;
     std::uint64_t next_ = 0;
     std::uint64_t failures_ = 0;
     std::string lastError_;

@@ -47,6 +47,7 @@ BakeTally buildScene(const StationConfig& cfg, World& world, std::vector<std::st
         m = glm::rotate(m, glm::radians(o.rotationDegrees.x), {1, 0, 0});
         m = glm::scale(m, o.scale);
         const NodeId place = scene.addTransform(objectParent, m, o.name);
+        if (!o.visible) setOpacity(world.opacity, place, 0.0f);
         if (glm::length(o.velocity) > 0.0f)
             world.motions.push_back({.node = place, .rest = m, .velocity = o.velocity, .range = o.rangeMetres});
         MeshPlacer placeMesh;
@@ -77,14 +78,16 @@ BakeTally buildScene(const StationConfig& cfg, World& world, std::vector<std::st
                                        "'; its animations: " + listAnimations(parsed.animations));
                     continue;
                 }
-                const LoadedModel loaded =
-                    placeModel(std::move(parsed), scene, place, o.model.stem().string(), placeMesh);
+                LoadedModel loaded = placeModel(std::move(parsed), scene, place, o.model.stem().string(), placeMesh);
                 for (const std::string& w : loaded.warnings) warnings.push_back(o.model.string() + ": " + w);
-                if (clip)
+                if (clip) {
                     world.animations.push_back(
                         {.player = AnimationPlayer(loaded.animations[*clip],
                                                    {.loop = o.animationLoop, .speed = o.animationSpeed}),
                          .node = place});
+                    if (!o.animationPlaying) world.animations.back().player.stop();
+                }
+                world.objects.push_back({o.name, place, std::move(loaded.animations)});
             } catch (const ModelError& e) {
                 warnings.push_back(object + e.what());
             }
@@ -100,24 +103,14 @@ BakeTally buildScene(const StationConfig& cfg, World& world, std::vector<std::st
             placeMesh(place, part);
         else
             scene.addMesh(place, part, o.name);
+        world.objects.push_back({o.name, place});
     }
     finishGrouping(cfg.grouping, scene, groupingNode, world.grouping, lodTable);
     // A mover or an animated object inside the grouping node rebuilds only its own branch.
-    if (groupingNode != kNoNode && objectParent == groupingNode) {
-        const std::vector<NodeId>& objects = world.grouping.nodes[scene.payload(groupingNode)].objects;
-        for (ObjectMotion& motion : world.motions) {
-            const auto it = std::find(objects.begin(), objects.end(), motion.node);
-            if (it == objects.end()) continue;
-            motion.groupingNode = groupingNode;
-            motion.groupingObject = static_cast<std::uint32_t>(it - objects.begin());
-        }
-        for (ObjectAnimation& animation : world.animations) {
-            const auto it = std::find(objects.begin(), objects.end(), animation.node);
-            if (it == objects.end()) continue;
-            animation.groupingNode = groupingNode;
-            animation.groupingObject = static_cast<std::uint32_t>(it - objects.begin());
-        }
-    }
+    for (ObjectMotion& motion : world.motions)
+        std::tie(motion.groupingNode, motion.groupingObject) = groupingSlot(world, motion.node);
+    for (ObjectAnimation& animation : world.animations)
+        std::tie(animation.groupingNode, animation.groupingObject) = groupingSlot(world, animation.node);
     addPointClouds(cfg.pointClouds, cfg.file, scene, world.pointClouds, warnings);
     return levels;
 }

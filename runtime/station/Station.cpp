@@ -59,8 +59,8 @@ Station::Station(const StationConfig& cfg, StationInput input)
     : cfg_(cfg), capture_(std::move(input)), matte_(cfg_.compositing.matte),
       personDepths_(cfg_.compositing.compositor.personDepthFromFeet ? cfg_.camera.calibrated : std::nullopt,
                     cfg_.compositing.compositor.personPlaneMetres, capture_.size()),
-      people_(cfg_.camera.calibrated, capture_.size()), zones_(cfg_.zones), showControl_(cfg_.showControl),
-      outputs_(cfg_.compositing.output, capture_.fps(), capture_.size()) {
+      people_(cfg_.camera.calibrated, capture_.size()), zones_(cfg_.zones), triggers_(cfg_.triggers),
+      showControl_(cfg_.showControl), outputs_(cfg_.compositing.output, capture_.fps(), capture_.size()) {
     const std::filesystem::path cache = bakeCacheFolder(cfg_.compositing.compositor);
     lodBake_ = buildScene(cfg_, world_, warnings_, cache);
     warnings_.insert(warnings_.end(), showControl_.problems().begin(), showControl_.problems().end());
@@ -174,9 +174,10 @@ bool Station::frame() {
     stats_.trackMs = clock.lap();
     const PeopleFrame& visitors = zones_.update(
         people_.update(personDepths_.people(), personDepths_.scale(), stats_.frame, now.seconds, now.newFrame));
+    if (now.newFrame) runTriggers(visitors);
     if (events_ && now.newFrame) {
         try {
-            events_->write(visitors);
+            events_->write(visitors, &triggers_);
         } catch (const std::exception& e) {
             spdlog::error(joinText(e.what(), "; the event log stops here, the station goes on"));
             events_.reset();
@@ -238,6 +239,18 @@ bool Station::frame() {
     front_.wait();
     stats_.totalMs = clock.total();
     return true;
+}
+
+void Station::runTriggers(const PeopleFrame& visitors) {
+    const TriggerFrame& fired = triggers_.update(visitors, world_);
+    for (const std::string& problem : fired.problems) spdlog::warn(problem);
+    for (const StationAction& a : fired.forStation) {
+        switch (a.action->kind) {
+        case ActionKind::Snapshot: outputs_.snapshot(a.action->folder); break;
+        case ActionKind::Clip: outputs_.clip(a.action->folder, a.action->seconds); break;
+        default: showControl_.send(*a.action); break;
+        }
+    }
 }
 
 void Station::collectGpuTimes() {

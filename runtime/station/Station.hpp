@@ -1,9 +1,9 @@
 #pragma once
 // One compositing station's frame, in one place. Station::frame() is the
 // pipeline, each stage a class of its own:
-//   capture -> matte -> people (depths, floor, zones, show control) -> update -> select -> budget
+//   capture -> matte -> people (depths, floor, zones, triggers, show control) -> update -> select -> budget
 //   -> backdrop -> contact shadows -> render -> holdout -> composite -> output
-// (CaptureStage, MatteStage, PersonDepthStage, FloorPeople, ZoneOccupancy and ShowControl, moveObjects and
+// (CaptureStage, MatteStage, PersonDepthStage, FloorPeople, ZoneOccupancy, Triggers and ShowControl, moveObjects and
 // animateObjects, select, BudgetStage, Compositor, ShadowCatcher, Renderer and PointCloudLayer, HoldoutStage,
 // Compositor, OutputStage), and it records each stage's milliseconds in stats() (runtime/station/FrameStats.hpp).
 //
@@ -67,6 +67,7 @@
 #include "runtime/station/OutputStage.hpp"
 #include "runtime/station/PersonDepthStage.hpp"
 #include "runtime/station/WorkerThread.hpp"
+#include "runtime/triggers/Triggers.hpp"
 #include "runtime/zones/ZoneOccupancy.hpp"
 
 #include <array>
@@ -146,6 +147,11 @@ public:
     const PeopleFrame& people() const { return zones_.people(); }
     // Where the people go: each OSC, TUIO and MQTT output's state and counts.
     const ShowControl& showControl() const { return showControl_; }
+    // The config's triggers with their counts, and what the last frame fired.
+    const Triggers& triggers() const { return triggers_; }
+    // Snapshots and clips the triggers asked for that were written.
+    std::uint64_t snapshotsWritten() const { return outputs_.snapshotsWritten(); }
+    std::uint64_t clipsWritten() const { return outputs_.clipsWritten(); }
     // Overrides the camera (tests move it along a path); keeps the intrinsics.
     void setCamera(const glm::vec3& eye, const glm::vec3& target);
     std::size_t silhouetteTrianglesTotal() const { return world_.holdouts.triangles(); }
@@ -183,6 +189,9 @@ private:
     const CapturedFrame& shown() const { return fronts_[shownFront_]; }
 
     glm::vec3 gazeAt(double seconds);
+    // The frame's triggers: their object actions on the world, and the
+    // snapshots, clips and messages they hand to the outputs.
+    void runTriggers(const PeopleFrame& visitors);
     void collectGpuTimes();
 
     StationConfig cfg_;
@@ -191,6 +200,7 @@ private:
     PersonDepthStage personDepths_;
     FloorPeople people_;
     ZoneOccupancy zones_;  // the people with their zones: what is published
+    Triggers triggers_;
     std::optional<EventLog> events_;
     ShowControl showControl_;
     World world_;

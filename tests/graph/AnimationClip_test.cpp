@@ -191,6 +191,29 @@ TEST(AnimationPlayer, speedScalesTheClock) {
     EXPECT_THROW(AnimationPlayer(s.animation(), {.speed = std::nan("")}), std::invalid_argument);
 }
 
+TEST(AnimationPlayer, theTransportPlaysPausesStopsAndJumpsOnTheSameClock) {
+    Slider s;
+    AnimationPlayer player(s.animation(), {.loop = false, .speed = 2.0});
+    player.stop();
+    EXPECT_EQ(player.clipTime(7.0), 0.0);
+    player.play(10.0);
+    EXPECT_DOUBLE_EQ(player.clipTime(10.25), 0.5) << "from its start at the play, at twice the speed";
+    player.pause(10.5);
+    EXPECT_DOUBLE_EQ(player.clipTime(20.0), 1.0);
+    player.play(30.0);
+    EXPECT_DOUBLE_EQ(player.clipTime(30.25), 1.5) << "on from where it was held";
+    player.play(30.4);
+    EXPECT_DOUBLE_EQ(player.clipTime(30.5), 2.0) << "a play while playing changes nothing";
+    player.play(40.0);
+    EXPECT_DOUBLE_EQ(player.clipTime(40.25), 0.5) << "a clip without loop that ended starts again";
+    player.jump(1.25, 41.0);
+    EXPECT_DOUBLE_EQ(player.clipTime(41.25), 1.75);
+    player.stop();
+    player.jump(5.0, 50.0);
+    EXPECT_EQ(player.transport(), Transport::Paused);
+    EXPECT_DOUBLE_EQ(player.clipTime(60.0), 2.0) << "clamped to the clip, held";
+}
+
 TEST(AnimationPlayer, worldMatricesAndBoundsFollowAfterUpdate) {
     Slider s;
     s.scene.addMesh(s.node, {s.scene.addGeometry(makeBox({1, 1, 1})), s.scene.addMaterial({})});

@@ -120,6 +120,21 @@ TEST(MqttPeople, peopleAtTheRateInVideoTimeAndEnterAndLeaveAtQos1) {
     EXPECT_EQ(mqtt.status().dropped, 0u);
 }
 
+TEST(MqttPeople, aTriggersMessageGoesToItsOwnTopicAtQos1) {
+    REQUIRE_MOSQUITTO();
+    TempDir dir;
+    MosquittoBroker broker(dir.path());
+    MqttSubscriber sub(broker.port(), "show/#");
+    MqttPeople mqtt(brokerAt(broker.port(), "hall/entrance"));
+    ASSERT_TRUE(eventually(mqtt, [](const MqttStatus& s) { return s.connected; })) << mqtt.status().state;
+    mqtt.publishMessage("show/lights", "scene 3");
+    const auto got = sub.waitFor([](const auto& m) { return countOn(m, "show/lights") >= 1; }, std::chrono::seconds(5));
+    ASSERT_EQ(countOn(got, "show/lights"), 1u);
+    const auto m = std::find_if(got.begin(), got.end(), [](const auto& m) { return m.topic == "show/lights"; });
+    EXPECT_EQ(m->payload, "scene 3");
+    EXPECT_EQ(m->qos, 1);
+}
+
 TEST(MqttPeople, withNoBrokerTheFramesGoOnEventsAreHeldToTheBoundAndSentWhenItComes) {
     REQUIRE_MOSQUITTO();
     TempDir dir;

@@ -117,6 +117,31 @@ TEST(ShowControl, oscCarriesEachPersonsZonesAndEachZonesCount) {
     EXPECT_EQ(got[3].i(2), 4);
 }
 
+TEST(ShowControl, aTriggersOscMessageGoesToTheOscTargetsWithItsArgumentsAndNotToTuio) {
+    TempDir dir;
+    std::filesystem::create_directories(dir.path() / "osc");
+    std::filesystem::create_directories(dir.path() / "tuio");
+    OscReceiver osc(dir.path() / "osc"), tuio(dir.path() / "tuio");
+    ShowControlConfig cfg;
+    cfg.osc.targets = {loopback(osc)};
+    cfg.tuio.targets = {loopback(tuio, "show_control.tuio.targets[0]")};
+    ShowControl show(cfg);
+    show.send({.kind = ActionKind::Osc,
+               .address = "/show/cue",
+               .args = {{.type = OscArgument::Type::Int, .i = 7},
+                        {.type = OscArgument::Type::Float, .f = 0.5f},
+                        {.type = OscArgument::Type::String, .s = "go"}}});
+    const auto got = osc.receive(std::chrono::seconds(2), 1);
+    ASSERT_EQ(got.size(), 1u);
+    EXPECT_EQ(got[0].path, "/show/cue");
+    EXPECT_EQ(got[0].types, "ifs");
+    EXPECT_EQ(got[0].i(0), 7);
+    EXPECT_EQ(got[0].f(1), 0.5f);
+    EXPECT_EQ(got[0].s(2), "go");
+    EXPECT_TRUE(tuio.receive(std::chrono::milliseconds(300), 1).empty());
+    EXPECT_THROW(show.send({.kind = ActionKind::Show, .object = "sign"}), std::invalid_argument);
+}
+
 TEST(ShowControl, tuioCursorsAreSourceAliveSetFseqOnTheFloorRectangle) {
     TempDir dir;
     OscReceiver rx(dir.path());

@@ -54,4 +54,21 @@ struct GltfFile {
     }
 };
 
+// A triangle that slides from x = -1 to x = 1 over the first second
+// ("slide") and a second clip that only scales it ("grow").
+inline std::string slidingTriangle() {
+    GltfFile f;
+    f.nodes = R"([{"name": "slider", "mesh": 0, "translation": [-1, 0, 0]}])";
+    const int times = f.add({0, 1}, "SCALAR");
+    const int slide = f.add({-1, 0, 0, 1, 0, 0}, "VEC3");
+    const int grow = f.add({1, 1, 1, 2, 2, 2}, "VEC3");
+    const auto channel = [&](int output, const char* path) {
+        return R"({"samplers": [{"input": )" + std::to_string(times) + R"(, "output": )" + std::to_string(output) +
+               R"(}], "channels": [{"sampler": 0, "target": {"node": 0, "path": ")" + path + R"("}}]})";
+    };
+    f.animations = "[" + channel(slide, "translation").insert(1, R"("name": "slide", )") + ", " +
+                   channel(grow, "scale").insert(1, R"("name": "grow", )") + "]";
+    return f.json();
+}
+
 }  // namespace arcomp::test

@@ -149,3 +149,82 @@ output: {events: events.jsonl}
         << lines[1];
     EXPECT_EQ(eventLog("second"), first) << "two replays of one file write the same log";
 }
+
+namespace {
+
+// A hidden red box left of the walk, shown while someone is in the middle
+// zone, with a snapshot and a clip of 0.4 s (10 frames) when it comes on.
+constexpr const char* kSignStation = R"(scene:
+  objects:
+    - {name: sign, shape: box, size: [0.6, 0.6, 0.6], position: [-1.2, 0, -4], color: [1, 0, 0, 1], visible: false}
+camera:
+  eye: [0, 0, 0]
+  target: [0, 0, -1]
+zones:
+  - {name: middle, image_rect: {min: [0.4, 0.5], max: [0.6, 1]}}
+triggers:
+  - name: sign
+    when: {count: middle, at_least: 1}
+    do: [{show: sign}, {snapshot: snaps}, {clip: clips, seconds: 0.4}]
+    on_end: [{hide: sign}]
+output: {events: events.jsonl}
+)";
+
+// Whether frame `index` of a replay's PNGs shows the red sign where it stands.
+bool showsSign(const fs::path& frames, int index) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame-%06d.png", index);
+    const cv::Mat f = cv::imread((frames / name).string());
+    EXPECT_FALSE(f.empty()) << name;
+    if (f.empty()) return false;
+    // (-1.2, 0, -4) through a 45-degree camera on 320 x 240: pixel (73, 120).
+    const cv::Vec3b c = f.at<cv::Vec3b>(120, 73);
+    return c[2] > 150 && c[1] < 80 && c[0] < 80;
+}
+
+}  // namespace
+
+TEST(PeopleReplay, aTriggerShowsItsSignFromTheFrameItFiresUntilTheZoneEmpties) {
+    if (!fs::exists(ARCOMP_BINARY)) GTEST_SKIP() << "arcomp not built";
+    TempDir dir;
+    writeShapeClip(dir.path());
+    const fs::path station = dir.path() / "sign.yaml";
+    std::ofstream(station) << kSignStation << kCleanPlate;
+    const fs::path out = dir.path() / "out";
+    const ChildResult r =
+        runChild({ARCOMP_BINARY, "replay", station.string(), "--video", (dir.path() / "shape.avi").string(), "--out",
+                  out.string(), "--log-level", "error"});
+    ASSERT_EQ(r.code, 0) << r.output;
+    std::ifstream in(out / "events.jsonl");
+    std::string line, fired, ended;
+    while (std::getline(in, line)) {
+        if (line.find(R"("trigger":"sign","state":"fired")") != std::string::npos) fired = line;
+        if (line.find(R"("trigger":"sign","state":"ended")") != std::string::npos) ended = line;
+    }
+    ASSERT_FALSE(fired.empty());
+    ASSERT_FALSE(ended.empty());
+    const int on = std::stoi(fired.substr(fired.find(':') + 1));
+    const int off = std::stoi(ended.substr(ended.find(':') + 1));
+    // The zone's entry (frame 30 or 31, above) and its leaving, when the tracker gives the shape up.
+    EXPECT_TRUE(on == 30 || on == 31) << fired;
+    EXPECT_EQ(off, kSteppedOut + arcomp::PersonTracker::Settings{}.keepMissedFrames) << ended;
+    EXPECT_FALSE(showsSign(out, 0));
+    EXPECT_FALSE(showsSign(out, on - 1)) << "hidden until the trigger";
+    EXPECT_TRUE(showsSign(out, on)) << "drawn on the frame it fires";
+    EXPECT_TRUE(showsSign(out, off - 1));
+    EXPECT_FALSE(showsSign(out, off)) << "hidden again as the zone empties";
+    char snapshot[32];
+    std::snprintf(snapshot, sizeof snapshot, "snapshot-%06d.png", on);
+    const cv::Mat snap = cv::imread((out / "snaps" / snapshot).string());
+    ASSERT_FALSE(snap.empty()) << "the snapshot of the frame it fired on, beside the replay's frames";
+    char frame[32];
+    std::snprintf(frame, sizeof frame, "frame-%06d.png", on);
+    EXPECT_EQ(cv::norm(snap, cv::imread((out / frame).string()), cv::NORM_INF), 0.0);
+    char clip[32];
+    std::snprintf(clip, sizeof clip, "clip-%06d.avi", on);
+    cv::VideoCapture video((out / "clips" / clip).string(), cv::CAP_FFMPEG);
+    ASSERT_TRUE(video.isOpened()) << "the clip from the frame it fired on";
+    int frames = 0;
+    for (cv::Mat f; video.read(f);) ++frames;
+    EXPECT_EQ(frames, 10);
+}

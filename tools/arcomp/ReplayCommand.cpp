@@ -38,9 +38,14 @@ void applyCommandLine(const ReplayOptions& o, StationConfig& cfg) {
     if (!cfg.compositing.video)
         throw InputError(cfg.file.string() + ": no `video` section and no --video FILE: nothing to replay");
     cfg.compositing.output.pngDir = o.out;
-    // The event log goes beside the frames, as the review of one replay.
+    // The event log and the triggers' snapshots and clips go beside the
+    // frames, as the review of one replay.
     if (!cfg.compositing.output.events.empty())
         cfg.compositing.output.events = std::filesystem::path(o.out) / cfg.compositing.output.events.filename();
+    for (Trigger& t : cfg.triggers)
+        for (auto* actions : {&t.actions, &t.onEnd})
+            for (TriggerAction& a : *actions)
+                if (!a.folder.empty()) a.folder = std::filesystem::path(o.out) / a.folder.filename();
     if (!o.videoOut.empty()) cfg.compositing.output.videoFile = o.videoOut;
     if (!o.gl.empty()) cfg.render.gl = o.gl;
 }
