@@ -3,6 +3,7 @@
 
 #include "runtime/app/ShutdownSignals.hpp"
 #include "runtime/config/ConfigError.hpp"
+#include "runtime/showcontrol/CueDecode.hpp"
 
 #include <spdlog/spdlog.h>
 
@@ -38,6 +39,7 @@ StationRunner::StationRunner(StationConfig cfg, ConfigOverride override, InputOp
     if (override_) override_(cfg_);
     metrics_.setConfig(cfg_.file.string());
     startStatusServer();
+    startCueListener();
     station_ = std::make_unique<Station>(cfg_, openInput_(cfg_));
     station_->setClockStart(started_);
     reportWarnings();
@@ -65,8 +67,45 @@ void StationRunner::reportWarnings() {
     }
 }
 
+void StationRunner::startCueListener() {
+    cueListener_.reset();
+    if (!cfg_.showControl.cues.osc) return;
+    try {
+        cueListener_ = std::make_unique<OscCueListener>(cfg_.showControl.cues);
+        spdlog::info(joinText("cues: OSC ", kOscCuePrefix, "<verb> on ", cfg_.showControl.cues.listen.host, ":",
+                              cueListener_->port()));
+    } catch (const std::exception& e) {
+        spdlog::error(joinText(e.what(), "; running without OSC cues"));
+        metrics_.recordError(e.what());
+    }
+}
+
+bool StationRunner::takeCues() {
+    received_.clear();
+    if (cueListener_) cueListener_->poll(received_);
+    for (const std::string& payload : station_->takeMqttCues()) {
+        CueDecoded d = decodeJsonCue(payload);
+        received_.push_back({.sender = "mqtt", .cue = std::move(d.cue), .error = std::move(d.error)});
+    }
+    bool reload = false;
+    for (const ReceivedCue& r : received_) {
+        std::string why = r.error;
+        if (r.cue && r.cue->kind == Cue::Kind::Reload)
+            reload = true;
+        else if (r.cue)
+            why = station_->cue(*r.cue);
+        metrics_.recordCue(why.empty());
+        if (why.empty()) continue;
+        ++cuesRefused_;
+        // The first refusals, then one line per 100, so a flood of bad packets does not also fill the log.
+        if (cuesRefused_ <= 10 || cuesRefused_ % 100 == 0)
+            spdlog::warn(joinText("cue from ", r.sender, " refused: ", why, " (refused so far: ", cuesRefused_, ")"));
+    }
+    return reload;
+}
+
 bool StationRunner::step() {
-    if (takeReloadRequest()) reload();
+    if (takeCues() | takeReloadRequest()) reload();
     if (ended_) return false;
     const double start = nowSeconds();
     const std::uint64_t failedBefore = station_->outputFailures();
@@ -75,6 +114,11 @@ bool StationRunner::step() {
     metrics_.setCamera(station_->inputName(), station_->inputState(), station_->inputDrops());
     if (!drawn) return false;
     metrics_.setPeople(station_->people().people.size(), station_->showControl().outputs());
+    std::vector<TriggerStatus> triggers;
+    const Triggers& t = station_->triggers();
+    for (std::size_t i = 0; i < t.triggers().size(); ++i)
+        triggers.push_back({t.triggers()[i].name, t.counts(i).fired, t.holds(i)});
+    metrics_.setZones(station_->people().zones, std::move(triggers));
     ++frames_;
     // Start to start, so a window's vsync wait and presentation count.
     metrics_.recordFrame(lastStepStart_ < 0.0 ? station_->stats().totalMs : (start - lastStepStart_) * 1000.0);
@@ -151,8 +195,12 @@ void StationRunner::restart(StationConfig cfg, StationInput input) {
     // A reload reads the token file again, so a rotated token takes effect.
     const bool statusChanged = cfg.operation.statusEnabled != cfg_.operation.statusEnabled ||
                                cfg.operation.status != cfg_.operation.status || !cfg.operation.status.tokenFile.empty();
+    const bool cuesChanged = cfg.showControl.cues.osc != cfg_.showControl.cues.osc ||
+                             cfg.showControl.cues.listen.text() != cfg_.showControl.cues.listen.text() ||
+                             cfg.showControl.cues.allow != cfg_.showControl.cues.allow;
     cfg_ = std::move(cfg);
     if (statusChanged) startStatusServer();
+    if (cuesChanged) startCueListener();
     reportWarnings();
 }
 

@@ -20,9 +20,16 @@
 // recording made so far stays whole. If the new station still cannot start
 // (no first frame), a live station goes back to its previous config (on
 // the test pattern if its camera is gone too); a replay ends.
+//
+// Cues (runtime/triggers/Cue.hpp) are taken before each frame: from the
+// OSC listener the runner keeps across reloads (show_control.cues.osc) and
+// the station's MQTT cue topic. Each is done or refused, counted in the
+// metrics, and a refusal is logged with its sender and why; a reload cue
+// reloads as SIGHUP does.
 
 #include "runtime/operator/StationMetrics.hpp"
 #include "runtime/operator/StatusServer.hpp"
+#include "runtime/showcontrol/OscCueListener.hpp"
 #include "runtime/station/Station.hpp"
 
 #include <chrono>
@@ -52,6 +59,9 @@ public:
     const StationConfig& config() const { return cfg_; }
     StationMetrics& metrics() { return metrics_; }
     int statusPort() const { return server_ ? server_->port() : -1; }
+    // The OSC cue port bound; -1 without one.
+    int cuePort() const { return cueListener_ ? cueListener_->port() : -1; }
+    CueInputCounts cueCounts() const { return cueListener_ ? cueListener_->counts() : CueInputCounts{}; }
     StatusServerCounters statusCounters() const { return server_ ? server_->counters() : StatusServerCounters{}; }
     std::uint64_t frames() const { return frames_; }
     std::uint64_t reloads() const { return reloads_; }
@@ -63,6 +73,9 @@ private:
     void reload();
     void restart(StationConfig cfg, StationInput input);
     void startStatusServer();
+    void startCueListener();
+    // Does the cues that have come; true when one asks for a reload.
+    bool takeCues();
     void reportWarnings();
     void reportOutputFailure();
 
@@ -71,6 +84,9 @@ private:
     InputOpener openInput_;
     StationMetrics metrics_;
     std::unique_ptr<StatusServer> server_;
+    std::unique_ptr<OscCueListener> cueListener_;
+    std::vector<ReceivedCue> received_;
+    std::uint64_t cuesRefused_ = 0;
     std::unique_ptr<Station> station_;
     std::uint64_t frames_ = 0;
     std::uint64_t reloads_ = 0;

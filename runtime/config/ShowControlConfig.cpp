@@ -2,6 +2,9 @@
 
 #include "runtime/config/YamlMap.hpp"
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
+
 #include <charconv>
 #include <optional>
 
@@ -86,6 +89,48 @@ void readMqtt(YamlMap& mqtt, MqttOutputConfig& out) {
     mqtt.finish();
 }
 
+void readCues(YamlMap& cues, bool mqttBroker, CueInputConfig& out) {
+    ConfigReport& report = cues.report();
+    if (cues.has("osc")) {
+        YamlMap osc = cues.map("osc");
+        out.osc = true;
+        std::string listen;
+        osc.text("listen", listen, Required::Yes);
+        // A port alone listens on loopback.
+        if (!listen.empty() && listen.find(':') == std::string::npos) listen = "127.0.0.1:" + listen;
+        if (!listen.empty())
+            if (auto target = parseTarget(listen, osc.where() + ".listen", osc.mark(), report)) out.listen = *target;
+        if (osc.has("allow")) {
+            const YAML::Node list = osc.take("allow");
+            if (!list.IsSequence()) report.add(list.Mark(), osc.where() + ".allow: expected a list of IPv4 addresses");
+            for (std::size_t i = 0; list.IsSequence() && i < list.size(); ++i) {
+                in_addr parsed{};
+                const std::string text = list[i].IsScalar() ? list[i].Scalar() : "";
+                if (inet_pton(AF_INET, text.c_str(), &parsed) != 1)
+                    report.add(list[i].Mark(), osc.where() + ".allow[" + std::to_string(i) + "]: '" + text +
+                                                   "' is not an IPv4 address such as 10.0.0.5");
+                else
+                    out.allow.push_back(text);
+            }
+        }
+        in_addr bound{};
+        const bool loopback =
+            inet_pton(AF_INET, out.listen.host.c_str(), &bound) == 1 && (ntohl(bound.s_addr) >> 24) == 127;
+        if (!loopback && out.allow.empty())
+            report.add(osc.mark(), osc.where() + ": listening on '" + out.listen.host +
+                                       "', beyond loopback, needs allow: the senders' IPv4 addresses (OSC has no "
+                                       "credentials; only listed senders are heard)");
+        osc.finish();
+    }
+    cues.boolean("mqtt", out.mqtt);
+    if (out.mqtt && !mqttBroker)
+        report.add(cues.mark(), cues.where() + ".mqtt: needs show_control.mqtt, the broker to take cues from");
+    out.snapshotFolder = "snapshots";
+    cues.path("snapshot_folder", out.snapshotFolder, false);
+    if (out.snapshotFolder.is_relative()) out.snapshotFolder = report.file().parent_path() / out.snapshotFolder;
+    cues.finish();
+}
+
 }  // namespace
 
 void readShowControlConfig(YamlMap& root, ShowControlConfig& out) {
@@ -120,6 +165,10 @@ void readShowControlConfig(YamlMap& root, ShowControlConfig& out) {
     if (show.has("mqtt")) {
         YamlMap mqtt = show.map("mqtt");
         readMqtt(mqtt, out.mqtt);
+    }
+    if (show.has("cues")) {
+        YamlMap cues = show.map("cues");
+        readCues(cues, out.mqtt.enabled, out.cues);
     }
     show.finish();
 }

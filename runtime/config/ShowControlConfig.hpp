@@ -6,6 +6,14 @@
 //     osc:  {targets: ["127.0.0.1:9000", "10.0.0.20:7000"]}    # the /arcomp address space
 //     tuio: {targets: ["127.0.0.1:3333"], floor: {min: [-4, -6], max: [4, 3]}}
 //     mqtt: {broker: "127.0.0.1:1883", topic_prefix: arcomp/entrance, rate_hz: 5}
+//     cues:                                                      # show control in (runtime/triggers/Cue.hpp)
+//       osc: {listen: "127.0.0.1:9100", allow: ["127.0.0.1"]}    # loopback by default
+//       mqtt: true                                               # <topic_prefix>/cue on the broker above
+//       snapshot_folder: snapshots
+//
+// OSC has no credentials: listening beyond loopback needs `allow`, the
+// senders' addresses, and then only they are heard (loopback's too only
+// when listed). The MQTT cue topic uses the broker's own credentials.
 //
 // TUIO's floor is the rectangle (x, z in metres, the calibration's floor
 // frame) that TUIO's 0..1 square covers: x to the right, z towards the
@@ -54,10 +62,19 @@ struct MqttOutputConfig {
     std::filesystem::path caFile, certFile, keyFile;   // caFile: TLS on; cert and key: a client certificate
 };
 
+struct CueInputConfig {
+    bool osc = false;
+    NetworkTarget listen{.host = "127.0.0.1", .port = 0, .where = "show_control.cues.osc.listen"};
+    std::vector<std::string> allow{};  // IPv4 senders; empty: any on loopback (bound there only)
+    bool mqtt = false;                 // <topic_prefix>/cue
+    std::filesystem::path snapshotFolder{};
+};
+
 struct ShowControlConfig {
     OscOutputConfig osc;
     TuioOutputConfig tuio;
     MqttOutputConfig mqtt;
+    CueInputConfig cues;
 };
 
 void readShowControlConfig(YamlMap& root, ShowControlConfig& out);

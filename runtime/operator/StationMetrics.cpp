@@ -69,6 +69,17 @@ void StationMetrics::setCamera(const std::string& name, const SourceState& state
     camera.drops = drops;
 }
 
+void StationMetrics::setZones(const std::vector<ZoneCount>& zones, std::vector<TriggerStatus> triggers) {
+    std::lock_guard lock(mutex_);
+    zones_ = zones;
+    triggers_ = std::move(triggers);
+}
+
+void StationMetrics::recordCue(bool accepted) {
+    std::lock_guard lock(mutex_);
+    ++(accepted ? cuesAccepted_ : cuesRefused_);
+}
+
 void StationMetrics::setPeople(std::size_t people, std::vector<OutputStatus> outputs) {
     std::lock_guard lock(mutex_);
     people_ = people;
@@ -112,6 +123,12 @@ std::string StationMetrics::statusJson() const {
                            {"dropped", o.dropped},
                            {"queued", o.queued},
                            {"last_error", o.lastError}});
+    nlohmann::ordered_json& zones = status["zones"] = nlohmann::ordered_json::array();
+    for (const ZoneCount& z : zones_) zones.push_back({{"name", z.name}, {"people", z.people}, {"entries", z.entries}});
+    nlohmann::ordered_json& triggers = status["triggers"] = nlohmann::ordered_json::array();
+    for (const TriggerStatus& t : triggers_)
+        triggers.push_back({{"name", t.name}, {"fired", t.fired}, {"holds", t.holds}});
+    status["cues"] = {{"accepted", cuesAccepted_}, {"refused", cuesRefused_}};
     status["errors"] = errors_;
     status["last_errors"] = lastErrors_;
     // A device name or an OS message that is not UTF-8 must not cost the
@@ -171,6 +188,22 @@ std::string StationMetrics::prometheusText() const {
          "# TYPE arcomp_output_up gauge\n";
     for (const OutputStatus& o : outputs_)
         s << "arcomp_output_up" << labels(o) << ' ' << (o.state == "sending" || o.state == "connected" ? 1 : 0) << '\n';
+    s << "# HELP arcomp_zone_people Visitors in each zone, this frame.\n"
+         "# TYPE arcomp_zone_people gauge\n";
+    for (const ZoneCount& z : zones_)
+        s << "arcomp_zone_people{zone=\"" << labelValue(z.name) << "\"} " << z.people << '\n';
+    s << "# HELP arcomp_zone_entries_total Visitors who entered each zone.\n"
+         "# TYPE arcomp_zone_entries_total counter\n";
+    for (const ZoneCount& z : zones_)
+        s << "arcomp_zone_entries_total{zone=\"" << labelValue(z.name) << "\"} " << z.entries << '\n';
+    s << "# HELP arcomp_trigger_fired_total Times each trigger fired.\n"
+         "# TYPE arcomp_trigger_fired_total counter\n";
+    for (const TriggerStatus& t : triggers_)
+        s << "arcomp_trigger_fired_total{trigger=\"" << labelValue(t.name) << "\"} " << t.fired << '\n';
+    s << "# HELP arcomp_cues_total Cues from show control, done (accepted) or not (refused: sender, packet, name).\n"
+         "# TYPE arcomp_cues_total counter\n"
+      << "arcomp_cues_total{result=\"accepted\"} " << cuesAccepted_ << '\n'
+      << "arcomp_cues_total{result=\"refused\"} " << cuesRefused_ << '\n';
     s << "# HELP arcomp_errors_total Errors the station reported and recovered from.\n"
          "# TYPE arcomp_errors_total counter\n"
       << "arcomp_errors_total " << errors_ << '\n';

@@ -9,8 +9,10 @@
 //   metrics.recordFrame(16.4);                              // each frame, ms
 //   metrics.setCamera("front", {SourceStatus::Streaming, ""}, drops);
 //   metrics.setPeople(station.people().people.size(), station.showControl().outputs());
+//   metrics.setZones(station.people().zones, triggers);     // /status zones, arcomp_zone_people{zone}
 //   std::string text = metrics.prometheusText();
 
+#include "runtime/people/PeopleFrame.hpp"
 #include "runtime/showcontrol/ShowControl.hpp"
 #include "video/sources/SourceStatus.hpp"
 
@@ -24,6 +26,13 @@
 #include <vector>
 
 namespace arcomp {
+
+// A trigger as the operator sees it.
+struct TriggerStatus {
+    std::string name;
+    std::uint64_t fired = 0;
+    bool holds = false;
+};
 
 class StationMetrics {
 public:
@@ -39,6 +48,10 @@ public:
     void setCamera(const std::string& name, const SourceState& state, std::uint64_t drops);
     // This frame's people, and each show-control output's state and counts.
     void setPeople(std::size_t people, std::vector<OutputStatus> outputs);
+    // This frame's zones with their occupancy, and the triggers.
+    void setZones(const std::vector<ZoneCount>& zones, std::vector<TriggerStatus> triggers);
+    // A cue from show control, done or refused (a sender not allowed, a malformed packet, an unknown object).
+    void recordCue(bool accepted);
     void recordError(std::string message);
     // A reload replaced the inputs: cameras no longer in use leave the report.
     void forgetCameras();
@@ -67,6 +80,9 @@ private:
     std::map<std::string, Camera> cameras_;
     std::size_t people_ = 0;
     std::vector<OutputStatus> outputs_;
+    std::vector<ZoneCount> zones_;
+    std::vector<TriggerStatus> triggers_;
+    std::uint64_t cuesAccepted_ = 0, cuesRefused_ = 0;
     std::deque<std::string> lastErrors_;  // newest last, the last ten
     std::uint64_t errors_ = 0;
 };

@@ -52,7 +52,8 @@ nlohmann::json personJson(const Person& p, const std::vector<ZoneCount>& zones) 
 
 }  // namespace
 
-MqttPeople::MqttPeople(const MqttOutputConfig& cfg) : cfg_(cfg), stateTopic_(cfg.topicPrefix + "/state") {
+MqttPeople::MqttPeople(const MqttOutputConfig& cfg, std::string cueTopic)
+    : cfg_(cfg), stateTopic_(cfg.topicPrefix + "/state"), cueTopic_(std::move(cueTopic)) {
     static std::once_flag initialised;
     std::call_once(initialised, [] { mosquitto_lib_init(); });
     status_.broker = cfg_.broker.text();
@@ -69,6 +70,7 @@ MqttPeople::MqttPeople(const MqttOutputConfig& cfg) : cfg_(cfg), stateTopic_(cfg
     try {
         mosquitto_connect_callback_set(client_, &MqttPeople::onConnect);
         mosquitto_disconnect_callback_set(client_, &MqttPeople::onDisconnect);
+        mosquitto_message_callback_set(client_, &MqttPeople::onMessage);
         check(mosquitto_reconnect_delay_set(client_, 1, 30, true), "reconnect delay");
         static const char offline[] = "offline";
         check(mosquitto_will_set(client_, stateTopic_.c_str(), sizeof offline - 1, offline, 1, true), "last will");
@@ -124,6 +126,7 @@ void MqttPeople::onConnect(mosquitto* client, void* self, int rc) {
     if (m->connects_++ > 0) ++m->status_.reconnects;
     static const char online[] = "online";
     mosquitto_publish(client, nullptr, m->stateTopic_.c_str(), sizeof online - 1, online, 1, true);
+    if (!m->cueTopic_.empty()) mosquitto_subscribe(client, nullptr, m->cueTopic_.c_str(), 1);
     while (!m->events_.empty() && m->send(m->events_.front(), 1)) m->events_.pop_front();
     m->status_.queued = m->events_.size();
 }
@@ -135,6 +138,26 @@ void MqttPeople::onDisconnect(mosquitto*, void* self, int rc) {
     // The broker's own reason for refusing the connection says more than the code that follows it.
     const std::string why = !m->refusal_.empty() ? m->refusal_ : rc != 0 ? mosquitto_strerror(rc) : "";
     m->status_.state = why.empty() ? "disconnected" : "disconnected: " + why;
+}
+
+void MqttPeople::onMessage(mosquitto*, void* self, const mosquitto_message* message) {
+    auto* m = static_cast<MqttPeople*>(self);
+    std::lock_guard lock(m->mutex_);
+    if (m->cueTopic_.empty() || message->topic != m->cueTopic_) return;
+    m->cues_.push_back(message->payloadlen > 0 ? std::string(static_cast<const char*>(message->payload),
+                                                             static_cast<std::size_t>(message->payloadlen))
+                                               : std::string());
+    if (m->cues_.size() > kHeldCues) {
+        m->cues_.pop_front();
+        ++m->status_.cuesDropped;
+    }
+}
+
+std::vector<std::string> MqttPeople::takeCues() {
+    std::lock_guard lock(mutex_);
+    std::vector<std::string> out(std::make_move_iterator(cues_.begin()), std::make_move_iterator(cues_.end()));
+    cues_.clear();
+    return out;
 }
 
 bool MqttPeople::send(const Message& m, int qos) {

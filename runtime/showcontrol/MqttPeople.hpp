@@ -25,8 +25,10 @@
 #include <deque>
 #include <mutex>
 #include <string>
+#include <vector>
 
 struct mosquitto;
+struct mosquitto_message;
 
 namespace arcomp {
 
@@ -38,11 +40,14 @@ struct MqttStatus {
     std::uint64_t dropped = 0;  // people while away, events beyond the queue
     std::uint64_t queued = 0;   // events waiting for the broker
     std::uint64_t reconnects = 0;
+    std::uint64_t cuesDropped = 0;  // cue messages beyond kHeldCues between two frames
 };
 
 class MqttPeople {
 public:
-    explicit MqttPeople(const MqttOutputConfig& cfg);
+    // `cueTopic`: subscribed to (QoS 1) on each connect; its messages wait
+    // for takeCues(), at most kHeldCues (the oldest go, counted).
+    explicit MqttPeople(const MqttOutputConfig& cfg, std::string cueTopic = {});
     ~MqttPeople();
     MqttPeople(const MqttPeople&) = delete;
     MqttPeople& operator=(const MqttPeople&) = delete;
@@ -52,6 +57,9 @@ public:
     // while the broker is away.
     void publishMessage(std::string topic, std::string payload);
     MqttStatus status() const;
+    // The cue topic's payloads since the last call, oldest first.
+    std::vector<std::string> takeCues();
+    static constexpr std::size_t kHeldCues = 256;
 
 private:
     struct Message {
@@ -59,6 +67,7 @@ private:
     };
     static void onConnect(mosquitto*, void* self, int rc);
     static void onDisconnect(mosquitto*, void* self, int rc);
+    static void onMessage(mosquitto*, void* self, const struct mosquitto_message* message);
     // Hands one message to the client; false when it is not connected.
     bool send(const Message& m, int qos);
     void sendEvent(Message m);
@@ -72,6 +81,8 @@ private:
     std::int64_t lastPeopleSlot_ = -1;
     std::uint64_t connects_ = 0;
     std::string refusal_;  // the broker's reason, while it refuses the connection
+    std::string cueTopic_;
+    std::deque<std::string> cues_;
 };
 
 }  // namespace arcomp

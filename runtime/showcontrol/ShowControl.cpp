@@ -27,7 +27,7 @@ ShowControl::ShowControl(const ShowControlConfig& cfg) : tuio_(cfg.tuio.floorMin
     for (const NetworkTarget& t : cfg.tuio.targets) open(t, "tuio", true);
     if (cfg.mqtt.enabled) {
         try {
-            mqtt_ = std::make_unique<MqttPeople>(cfg.mqtt);
+            mqtt_ = std::make_unique<MqttPeople>(cfg.mqtt, cfg.cues.mqtt ? cfg.mqtt.topicPrefix + "/cue" : "");
         } catch (const ShowControlError& e) {
             // Off for the run: its status stays as it is now, after the others'.
             OutputStatus s;

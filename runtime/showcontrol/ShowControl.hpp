@@ -52,6 +52,9 @@ public:
     // (std::invalid_argument). Never blocks, as publish().
     void send(const TriggerAction& message);
 
+    // The MQTT cue topic's payloads since the last call (show_control.cues.mqtt).
+    std::vector<std::string> takeMqttCues() { return mqtt_ ? mqtt_->takeCues() : std::vector<std::string>{}; }
+
     // Every output's state now (MQTT's changes on its own thread).
     std::vector<OutputStatus> outputs() const;
     const std::vector<std::string>& problems() const { return problems_; }

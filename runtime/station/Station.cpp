@@ -253,6 +253,15 @@ void Station::runTriggers(const PeopleFrame& visitors) {
     }
 }
 
+std::string Station::cue(const Cue& cue) {
+    if (cue.kind == Cue::Kind::Reload) return "a reload is the station runner's to do";
+    if (cue.action.kind == ActionKind::Snapshot) {
+        outputs_.snapshot(cfg_.showControl.cues.snapshotFolder);
+        return {};
+    }
+    return triggers_.objects().perform(world_, cue.action, shown().seconds);
+}
+
 void Station::collectGpuTimes() {
     gpuTimes_->collect();  // the previous frame's GL stages, so the budget sees its CG draw
     stats_.renderMs = gpuTimes_->ms(kGpuRender);

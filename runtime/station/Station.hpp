@@ -67,6 +67,7 @@
 #include "runtime/station/OutputStage.hpp"
 #include "runtime/station/PersonDepthStage.hpp"
 #include "runtime/station/WorkerThread.hpp"
+#include "runtime/triggers/Cue.hpp"
 #include "runtime/triggers/Triggers.hpp"
 #include "runtime/zones/ZoneOccupancy.hpp"
 
@@ -147,6 +148,14 @@ public:
     const PeopleFrame& people() const { return zones_.people(); }
     // Where the people go: each OSC, TUIO and MQTT output's state and counts.
     const ShowControl& showControl() const { return showControl_; }
+    // A cue from show control (runtime/triggers/Cue.hpp), done at once on
+    // the last frame's video time: an object action, or a snapshot of the
+    // next frame into show_control.cues.snapshot_folder. Empty when done,
+    // else why not (an object the scene does not have). A reload is the
+    // runner's: refused here.
+    std::string cue(const Cue& cue);
+    // The MQTT cue topic's payloads since the last call.
+    std::vector<std::string> takeMqttCues() { return showControl_.takeMqttCues(); }
     // The config's triggers with their counts, and what the last frame fired.
     const Triggers& triggers() const { return triggers_; }
     // Snapshots and clips the triggers asked for that were written.

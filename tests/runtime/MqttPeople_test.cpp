@@ -135,6 +135,29 @@ TEST(MqttPeople, aTriggersMessageGoesToItsOwnTopicAtQos1) {
     EXPECT_EQ(m->qos, 1);
 }
 
+TEST(MqttPeople, cuesOnTheCueTopicWaitForTheFrameInOrder) {
+    REQUIRE_MOSQUITTO();
+    TempDir dir;
+    MosquittoBroker broker(dir.path());
+    MqttSubscriber show(broker.port(), "hall/entrance/state");
+    MqttPeople mqtt(brokerAt(broker.port(), "hall/entrance"), "hall/entrance/cue");
+    // Subscribed once connected: the retained "online" follows the subscription.
+    show.waitFor([](const auto& m) { return countOn(m, "hall/entrance/state") >= 1; }, std::chrono::seconds(5));
+    ASSERT_TRUE(eventually(mqtt, [](const MqttStatus& s) { return s.connected; })) << mqtt.status().state;
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));  // the SUBSCRIBE reaches the broker
+    show.publish("hall/entrance/cue", R"({"cue": "show", "object": "sign"})");
+    show.publish("hall/entrance/other", "not a cue");
+    show.publish("hall/entrance/cue", "{broken");
+    std::vector<std::string> cues;
+    for (int i = 0; i < 100 && cues.size() < 2; ++i) {
+        for (std::string& c : mqtt.takeCues()) cues.push_back(std::move(c));
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    ASSERT_EQ(cues.size(), 2u);
+    EXPECT_EQ(cues[0], R"({"cue": "show", "object": "sign"})");
+    EXPECT_EQ(cues[1], "{broken") << "handed on as it came; the decoder refuses it";
+}
+
 TEST(MqttPeople, withNoBrokerTheFramesGoOnEventsAreHeldToTheBoundAndSentWhenItComes) {
     REQUIRE_MOSQUITTO();
     TempDir dir;

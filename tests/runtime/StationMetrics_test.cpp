@@ -94,4 +94,25 @@ TEST(StationMetrics, peopleAndEachOutputsStateAndCountsShowInBothViews) {
         << json;
 }
 
+TEST(StationMetrics, zonesTriggersAndCuesShowInBothViews) {
+    StationMetrics metrics;
+    metrics.setZones(
+        {{.name = "front", .people = 2, .entries = 7}, {.name = "dino \"rex\"", .people = 0, .entries = 1}},
+        {{.name = "sign", .fired = 3, .holds = true}});
+    metrics.recordCue(true);
+    metrics.recordCue(false);
+    metrics.recordCue(false);
+    const std::string text = metrics.prometheusText();
+    EXPECT_NE(text.find("arcomp_zone_people{zone=\"front\"} 2\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("arcomp_zone_entries_total{zone=\"front\"} 7\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("arcomp_zone_people{zone=\"dino \\\"rex\\\"\"} 0\n"), std::string::npos) << "escaped: " << text;
+    EXPECT_NE(text.find("arcomp_trigger_fired_total{trigger=\"sign\"} 3\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("arcomp_cues_total{result=\"accepted\"} 1\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("arcomp_cues_total{result=\"refused\"} 2\n"), std::string::npos) << text;
+    const std::string json = metrics.statusJson();
+    EXPECT_NE(json.find(R"("zones":[{"name":"front","people":2,"entries":7})"), std::string::npos) << json;
+    EXPECT_NE(json.find(R"("triggers":[{"name":"sign","fired":3,"holds":true}])"), std::string::npos) << json;
+    EXPECT_NE(json.find(R"("cues":{"accepted":1,"refused":2})"), std::string::npos) << json;
+}
+
 }  // namespace arcomp

@@ -1,7 +1,7 @@
 // The station's life around its frames: the operator endpoint during a
 // replay, a camera fault showing in /status and /metrics, a status port
-// that another program holds, and reloading the config at a frame boundary
-// (good and bad configs).
+// that another program holds, reloading the config at a frame boundary
+// (good and bad configs), and cues over OSC.
 
 #include "runtime/app/ShutdownSignals.hpp"
 #include "runtime/app/StationRunner.hpp"
@@ -11,6 +11,9 @@
 
 #include <gtest/gtest.h>
 #include <httplib.h>
+#include <lo/lo.h>
+
+#include <thread>
 
 using namespace arcomp;
 namespace fs = std::filesystem;
@@ -203,4 +206,45 @@ TEST(StationRunner, anOutputThatCannotBeWrittenIsCountedAndReportedWhileFramesGo
         << runner.station().lastOutputError();
     EXPECT_NE(runner.metrics().statusJson().find("output: cannot write"), std::string::npos)
         << runner.metrics().statusJson();
+}
+
+// Cues from a real liblo sender reach the station before the next frame: a
+// hidden box is shown, a cue for an object the scene does not have is
+// refused and counted, and a reload cue reloads.
+TEST(StationRunner, oscCuesShowAnObjectRefuseAnUnknownOneAndReload) {
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    test::TempDir dir;
+    std::string station = kRunnerStation;
+    station.replace(station.find("    - shape: box"), 16, "    - name: sign\n      visible: false\n      shape: box");
+    StationConfig cfg = loadStationConfig(dir.write("station.yaml", station + R"(show_control:
+  cues: {osc: {listen: 9100}}
+)"));
+    // Any free port, on start and on the reload alike.
+    const auto anyPort = [](StationConfig& c) { c.showControl.cues.listen.port = 0; };
+    StationRunner runner(std::move(cfg), anyPort, [](const StationConfig&) {
+        return StationInput::fromReplay(std::make_unique<FailingCamera>(100), 30.0);
+    });
+    ASSERT_GT(runner.cuePort(), 0);
+    ASSERT_TRUE(runner.step());
+    EXPECT_TRUE(runner.station().drawList().items.empty()) << "hidden";
+    lo_address to = lo_address_new("127.0.0.1", std::to_string(runner.cuePort()).c_str());
+    lo_send(to, "/arcomp/cue/show", "s", "sign");
+    lo_send(to, "/arcomp/cue/show", "s", "ghost");
+    // Sent on loopback; the next step reads what has arrived by then.
+    for (int i = 0; i < 50 && runner.cueCounts().received < 2; ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        ASSERT_TRUE(runner.step());
+    }
+    EXPECT_EQ(runner.station().drawList().items.size(), 1u) << "shown by the cue";
+    const std::string metrics = runner.metrics().prometheusText();
+    EXPECT_NE(metrics.find("arcomp_cues_total{result=\"accepted\"} 1"), std::string::npos) << metrics;
+    EXPECT_NE(metrics.find("arcomp_cues_total{result=\"refused\"} 1"), std::string::npos) << metrics;
+    lo_send(to, "/arcomp/cue/reload", "");
+    for (int i = 0; i < 50 && runner.reloads() == 0; ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        ASSERT_TRUE(runner.step());
+    }
+    lo_address_free(to);
+    EXPECT_EQ(runner.reloads(), 1u);
+    EXPECT_TRUE(runner.station().drawList().items.empty()) << "the reloaded config hides it again";
 }

@@ -1,6 +1,7 @@
 #pragma once
 // A real MQTT client reading back what the station published, through
-// libmosquitto: subscribed to one topic filter at QoS 1 before it returns.
+// libmosquitto: subscribed to one topic filter at QoS 1 before it returns;
+// it also publishes, as show control sending the station a cue would.
 //
 //   MqttSubscriber sub(broker.port(), "arcomp/#");
 //   sub.waitFor([](const auto& got) { return got.size() >= 3; }, std::chrono::seconds(5));
@@ -53,6 +54,13 @@ public:
         mosquitto_disconnect(client_);
         mosquitto_loop_stop(client_, false);
         mosquitto_destroy(client_);
+    }
+
+    // As show control would: QoS 1, so it reaches a subscriber that is connected.
+    void publish(const std::string& topic, const std::string& payload) {
+        if (mosquitto_publish(client_, nullptr, topic.c_str(), static_cast<int>(payload.size()), payload.data(), 1,
+                              false) != MOSQ_ERR_SUCCESS)
+            throw std::runtime_error("MqttSubscriber: cannot publish to " + topic);
     }
 
     // Waits until `done` holds for what has arrived, or `wait` passes; gives what arrived.

@@ -13,11 +13,13 @@
 #include "runtime/config/CalibrationFile.hpp"
 #include "runtime/config/CameraFile.hpp"
 
+#include <lo/lo_lowlevel.h>
+#include <meshoptimizer.h>
+#include <nlohmann/json.hpp>
+
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <meshoptimizer.h>
-#include <nlohmann/json.hpp>
 
 using namespace arcomp;
 namespace fs = std::filesystem;
@@ -80,7 +82,7 @@ int main(int argc, char** argv) {
     }
     const fs::path out = argv[1];
     for (const char* t :
-         {"lod", "silhouette", "voxel", "calibration", "camera", "gaze", "obj", "http", "draco", "meshopt"})
+         {"lod", "silhouette", "voxel", "calibration", "camera", "gaze", "obj", "http", "draco", "meshopt", "cue"})
         fs::create_directories(out / t);
 
     const Geometry g = tetrahedron();
@@ -131,6 +133,24 @@ int main(int argc, char** argv) {
                          .distortion = {-0.1, 0.01, 0.0, 0.0, 0.0}};
     camera.translation = {0.0, -3.0, 8.0};
     writeCameraFile(out / "camera/camera.yaml", camera, "fuzz seed");
+
+    // Cues: the wire's byte (0 OSC, 1 JSON), then the packet.
+    const auto oscCue = [&](const char* name, const char* path, std::vector<const char*> strings) {
+        lo_message m = lo_message_new();
+        for (const char* s : strings) lo_message_add_string(m, s);
+        std::size_t size = 0;
+        void* bytes = lo_message_serialise(m, path, nullptr, &size);
+        std::string text(1, '\0');
+        text.append(static_cast<const char*>(bytes), size);
+        free(bytes);
+        lo_message_free(m);
+        writeText(out / "cue" / name, text);
+    };
+    oscCue("play.osc", "/arcomp/cue/play", {"walker", "hop"});
+    oscCue("hide.osc", "/arcomp/cue/hide", {"sign"});
+    oscCue("reload.osc", "/arcomp/cue/reload", {});
+    writeText(out / "cue/play.json", "\x01{\"cue\": \"play\", \"object\": \"walker\", \"animation\": \"walk\"}");
+    writeText(out / "cue/stop.json", "\x01{\"cue\": \"stop\", \"object\": \"walker\"}");
 
     writeText(out / "http/scrape.txt", "GET /metrics HTTP/1.1\r\nHost: 127.0.0.1:9464\r\nAccept: text/plain\r\n\r\n");
     writeText(out / "http/token.txt", "GET /status?x=1 HTTP/1.0\nAuthorization: Bearer 0123456789abcdef\n\n");
