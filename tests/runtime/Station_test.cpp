@@ -30,9 +30,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The demo's four standing objects, without its files, its sign and beacon
+// and their triggers: the CG stays the same in every frame.
 StationConfig demoConfig() {
     StationConfig cfg = loadStationConfig(fs::path(ARCOMP_SOURCE_DIR) / "configs/demo-replay.yaml");
     cfg.compositing.output = {};
+    std::erase_if(cfg.objects, [](const ObjectConfig& o) { return !o.visible || !o.animation.empty(); });
+    cfg.triggers.clear();
     return cfg;
 }
 
@@ -305,14 +309,15 @@ TEST(Station, replayTwiceGivesIdenticalImages) {
         std::string(ARCOMP_BINARY) + " replay " + ARCOMP_SOURCE_DIR + "/configs/demo-replay.yaml --frames 12 --out ";
     ASSERT_EQ(std::system((base + (dir.path() / "a").string() + " >/dev/null 2>&1").c_str()), 0);
     ASSERT_EQ(std::system((base + (dir.path() / "b").string() + " >/dev/null 2>&1").c_str()), 0);
-    int compared = 0;
+    int frames = 0;
     for (const auto& e : fs::directory_iterator(dir.path() / "a")) {
         const fs::path other = dir.path() / "b" / e.path().filename();
         ASSERT_TRUE(fs::exists(other)) << other;
         EXPECT_EQ(bytesOf(e.path()), bytesOf(other)) << e.path().filename();
-        ++compared;
+        frames += e.path().extension() == ".png";
     }
-    EXPECT_EQ(compared, 12);
+    EXPECT_EQ(frames, 12);
+    EXPECT_TRUE(fs::exists(dir.path() / "a" / "events.jsonl")) << "compared with the frames";
 }
 
 }  // namespace

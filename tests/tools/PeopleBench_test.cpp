@@ -1,7 +1,8 @@
 // `arcomp-bench people` end to end on a short run of the `ar`
 // installation: the line has the fields for both mattes, every
 // datagram the stations sent arrived, and the walkers are found where they
-// walk (position is a measurement, not a speed: it may be held here).
+// walk (position is a measurement, not a speed: it may be held here), and
+// the zone events come within a few frames of the true crossings.
 
 #include "tests/support/Shell.hpp"
 
@@ -29,4 +30,13 @@ TEST(PeopleBench, shortRunFindsTheWalkersAndSendsEveryFrame) {
         EXPECT_LE(m["position_err_m_median"].get<double>(), 0.15) << matte;
     }
     EXPECT_TRUE(std::filesystem::exists(out / "camera.yaml")) << "the station calibrated the camera itself";
+    // In 60 frames two walkers cross into a zone each (frames 24 and 52 of the true paths).
+    const nlohmann::json& zones = line["zones"];
+    EXPECT_GE(zones["true_events_in_full_view"].get<int>(), 1) << r.out;
+    EXPECT_GE(zones["station_events"].get<int>(), 1) << r.out;
+    EXPECT_EQ(zones["missed"], 0) << r.out;
+    EXPECT_EQ(zones["spurious"], 0) << r.out;
+    EXPECT_LE(zones["timing_err_frames_median"].get<double>(), 3.0) << r.out;
+    EXPECT_GE(zones["triggers_fired"].get<int>(), 1) << r.out;
+    EXPECT_TRUE(zones["zones_and_triggers_ms"].is_number()) << r.out;
 }

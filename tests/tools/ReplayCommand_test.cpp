@@ -12,8 +12,10 @@
 
 #include "tests/support/BoxStation.hpp"
 #include "tests/support/Shell.hpp"
+#include <algorithm>
 #include <array>
 #include <cstdio>
+#include <fstream>
 #include <sys/wait.h>
 
 using arcomp::test::TempDir;
@@ -129,4 +131,49 @@ TEST(ReplayCommand, demoOnEs3MatchesGl33) {
         cv::minMaxLoc(diff.reshape(1), nullptr, &worst);
         EXPECT_LE(worst, 2.0) << name << ": the two APIs differ by more than 2 levels somewhere";
     }
+}
+
+// The demo reacts to its walkers: the plaza's first visitor (frame 11 of
+// vtest.avi) shows the sign over the kiosk until the plaza empties (frame
+// 44), the walk past the beacon plays it and the beacon pauses when it
+// empties, each firing in out/events.jsonl.
+TEST(ReplayCommand, theDemosSignShowsWhileThePlazaIsOccupiedAndItsBeaconPlays) {
+    const fs::path vtest = "/usr/share/doc/opencv-doc/examples/data/vtest.avi";
+    if (!fs::exists(vtest)) GTEST_SKIP() << vtest << " absent (opencv-doc not installed)";
+    TempDir dir;
+    const std::string demo = (fs::path(ARCOMP_SOURCE_DIR) / "configs/demo-replay.yaml").string();
+    const auto r = replay(demo + " --frames 50 --out " + dir.path().string());
+    ASSERT_EQ(r.code, 0) << r.out;
+    std::ifstream in(dir.path() / "events.jsonl");
+    std::vector<std::pair<int, std::string>> firings;  // frame, "welcome fired", ...
+    for (std::string line; std::getline(in, line);) {
+        const auto trigger = line.find(R"("trigger":")");
+        if (trigger == std::string::npos) continue;
+        const std::string name = line.substr(trigger + 11, line.find('"', trigger + 11) - trigger - 11);
+        const std::string state = line.find(R"("state":"fired")") != std::string::npos ? "fired" : "ended";
+        firings.emplace_back(std::stoi(line.substr(9)), name + " " + state);
+    }
+    const auto at = [&](const std::string& what) {
+        const auto f = std::find_if(firings.begin(), firings.end(), [&](const auto& e) { return e.second == what; });
+        return f == firings.end() ? -1 : f->first;
+    };
+    const int on = at("welcome fired"), off = at("welcome ended");
+    ASSERT_GT(on, 0) << "someone crosses the plaza in the first 50 frames";
+    ASSERT_GT(off, on);
+    EXPECT_GE(at("beacon fired"), 0);
+    EXPECT_GT(at("beacon ended"), at("beacon fired"));
+    // The sign's middle, over the kiosk: green while shown, the square's grey otherwise.
+    const auto signShown = [&](int frame) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame-%06d.png", frame);
+        const cv::Mat image = cv::imread((dir.path() / name).string());
+        EXPECT_FALSE(image.empty()) << name;
+        if (image.empty()) return false;
+        const cv::Vec3b c = image.at<cv::Vec3b>(160, 195);  // BGR
+        return c[1] > c[2] + 60 && c[1] > c[0] + 20;
+    };
+    EXPECT_FALSE(signShown(on - 1));
+    EXPECT_TRUE(signShown(on));
+    EXPECT_TRUE(signShown(off - 1));
+    EXPECT_FALSE(signShown(off));
 }

@@ -22,12 +22,25 @@
 //    UDP socket on loopback that the bench reads. Delay: from a frame's
 //    capture to its people's last datagram leaving the socket
 //    (FrameStats::captureToPeopleSentMs), median and p95.
+//  - Zones: a third station, the own-matte one with three floor zones
+//    across the walkers' paths and a trigger on each. Its enter and leave
+//    events against the true ones: the walkers' true middles run through
+//    the same hysteresis (in once inside by the enter margin, out once
+//    outside by the leave margin). Each true event of a walker in the
+//    full view (fullView: in the picture, no other walker in its column)
+//    is matched to the nearest of the station's events of that zone and
+//    kind within kEventFrames; the timing error is the frames between them.
+//    Missed: a true event in full view without one; spurious: a station
+//    event that no true event matches, of a person whose nearest walker is
+//    in full view. Cost: that
+//    station's people stage against the own-matte one's, the same frames.
 //
 //   arcomp-bench people --out build/bench-people
 
 #include "runtime/gl/GlContext.hpp"
 #include "runtime/station/ReplayInput.hpp"
 #include "runtime/station/Station.hpp"
+#include "runtime/zones/Zone.hpp"
 #include "tools/bench/drivers/ArInstallation.hpp"
 #include "tools/bench/probes/LoopbackUdp.hpp"
 #include "tools/bench/report/BenchJson.hpp"
@@ -53,6 +66,20 @@ struct Options {
 constexpr float kMatchMetres = 1.0f;
 constexpr double kSettledSeconds = 0.5;  // followed this long before its velocity is scored
 constexpr double kTurnSeconds = 0.5;     // velocity not scored this close to a walker's turn
+
+constexpr int kEventFrames = 12;  // a station event further than this from a true one is not it
+
+// Three floor zones, each across one walker's path, and a trigger on each
+// that hides and shows one of the CG objects, as an installation's would.
+constexpr const char* kZonesAndTriggers = R"(zones:
+  - {name: left, polygon: [[-2.5, -3], [-0.5, -3], [-0.5, -1], [-2.5, -1]]}
+  - {name: right, circle: {center: [2.5, 2.2], radius: 1.0}}
+  - {name: lane, polygon: [[0.3, -5.5], [1.6, -5.5], [1.6, -3.5], [0.3, -3.5]]}
+triggers:
+  - {name: left, when: {count: left, at_least: 1}, do: [{hide: sphere}], on_end: [{show: sphere}]}
+  - {name: right, when: {enter: right}, do: [{fade: box, to: 0.5, seconds: 1}]}
+  - {name: lane, when: {dwell: lane, seconds: 0.5}, do: [{show: box}]}
+)";
 
 struct WalkerIds {
     int lastId = -1;
@@ -89,6 +116,94 @@ bool inPicture(const CalibratedCamera& camera, glm::vec2 floor) {
     if (camera.depthOf(point) <= 0.0) return false;
     const glm::dvec2 pixel = camera.project(point);
     return pixel.x >= 0 && pixel.y >= 0 && pixel.x < kLens.size.width && pixel.y < kLens.size.height;
+}
+
+struct ZoneCrossing {
+    int frame;
+    int zone;
+    ZoneEvent::Kind kind;
+    bool inView;  // the walker in full view around it (fullView)
+};
+
+// Whether walker `w` is in full view from `frame - kEventFrames` to
+// `frame + kEventFrames`: its middle in the picture, and no other walker
+// in front of or behind it there (their columns in the picture, a body's
+// width each, apart). A walker hidden by another, or merged with them into
+// one shape, is not one the station can see cross.
+bool fullView(const std::vector<ObjectConfig>& walking, std::size_t w, int frame, const CalibratedCamera& truth) {
+    constexpr double kHalfWidthMetres = 0.3;
+    for (int i = frame - kEventFrames; i <= frame + kEventFrames; ++i) {
+        const auto column = [&](std::size_t k) {
+            const glm::vec2 at = walkerAt(walking[k], i / kFps).position;
+            const glm::dvec3 floor(at.x, 0.0, at.y);
+            const double halfWidth = kHalfWidthMetres * truth.intrinsics.fx / std::max(truth.depthOf(floor), 0.1);
+            return std::pair(truth.project(floor).x, halfWidth);
+        };
+        if (!inPicture(truth, walkerAt(walking[w], i / kFps).position)) return false;
+        const auto [x, half] = column(w);
+        for (std::size_t k = 0; k < walking.size(); ++k) {
+            if (k == w) continue;
+            const auto [otherX, otherHalf] = column(k);
+            if (std::abs(otherX - x) < half + otherHalf) return false;
+        }
+    }
+    return true;
+}
+
+// The true events of `walking` in `zones`, frame by frame, through the zones' hysteresis.
+std::vector<ZoneCrossing> trueCrossings(const std::vector<ObjectConfig>& walking, const std::vector<Zone>& zones,
+                                        const CalibratedCamera& truth, int frames) {
+    std::vector<ZoneCrossing> out;
+    std::vector<std::vector<bool>> in(walking.size(), std::vector<bool>(zones.size(), false));
+    for (int i = 0; i < frames; ++i)
+        for (std::size_t w = 0; w < walking.size(); ++w) {
+            const glm::vec2 at = walkerAt(walking[w], i / kFps).position;
+            for (std::size_t z = 0; z < zones.size(); ++z) {
+                const float d = signedDistance(zones[z], at);
+                const bool was = in[w][z];
+                if (!was && d < -zones[z].enterMargin) in[w][z] = true;
+                if (was && d > zones[z].leaveMargin) in[w][z] = false;
+                if (in[w][z] != was)
+                    out.push_back({i, static_cast<int>(z), was ? ZoneEvent::Kind::Leave : ZoneEvent::Kind::Enter,
+                                   fullView(walking, w, i, truth)});
+            }
+        }
+    return out;
+}
+
+struct ZoneScore {
+    std::vector<double> errFrames;
+    int trueEvents = 0, stationEvents = 0, missed = 0, spurious = 0;
+    int hiddenEvents = 0, hiddenMissed = 0;  // true events of a walker not in full view
+};
+
+// `station`'s inView: whether the walker nearest the person who crossed is in full view.
+ZoneScore scoreZones(const std::vector<ZoneCrossing>& truth, const std::vector<ZoneCrossing>& station) {
+    ZoneScore s;
+    s.stationEvents = static_cast<int>(station.size());
+    std::vector<bool> used(station.size(), false);
+    for (const ZoneCrossing& t : truth) {
+        int best = -1, bestErr = kEventFrames + 1;
+        for (std::size_t k = 0; k < station.size(); ++k) {
+            const int err = std::abs(station[k].frame - t.frame);
+            if (!used[k] && station[k].zone == t.zone && station[k].kind == t.kind && err < bestErr)
+                best = static_cast<int>(k), bestErr = err;
+        }
+        if (best >= 0) used[static_cast<std::size_t>(best)] = true;
+        if (!t.inView) {
+            ++s.hiddenEvents;
+            s.hiddenMissed += best < 0;
+            continue;
+        }
+        ++s.trueEvents;
+        if (best < 0)
+            ++s.missed;
+        else
+            s.errFrames.push_back(bestErr);
+    }
+    for (std::size_t k = 0; k < station.size(); ++k)
+        if (!used[k] && station[k].inView) ++s.spurious;
+    return s;
 }
 
 // Whether walker `w`'s path turns round within kTurnSeconds of `seconds`.
@@ -189,9 +304,11 @@ int run(const Options& o) {
     const std::string showControl = "show_control:\n  osc: {targets: [" + target + "]}\n  tuio: {targets: [" + target +
                                     "], floor: {min: [-6, -9], max: [6, 5]}}\n";
     writeConfig(dir / "people-masks.yaml", "  kind: masks\n  masks: {folder: masks}\n", "", showControl);
-    writeConfig(dir / "people-own-matte.yaml",
-                "  kind: background\n  background: {method: clean_plate, clean_plate: plate.png}\n", "", showControl);
-    const std::vector<fs::path> configs{dir / "people-masks.yaml", dir / "people-own-matte.yaml"};
+    const std::string ownMatte = "  kind: background\n  background: {method: clean_plate, clean_plate: plate.png}\n";
+    writeConfig(dir / "people-own-matte.yaml", ownMatte, "", showControl);
+    writeConfig(dir / "people-zones.yaml", ownMatte, "", showControl + kZonesAndTriggers);
+    const std::vector<fs::path> configs{dir / "people-masks.yaml", dir / "people-own-matte.yaml",
+                                        dir / "people-zones.yaml"};
     std::vector<std::unique_ptr<Station>> stations;
     std::vector<Score> scores(configs.size());
     for (const fs::path& config : configs)
@@ -199,7 +316,8 @@ int run(const Options& o) {
             loadStationConfig(config), StationInput::fromReplay(std::make_unique<FramesGrabber>(video), kFps)));
     for (Score& s : scores) s.ids.resize(walking.size());
     const double bodyDepth = FloorPeople::Settings{}.bodyDepthMetres;
-    for (int i = 0; i < o.frames; ++i)
+    std::vector<ZoneCrossing> stationCrossings;
+    for (int i = 0; i < o.frames; ++i) {
         for (std::size_t k = 0; k < stations.size(); ++k) {
             if (!stations[k]->frame()) throw std::runtime_error("a station stopped at frame " + std::to_string(i));
             scores[k].peopleMs.push_back(stations[k]->stats().peopleMs);
@@ -207,6 +325,24 @@ int run(const Options& o) {
             sink.drain();
             scoreFrame(stations[k]->people(), walking, truth, bodyDepth, scores[k]);
         }
+        const PeopleFrame& now = stations.back()->people();
+        for (const ZoneEvent& e : now.zoneEvents) {
+            // Whose crossing: the walker nearest where the person was (a person given up leaves where last seen).
+            const Person* p = findPerson(now, e.person);
+            const glm::vec2 at = p ? p->position : glm::vec2(1e6f);
+            std::size_t nearest = 0;
+            for (std::size_t w = 1; w < walking.size(); ++w)
+                if (glm::distance(walkerAt(walking[w], now.seconds).position, at) <
+                    glm::distance(walkerAt(walking[nearest], now.seconds).position, at))
+                    nearest = w;
+            stationCrossings.push_back({i, e.zone, e.kind, p && fullView(walking, nearest, i, truth)});
+        }
+    }
+    const std::vector<Zone>& zones = loadStationConfig(configs.back()).zones;
+    const ZoneScore zoneScore = scoreZones(trueCrossings(walking, zones, truth, o.frames), stationCrossings);
+    std::uint64_t fired = 0;
+    for (std::size_t t = 0; t < stations.back()->triggers().triggers().size(); ++t)
+        fired += stations.back()->triggers().counts(t).fired;
 
     for (std::size_t k = 0; k < stations.size(); ++k)
         for (const OutputStatus& out : stations[k]->showControl().outputs()) {
@@ -215,9 +351,11 @@ int run(const Options& o) {
                 throw std::runtime_error("people bench: " + out.kind + " " + out.state + ", " +
                                          std::to_string(out.dropped) + " dropped (" + out.lastError + ")");
         }
-    if (sink.received() != scores[0].datagramsSent + scores[1].datagramsSent)
+    std::size_t sent = 0;
+    for (const Score& s : scores) sent += s.datagramsSent;
+    if (sink.received() != sent)
         throw std::runtime_error("people bench: " + std::to_string(sink.received()) + " datagrams arrived of " +
-                                 std::to_string(scores[0].datagramsSent + scores[1].datagramsSent) + " sent");
+                                 std::to_string(sent) + " sent");
     const double walkerMinutes = static_cast<double>(walking.size()) * o.frames / kFps / 60.0;
     const Score &masks = scores[0], &own = scores[1];
     BenchJson json;
@@ -225,11 +363,25 @@ int run(const Options& o) {
     json.beginArray("size").value(kLens.size.width).value(kLens.size.height).end();
     report(json, "true_masks", masks, walkerMinutes);
     report(json, "own_matte", own, walkerMinutes);
+    json.beginObject("zones")
+        .field("true_events_in_full_view", zoneScore.trueEvents)
+        .field("true_events_hidden", zoneScore.hiddenEvents)
+        .field("missed_hidden", zoneScore.hiddenMissed)
+        .field("station_events", zoneScore.stationEvents)
+        .field("timing_err_frames_median", Fixed{median(zoneScore.errFrames), 1})
+        .field("timing_err_frames_p95", Fixed{percentile(zoneScore.errFrames, 95), 1})
+        .field("missed", zoneScore.missed)
+        .field("spurious", zoneScore.spurious)
+        .field("triggers_fired", static_cast<int>(fired))
+        .field("people_ms_median", Fixed{median(scores[2].peopleMs), 3})
+        .field("zones_and_triggers_ms", Fixed{median(scores[2].peopleMs) - median(own.peopleMs), 3})
+        .end();
     json.field("calibration_height_err_pct", Fixed{calibration.heightErrPct, 3})
         .field("calibration_tilt_err_deg", Fixed{calibration.tiltErrDeg, 3});
     json.beginObject("targets")
         .field("position", median(masks.positionErr) <= 0.15 && median(own.positionErr) <= 0.15)
         .field("cost", median(own.peopleMs) <= 1.0)
+        .field("zone_timing", median(zoneScore.errFrames) <= 3.0 && zoneScore.missed == 0 && zoneScore.spurious == 0)
         .end();
     json.field("out", dir.string());
     std::cout << json.str() << std::endl;
@@ -237,7 +389,7 @@ int run(const Options& o) {
 }
 
 const bool registered = registerCommand(
-    {"people", "The people the station publishes against the true walkers: position, velocity, ids, cost",
+    {"people", "The people the station publishes against the true walkers: position, velocity, ids, zone events, cost",
      [](CommandLine& line) {
          auto o = std::make_shared<Options>();
          line.option("--frames", o->frames, "frames of the installation (25 a second)").range(50, 100000).showDefault();
