@@ -48,7 +48,6 @@ const TriggerFrame& Triggers::update(const PeopleFrame& frame, World& world) {
         const Trigger& t = triggers_[i];
         State& s = state_[i];
         const int index = static_cast<int>(i);
-        const bool cooled = frame.seconds >= s.lastFired + t.cooldownSeconds;
         if (t.when.event == TriggerEvent::Enter || t.when.event == TriggerEvent::Leave) {
             const auto kind = t.when.event == TriggerEvent::Enter ? ZoneEvent::Kind::Enter : ZoneEvent::Kind::Leave;
             for (const ZoneEvent& e : frame.zoneEvents) {
@@ -61,7 +60,7 @@ const TriggerFrame& Triggers::update(const PeopleFrame& frame, World& world) {
             continue;
         }
         const bool now = holdsNow(t, s, frame, world);
-        if (now && !s.held && cooled)
+        if (now && !s.held && frame.seconds >= s.lastFired + t.cooldownSeconds)
             fire(index, -1, frame, world);
         else if (!now && s.held)
             end(index, frame, world);
