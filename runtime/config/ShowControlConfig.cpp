@@ -1,5 +1,6 @@
 #include "runtime/config/ShowControlConfig.hpp"
 
+#include "runtime/config/StatusAccess.hpp"
 #include "runtime/config/YamlMap.hpp"
 
 #include <arpa/inet.h>
@@ -113,10 +114,7 @@ void readCues(YamlMap& cues, bool mqttBroker, CueInputConfig& out) {
                     out.allow.push_back(text);
             }
         }
-        in_addr bound{};
-        const bool loopback =
-            inet_pton(AF_INET, out.listen.host.c_str(), &bound) == 1 && (ntohl(bound.s_addr) >> 24) == 127;
-        if (!loopback && out.allow.empty())
+        if (!isLoopbackAddress(out.listen.host) && out.allow.empty())
             report.add(osc.mark(), osc.where() + ": listening on '" + out.listen.host +
                                        "', beyond loopback, needs allow: the senders' IPv4 addresses (OSC has no "
                                        "credentials; only listed senders are heard)");
