@@ -219,6 +219,8 @@ void readTriggerConfig(YamlMap& root, const TriggerContext& context, std::vector
         Trigger trigger;
         trigger.line = t.mark().line + 1;
         t.text("name", trigger.name, Required::Yes);
+        if (t.has("name") && trigger.name.empty())
+            t.report().add(t.mark(), t.where() + ".name: empty; a trigger needs a name for its events and metrics");
         if (!trigger.name.empty() && !names.insert(trigger.name).second)
             t.report().add(t.mark(), t.where() + " '" + trigger.name +
                                          "': the name is used by an earlier trigger; each trigger needs its own");

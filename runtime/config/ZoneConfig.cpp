@@ -57,6 +57,8 @@ void readZoneConfig(YamlMap& root, const std::optional<CalibratedCamera>& camera
         ConfigReport& report = z.report();
         Zone zone;
         z.text("name", zone.name, Required::Yes);
+        if (z.has("name") && zone.name.empty())
+            report.add(z.mark(), z.where() + ".name: empty; a zone needs a name for its events and messages");
         const std::string label =
             "zones[" + std::to_string(i) + "]" + (zone.name.empty() ? "" : " '" + zone.name + "'");
         if (!zone.name.empty() && !names.insert(zone.name).second)

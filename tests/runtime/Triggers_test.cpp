@@ -284,6 +284,7 @@ TEST(TriggerConfig, reportsEachMistakeAtItsLine) {
   - {name: g, when: {enter: left}, do: [{mqtt: "a/#"}]}
   - {name: i, when: {enter: left}, do: [{show: sign}], on_end: [{hide: sign}]}
   - {name: j, when: {count: left, at_least: 1}, do: [{wave: sign}]}
+  - {name: "", when: {enter: left}, do: [{show: sign}]}
 )";
     const auto issues = configIssues(dir.write("station.yaml", text));
     const int first = lineOf(text, "name: a,");
@@ -301,6 +302,7 @@ TEST(TriggerConfig, reportsEachMistakeAtItsLine) {
     EXPECT_TRUE(hasIssue(issues, first + 7, "no + or # wildcards")) << describe(issues);
     EXPECT_TRUE(hasIssue(issues, first + 8, "never ends")) << describe(issues);
     EXPECT_TRUE(hasIssue(issues, first + 9, "expected one action of play, pause")) << describe(issues);
+    EXPECT_TRUE(hasIssue(issues, first + 10, "name: empty")) << describe(issues);
 }
 
 TEST(TriggerConfig, readsEveryActionWithItsSettings) {

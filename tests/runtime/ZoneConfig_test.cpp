@@ -110,7 +110,9 @@ TEST(ZoneConfig, reportsEachMistakeAtItsLine) {
                   far +
                   ", radius: 0.5}}\n"  // +5: not seen
                   "  - {name: both, image_rect: {min: [0, 0], max: [1, 1]}, circle: {center: [0, 0], radius: 1}}\n"
-                  "  - {name: flipped, image_rect: {min: [0.5, 0.5], max: [0.2, 1]}}\n");
+                  "  - {name: flipped, image_rect: {min: [0.5, 0.5], max: [0.2, 1]}}\n"
+                  "  - {name: \"\", circle: {center: " +
+                  CalibratedDir::at(s) + ", radius: 0.5}}\n");  // +7: no name
     const auto issues = test::configIssues(c.dir.write("s.yaml", yaml));
     const int first = test::lineOf(yaml, "name: bow");
     EXPECT_TRUE(test::hasIssue(issues, first, "crosses itself")) << test::describe(issues);
@@ -120,7 +122,8 @@ TEST(ZoneConfig, reportsEachMistakeAtItsLine) {
         << test::describe(issues);
     EXPECT_TRUE(test::hasIssue(issues, first + 5, "give one shape")) << test::describe(issues);
     EXPECT_TRUE(test::hasIssue(issues, first + 6, "below and left of max")) << test::describe(issues);
-    EXPECT_EQ(issues.size(), 6u) << test::describe(issues);
+    EXPECT_TRUE(test::hasIssue(issues, first + 7, "name: empty")) << test::describe(issues);
+    EXPECT_EQ(issues.size(), 7u) << test::describe(issues);
 
     TempDir plain;
     const auto metres = test::configIssues(plain.write(
