@@ -1,5 +1,6 @@
 #include "runtime/config/CompositingConfig.hpp"
 
+#include "runtime/config/EncodingConfig.hpp"
 #include "runtime/config/YamlMap.hpp"
 
 namespace arcomp {
@@ -167,8 +168,10 @@ void readOutput(YamlMap& root, OutputConfig& out) {
     YamlMap o = root.map("output");
     o.path("png_dir", out.pngDir, false);
     o.path("video_file", out.videoFile, false);
+    if (o.has("video_file")) out.videoFileAt = o.report().place(o.take("video_file").Mark());
     o.text("video_fourcc", out.videoFourcc);
     if (out.videoFourcc.size() != 4) o.report().add(o.mark(), "output.video_fourcc: expected 4 characters, e.g. MJPG");
+    readEncoding(o, "encoding", out.videoEncoding);
     o.path("matte_dir", out.matteDir, false);
     o.path("events", out.events, false);
     o.boolean("window", out.window);

@@ -9,6 +9,7 @@
 
 #include "video/matte/MatteSpec.hpp"
 #include "video/sources/SourceSpec.hpp"
+#include "video/streams/H264Settings.hpp"
 
 #include <glm/glm.hpp>
 
@@ -57,9 +58,14 @@ struct CompositorConfig {
 };
 
 struct OutputConfig {
-    std::filesystem::path pngDir;     // frame-000000.png ...; empty: none
-    std::filesystem::path videoFile;  // empty: none
+    std::filesystem::path pngDir;  // frame-000000.png ...; empty: none
+    // empty: none. .mp4 (fragmented), .m4v, .mov or .mkv: H.264 through
+    // GStreamer (video/streams/H264Recording.hpp); any other: OpenCV's
+    // writer with videoFourcc.
+    std::filesystem::path videoFile;
+    std::string videoFileAt;  // "station.yaml:5:3", for what only the machine can say (no encoder)
     std::string videoFourcc = "MJPG";
+    H264Settings videoEncoding{};
     std::filesystem::path matteDir;  // the matte's alpha per frame, for inspection; empty: none
     std::filesystem::path events;    // the zone events as JSON Lines (runtime/station/EventLog.hpp); empty: none
     bool window = false;             // for `arcomp run`; replay ignores it

@@ -18,6 +18,10 @@ void ConfigReport::add(const YAML::Mark& mark, std::string message) {
         {file_.string(), mark.line < 0 ? 0 : mark.line + 1, mark.column < 0 ? 0 : mark.column + 1, std::move(message)});
 }
 
+std::string ConfigReport::place(const YAML::Mark& mark) const {
+    return file_.string() + ":" + std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1);
+}
+
 void ConfigReport::addFileLevel(std::string message) { issues_.push_back({file_.string(), 0, 0, std::move(message)}); }
 
 void ConfigReport::throwIfAny() const {

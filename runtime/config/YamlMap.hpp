@@ -30,6 +30,9 @@ public:
     explicit ConfigReport(std::filesystem::path file) : file_(std::move(file)) {}
     void add(const YAML::Mark& mark, std::string message);
     void addFileLevel(std::string message);
+    // "station.yaml:12:5", for a problem only found later (on the machine
+    // that runs the config) that should still name its place.
+    std::string place(const YAML::Mark& mark) const;
     void throwIfAny() const;
     const std::filesystem::path& file() const { return file_; }
     const std::vector<ConfigIssue>& issues() const { return issues_; }

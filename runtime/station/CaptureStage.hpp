@@ -51,6 +51,9 @@ public:
     bool newFrame() const { return newFrame_; }      // live: false when the camera had nothing new
     glm::ivec2 size() const { return {frame_.cols, frame_.rows}; }
     double fps() const { return input_.fps; }
+    // Frames pulled one by one from a file (true) or taken as a live camera
+    // delivers them.
+    bool isReplay() const { return input_.replay != nullptr; }
 
     // The current frame's time, which movers and the gaze track run on: the
     // video's own timestamp in replay (deterministic), the wall time since

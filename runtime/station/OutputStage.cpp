@@ -3,6 +3,7 @@
 #include "runtime/station/ImageFile.hpp"
 #include "video/matte/PersonMatte.hpp"
 #include "video/pixels/VideoError.hpp"
+#include "video/streams/H264Recording.hpp"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -24,11 +25,22 @@ std::string numbered(const char* stem, std::uint64_t index, const char* extensio
 
 }  // namespace
 
-OutputStage::OutputStage(const OutputConfig& config, double fps, glm::ivec2 size, FrameReadback::Mode readback)
+OutputStage::OutputStage(const OutputConfig& config, double fps, glm::ivec2 size, FrameReadback::Mode readback,
+                         WhenFull recording)
     : config_(config), readback_(readback), fps_(fps), size_(size) {
-    if (!config_.videoFile.empty())
+    if (config_.videoFile.empty()) return;
+    if (isH264Container(config_.videoFile))
+        recording_ = openH264Recording(config_.videoFile, config_.videoEncoding, {size.x, size.y, fps}, recording);
+    else
         video_ = std::make_unique<VideoFileWriter>(config_.videoFile.string(), config_.videoFourcc, fps,
                                                    cv::Size(size.x, size.y));
+}
+
+void OutputStage::preflight(const OutputConfig& config) {
+    if (!isH264Container(config.videoFile)) return;
+    if (const EncoderChoice c = chooseH264Encoder(config.videoEncoding.encoder); c.element.empty())
+        throw BadInput(config.videoFileAt.empty() ? config.videoFile.string() : config.videoFileAt, "output.video_file",
+                       c.warning);
 }
 
 template <class Step>
@@ -44,7 +56,7 @@ void OutputStage::counted(Step&& step) {
 void OutputStage::write(const RenderTarget& frame, const cv::Mat& person) {
     const std::uint64_t index = next_++;
     counted([&] { writeMatte(index, person); });
-    if (config_.pngDir.empty() && !video_ && snapshots_.empty() && clips_.empty()) return;
+    if (config_.pngDir.empty() && !video_ && !recording_ && snapshots_.empty() && clips_.empty()) return;
     counted([&] {
         const std::uint64_t before = std::exchange(inFlight_, index);
         if (readback_.read(frame, image_)) writeFrame(readback_.latencyFrames() == 0 ? index : before, image_);
@@ -67,6 +79,7 @@ void OutputStage::clip(const std::filesystem::path& folder, double seconds) {
 
 void OutputStage::writeFrame(std::uint64_t index, const Image& image) {
     if (!config_.pngDir.empty()) counted([&] { writePng(config_.pngDir / numbered("frame", index), image); });
+    if (recording_) record(image);
     const bool toVideo =
         video_ || std::any_of(clips_.begin(), clips_.end(), [&](const Clip& c) { return c.index <= index; });
     if (toVideo) {
@@ -75,6 +88,27 @@ void OutputStage::writeFrame(std::uint64_t index, const Image& image) {
         if (video_) counted([&] { video_->write(bgr_); });
     }
     writeRequested(index, image);
+}
+
+// A recording that fails (a full disk) is one failure, kept with its
+// reason; its later frames are dropped and counted.
+void OutputStage::record(const Image& image) {
+    if (image.width != size_.x || image.height != size_.y) {
+        ++failures_;
+        lastError_ = config_.videoFile.string() + ": frame of " + std::to_string(image.width) + "x" +
+                     std::to_string(image.height) + ", the recording was opened for " + std::to_string(size_.x) + "x" +
+                     std::to_string(size_.y);
+        return;
+    }
+    recording_->push(image.rgba.data());
+    noteRecordingFailure();
+}
+
+void OutputStage::noteRecordingFailure() {
+    if (recordingFailureCounted_ || recording_->state() != PipelineState::Failed) return;
+    recordingFailureCounted_ = true;
+    ++failures_;
+    lastError_ = recording_->name() + ": " + recording_->error();
 }
 
 // Snapshots and clips from `index` on; each failure is counted on its own,
@@ -112,6 +146,10 @@ void OutputStage::finish() {
         if (readback_.drain(image_)) writeFrame(inFlight_, image_);
     });
     if (video_) video_->close();
+    if (recording_) {
+        recording_->close();
+        noteRecordingFailure();
+    }
     // A clip cut short by the end of the input keeps what it has.
     for (Clip& c : clips_)
         if (c.file) {

@@ -1,6 +1,10 @@
 #pragma once
 // The frame's files: the composited frame as numbered PNGs and/or one video
-// file, and the matte's alpha as numbered PNGs for inspection. On a GPU the
+// file, and the matte's alpha as numbered PNGs for inspection. A video file
+// in MP4 or Matroska is H.264 through GStreamer (H264Recording): encoded on
+// GStreamer's threads; live, a frame the encoder has no room for is dropped
+// and counted (recordingDrops()) rather than waited for, while a replay
+// (WhenFull::Wait) keeps every frame. On a GPU the
 // frame is read back asynchronously (FrameReadback): its files are written
 // one call later, and finish() writes the last. A write that
 // fails (a full disk, a folder gone read-only) is counted and kept for the
@@ -20,6 +24,7 @@
 #include "runtime/gl/FrameReadback.hpp"
 #include "runtime/gl/RenderTarget.hpp"
 #include "video/sources/VideoFileWriter.hpp"
+#include "video/streams/H264Pipeline.hpp"
 
 #include <glm/glm.hpp>
 #include <opencv2/core/mat.hpp>
@@ -35,7 +40,12 @@ class OutputStage {
 public:
     // Throws VideoError when the video file cannot be opened.
     OutputStage(const OutputConfig& config, double fps, glm::ivec2 size,
-                FrameReadback::Mode readback = FrameReadback::Mode::Auto);
+                FrameReadback::Mode readback = FrameReadback::Mode::Auto, WhenFull recording = WhenFull::Drop);
+
+    // What only this machine can say about the outputs: an H.264 recording
+    // without any encoder. Throws BadInput naming the config's place and
+    // the package to install.
+    static void preflight(const OutputConfig& config);
 
     // Files are numbered from here: a reloaded station continues where the
     // previous one stopped instead of overwriting its frames.
@@ -51,12 +61,16 @@ public:
     void finish();
 
     std::uint64_t failures() const { return failures_; }
+    // Frames the H.264 recording had no room for; 0 without one.
+    std::uint64_t recordingDrops() const { return recording_ ? recording_->dropped() : 0; }
     const std::string& lastError() const { return lastError_; }
 
 private:
     void writeMatte(std::uint64_t index, const cv::Mat& person);
     void writeFrame(std::uint64_t index, const Image& image);
     void writeRequested(std::uint64_t index, const Image& image);
+    void record(const Image& image);
+    void noteRecordingFailure();
     template <class Step>
     void counted(Step&& step);
 
@@ -73,6 +87,8 @@ private:
 
     OutputConfig config_;
     std::unique_ptr<VideoFileWriter> video_;
+    std::unique_ptr<H264Pipeline> recording_;
+    bool recordingFailureCounted_ = false;
     FrameReadback readback_;
     std::uint64_t inFlight_ = 0;  // the index of the frame readback_ holds
     Image image_;                 // the frame read back, kept so that its 8 MB (at 1080p) are not allocated again

@@ -53,6 +53,7 @@ void Station::preflight(const StationConfig& cfg) {
     (void)makeGazeSource(cfg.gaze, View{});
     (void)makeMatte(cfg.compositing.matte);
     if (!cfg.render.environment.empty()) (void)loadEnvironment(cfg.render.environment);  // BadInput naming the file
+    OutputStage::preflight(cfg.compositing.output);
 }
 
 Station::Station(const StationConfig& cfg, StationInput input)
@@ -60,7 +61,9 @@ Station::Station(const StationConfig& cfg, StationInput input)
       personDepths_(cfg_.compositing.compositor.personDepthFromFeet ? cfg_.camera.calibrated : std::nullopt,
                     cfg_.compositing.compositor.personPlaneMetres, capture_.size()),
       people_(cfg_.camera.calibrated, capture_.size()), zones_(cfg_.zones), triggers_(cfg_.triggers),
-      showControl_(cfg_.showControl), outputs_(cfg_.compositing.output, capture_.fps(), capture_.size()) {
+      showControl_(cfg_.showControl),
+      outputs_(cfg_.compositing.output, capture_.fps(), capture_.size(), FrameReadback::Mode::Auto,
+               capture_.isReplay() ? WhenFull::Wait : WhenFull::Drop) {
     const std::filesystem::path cache = bakeCacheFolder(cfg_.compositing.compositor);
     lodBake_ = buildScene(cfg_, world_, warnings_, cache);
     warnings_.insert(warnings_.end(), showControl_.problems().begin(), showControl_.problems().end());

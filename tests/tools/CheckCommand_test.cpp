@@ -74,6 +74,10 @@ INSTANTIATE_TEST_SUITE_P(
             "cameraCalibrationAndEye",
             "scene:\n  objects:\n    - shape: box\ncamera:\n  calibration: station.yaml\n  eye: [0, 1, 5]\n",
             "camera.eye: not used with camera.calibration"},
+        ConfigErrorCase{"encodingOddSize", "output:\n  video_file: show.mp4\n  encoding:\n    size: [641, 480]\n",
+                        "station.yaml:4:5: output.encoding.size: expected even width and height"},
+        ConfigErrorCase{"encodingBitrate", "output:\n  video_file: show.mp4\n  encoding: {bitrate_kbps: 5}\n",
+                        "output.encoding.bitrate_kbps: 5 is out of range"},
         ConfigErrorCase{"statusTokenFileMissing", "status:\n  port: 9464\n  bind: 0.0.0.0\n  token_file: token.txt\n",
                         "status.token_file: file '"}),
     [](const auto& info) { return std::string(info.param.name); });
@@ -123,4 +127,25 @@ TEST(CheckCommand, readsTheEnvironmentFileItNames) {
         check(dir.write("bad.yaml", "scene:\n  objects:\n    - shape: box\nrender:\n  environment: notes.hdr\n"));
     EXPECT_EQ(bad.code, 2) << bad.out;
     EXPECT_NE(bad.out.find("notes.hdr: cannot decode the environment"), std::string::npos) << bad.out;
+}
+
+// Issue #60: GStreamer with no plugins at all (an empty plugin path and a
+// registry of its own) stands for a machine without x264: an H.264
+// recording is refused at its line, naming the package to install.
+TEST(CheckCommand, anH264RecordingWithoutAnEncoderIsRefusedNamingThePackage) {
+    TempDir dir;
+    const auto config =
+        dir.write("station.yaml", "scene:\n  objects:\n    - shape: box\noutput:\n  video_file: show.mp4\n");
+    const std::string bare = "GST_PLUGIN_SYSTEM_PATH_1_0=" + dir.path().string() +
+                             " GST_PLUGIN_PATH_1_0= " + "GST_REGISTRY_1_0=" + (dir.path() / "registry.bin").string() +
+                             " ";
+    const auto r = arcomp::test::shell(bare + ARCOMP_BINARY + " check " + config.string());
+    EXPECT_EQ(r.code, 2) << r.out;
+    EXPECT_NE(r.out.find("station.yaml:5:15: output.video_file: no H.264 encoder: GStreamer element x264enc "
+                         "missing (install gstreamer1.0-plugins-ugly)"),
+              std::string::npos)
+        << r.out;
+    const auto avi = dir.write("avi.yaml", "scene:\n  objects:\n    - shape: box\noutput:\n  video_file: show.avi\n");
+    EXPECT_EQ(arcomp::test::shell(bare + ARCOMP_BINARY + " check " + avi.string()).code, 0)
+        << "OpenCV's writer needs no GStreamer plugin";
 }

@@ -11,6 +11,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "tests/support/BoxStation.hpp"
+#include "tests/support/NumberedFrames.hpp"
 #include "tests/support/Shell.hpp"
 #include <algorithm>
 #include <array>
@@ -89,6 +90,35 @@ TEST(ReplayCommand, videoOutputIsAFinishedPlayableFile) {
     int frames = 0;
     while (file.next()) ++frames;
     EXPECT_EQ(frames, 6);
+}
+
+// Issue #60: an .mp4 is H.264 that browsers play; a replay keeps every
+// frame in it, in order, as the composited PNGs show them.
+TEST(ReplayCommand, mp4OutputIsH264OfEveryCompositedFrameInOrder) {
+    TempDir dir;
+    const fs::path input = arcomp::test::writeNumberedVideo(dir.path() / "numbered.avi", 30, {320, 240});
+    const auto cfg = dir.write("s.yaml", std::string(kScene) + "video:\n  path: " + input.string() + "\n");
+    const fs::path movie = dir.path() / "movie.mp4";
+    const auto r = replay(cfg.string() + " --out " + (dir.path() / "out").string() + " --video-out " + movie.string());
+    ASSERT_EQ(r.code, 0) << r.out;
+    cv::VideoCapture in(movie.string(), cv::CAP_FFMPEG);
+    ASSERT_TRUE(in.isOpened());
+    EXPECT_EQ(static_cast<int>(in.get(cv::CAP_PROP_FOURCC)), cv::VideoWriter::fourcc('a', 'v', 'c', '1'))
+        << "H.264 as MP4 names it";
+    cv::Mat decoded;
+    int frames = 0;
+    double worst = 1e9;
+    while (in.read(decoded)) {
+        ASSERT_EQ(arcomp::test::frameNumberOf(decoded), frames) << "frame " << frames << " out of order";
+        char name[32];
+        std::snprintf(name, sizeof name, "frame-%06d.png", frames);
+        const cv::Mat composited = cv::imread((dir.path() / "out" / name).string(), cv::IMREAD_COLOR);
+        ASSERT_FALSE(composited.empty()) << name;
+        worst = std::min(worst, cv::PSNR(decoded, composited));
+        ++frames;
+    }
+    EXPECT_EQ(frames, 30);
+    EXPECT_GE(worst, 35.0) << "dB, the worst frame at the default bitrate";
 }
 
 TEST(ReplayCommand, matteIsWrittenForInspectionWhenAsked) {

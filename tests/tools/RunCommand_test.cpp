@@ -46,9 +46,12 @@ TEST(RunCommand, showsTheCompositedStationInAWindowAndExitsAfterItsFrames) {
     EXPECT_GT(colours.size(), 500u);
 }
 
-TEST(RunCommand, sigtermDuringReplayLeavesAPlayableVideoToTheLastFrame) {
+// OpenCV's writer (.avi) and GStreamer's H.264 in MP4 and Matroska alike.
+class SigtermDuringReplay : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(SigtermDuringReplay, leavesAPlayableVideoToTheLastFrame) {
     TempDir dir;
-    const fs::path video = dir.path() / "out.avi";
+    const fs::path video = dir.path() / (std::string("out") + GetParam());
     const pid_t child = fork();
     ASSERT_GE(child, 0);
     if (child == 0) {
@@ -79,10 +82,13 @@ TEST(RunCommand, sigtermDuringReplayLeavesAPlayableVideoToTheLastFrame) {
     const std::size_t written = frames();
     EXPECT_LT(written, 2000u);
 
-    cv::VideoCapture capture(video.string());
+    cv::VideoCapture capture(video.string(), cv::CAP_FFMPEG);
     ASSERT_TRUE(capture.isOpened());
     std::size_t decoded = 0;
     cv::Mat frame;
     while (capture.read(frame)) ++decoded;
     EXPECT_EQ(decoded, written) << "every composited frame is in the video, the last one too";
 }
+
+INSTANTIATE_TEST_SUITE_P(Files, SigtermDuringReplay, ::testing::Values(".avi", ".mp4", ".mkv"),
+                         [](const auto& info) { return std::string(info.param + 1); });
