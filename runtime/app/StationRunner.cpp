@@ -119,6 +119,7 @@ bool StationRunner::step() {
     for (std::size_t i = 0; i < t.triggers().size(); ++i)
         triggers.push_back({t.triggers()[i].name, t.counts(i).fired, t.holds(i)});
     metrics_.setZones(station_->people().zones, std::move(triggers));
+    metrics_.setStreams(station_->streamStatus());
     ++frames_;
     // Start to start, so a window's vsync wait and presentation count.
     metrics_.recordFrame(lastStepStart_ < 0.0 ? station_->stats().totalMs : (start - lastStepStart_) * 1000.0);

@@ -172,6 +172,7 @@ void readOutput(YamlMap& root, OutputConfig& out) {
     o.text("video_fourcc", out.videoFourcc);
     if (out.videoFourcc.size() != 4) o.report().add(o.mark(), "output.video_fourcc: expected 4 characters, e.g. MJPG");
     readEncoding(o, "encoding", out.videoEncoding);
+    readStreams(o, out.streams);
     o.path("matte_dir", out.matteDir, false);
     o.path("events", out.events, false);
     o.boolean("window", out.window);

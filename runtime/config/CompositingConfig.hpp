@@ -7,6 +7,7 @@
 //
 //   readCompositingConfig(root, cfg.compositing);   // inside loadStationConfig
 
+#include "runtime/config/StreamConfig.hpp"
 #include "video/matte/MatteSpec.hpp"
 #include "video/sources/SourceSpec.hpp"
 #include "video/streams/H264Settings.hpp"
@@ -15,6 +16,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <vector>
 
 namespace arcomp {
 
@@ -66,9 +68,10 @@ struct OutputConfig {
     std::string videoFileAt;  // "station.yaml:5:3", for what only the machine can say (no encoder)
     std::string videoFourcc = "MJPG";
     H264Settings videoEncoding{};
-    std::filesystem::path matteDir;  // the matte's alpha per frame, for inspection; empty: none
-    std::filesystem::path events;    // the zone events as JSON Lines (runtime/station/EventLog.hpp); empty: none
-    bool window = false;             // for `arcomp run`; replay ignores it
+    std::vector<StreamConfig> streams;  // SRT and RTSP out, beside the files
+    std::filesystem::path matteDir;     // the matte's alpha per frame, for inspection; empty: none
+    std::filesystem::path events;       // the zone events as JSON Lines (runtime/station/EventLog.hpp); empty: none
+    bool window = false;                // for `arcomp run`; replay ignores it
 };
 
 struct CompositingConfig {

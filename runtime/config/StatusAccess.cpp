@@ -15,24 +15,32 @@ bool isLoopbackAddress(const std::string& ipv4) {
     return inet_pton(AF_INET, ipv4.c_str(), &address) == 1 && (ntohl(address.s_addr) >> 24) == 127;
 }
 
-std::string readBearerToken(const std::filesystem::path& file) {
+std::string readSecretLine(const std::filesystem::path& file, const std::string& what, std::size_t minLength,
+                           std::size_t maxLength) {
     std::ifstream in(file, std::ios::binary);
-    if (!in) throw BadInput(file.string(), "", "cannot read the status token file");
+    if (!in) throw BadInput(file.string(), "", "cannot read the " + what + " file");
     std::string line;
     std::getline(in, line);
     const auto space = [](unsigned char c) { return std::isspace(c) != 0; };
     line.erase(std::find_if_not(line.rbegin(), line.rend(), space).base(), line.end());
     line.erase(line.begin(), std::find_if_not(line.begin(), line.end(), space));
     if (line.empty())
-        throw BadInput(file.string(), "line 1", "the status token file is empty; expected a token on its first line");
-    if (line.size() < kMinBearerTokenLength)
+        throw BadInput(file.string(), "line 1", "the " + what + " file is empty; expected it on its first line");
+    if (line.size() < minLength || line.size() > maxLength)
         throw BadInput(file.string(), "line 1",
-                       "the status token is " + std::to_string(line.size()) + " characters; expected at least " +
-                           std::to_string(kMinBearerTokenLength) + " (e.g. from `openssl rand -hex 32`)");
+                       "the " + what + " is " + std::to_string(line.size()) + " characters; expected " +
+                           (line.size() < minLength ? "at least " + std::to_string(minLength)
+                                                    : "at most " + std::to_string(maxLength)) +
+                           " (e.g. from `openssl rand -hex " +
+                           std::to_string(std::min<std::size_t>(32, maxLength / 2)) + "`)");
     if (std::any_of(line.begin(), line.end(), [](unsigned char c) { return c < 0x21 || c > 0x7e; }))
         throw BadInput(file.string(), "line 1",
-                       "the status token holds a space or a non-ASCII character; expected printable ASCII");
+                       "the " + what + " holds a space or a non-ASCII character; expected printable ASCII");
     return line;
+}
+
+std::string readBearerToken(const std::filesystem::path& file) {
+    return readSecretLine(file, "status token", kMinBearerTokenLength, 4096);
 }
 
 bool bearerTokenMatches(std::string_view authorization, std::string_view token) {

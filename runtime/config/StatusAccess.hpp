@@ -21,6 +21,11 @@ bool isLoopbackAddress(const std::string& ipv4);
 // naming the file when it cannot be read, is empty, or is shorter than
 // kMinBearerTokenLength (guessable).
 std::string readBearerToken(const std::filesystem::path& file);
+// The first line of a secret's file, trimmed, `minLength` to `maxLength`
+// printable ASCII characters; `what` names it in the errors ("status
+// token", "SRT passphrase"). Throws BadInput naming the file.
+std::string readSecretLine(const std::filesystem::path& file, const std::string& what, std::size_t minLength,
+                           std::size_t maxLength);
 constexpr std::size_t kMinBearerTokenLength = 16;
 
 // True when an Authorization header's value is "Bearer <token>" (the scheme

@@ -75,6 +75,11 @@ void StationMetrics::setZones(const std::vector<ZoneCount>& zones, std::vector<T
     triggers_ = std::move(triggers);
 }
 
+void StationMetrics::setStreams(std::vector<StreamStatus> streams) {
+    std::lock_guard lock(mutex_);
+    streams_ = std::move(streams);
+}
+
 void StationMetrics::recordCue(bool accepted) {
     std::lock_guard lock(mutex_);
     ++(accepted ? cuesAccepted_ : cuesRefused_);
@@ -129,6 +134,18 @@ std::string StationMetrics::statusJson() const {
     for (const TriggerStatus& t : triggers_)
         triggers.push_back({{"name", t.name}, {"fired", t.fired}, {"holds", t.holds}});
     status["cues"] = {{"accepted", cuesAccepted_}, {"refused", cuesRefused_}};
+    nlohmann::ordered_json& streams = status["streams"] = nlohmann::ordered_json::array();
+    for (const StreamStatus& st : streams_)
+        streams.push_back({{"name", st.name},
+                           {"target", st.target},
+                           {"state", st.state == StreamState::Streaming ? "streaming" : "retrying"},
+                           {"frames", st.framesIn},
+                           {"dropped", st.dropped},
+                           {"packets_dropped", st.packetsDropped},
+                           {"reconnects", st.reconnects},
+                           {"kbps", st.kbps},
+                           {"last_error", st.lastError},
+                           {"warning", st.warning}});
     status["errors"] = errors_;
     status["last_errors"] = lastErrors_;
     // A device name or an OS message that is not UTF-8 must not cost the
@@ -204,6 +221,25 @@ std::string StationMetrics::prometheusText() const {
          "# TYPE arcomp_cues_total counter\n"
       << "arcomp_cues_total{result=\"accepted\"} " << cuesAccepted_ << '\n'
       << "arcomp_cues_total{result=\"refused\"} " << cuesRefused_ << '\n';
+    const auto streamLabel = [](const StreamStatus& st) { return "{stream=\"" + labelValue(st.name) + "\"} "; };
+    const auto streamFamily = [&](const char* name, const char* type, const char* help, auto value) {
+        s << "# HELP " << name << ' ' << help << "\n# TYPE " << name << ' ' << type << '\n';
+        for (const StreamStatus& st : streams_) s << name << streamLabel(st) << value(st) << '\n';
+    };
+    streamFamily("arcomp_stream_up", "gauge", "1 while a stream's pipeline runs, 0 while it waits to retry.",
+                 [](const StreamStatus& st) { return st.state == StreamState::Streaming ? 1 : 0; });
+    streamFamily("arcomp_stream_frames_total", "counter", "Composited frames given to each stream.",
+                 [](const StreamStatus& st) { return st.framesIn; });
+    streamFamily("arcomp_stream_dropped_frames_total", "counter",
+                 "Frames a stream did not take: its encoder queue full, or no pipeline running.",
+                 [](const StreamStatus& st) { return st.dropped; });
+    streamFamily("arcomp_stream_packets_dropped_total", "counter",
+                 "Packets the protocol gave up as too late (SRT), as when a receiver stops reading.",
+                 [](const StreamStatus& st) { return st.packetsDropped; });
+    streamFamily("arcomp_stream_reconnects_total", "counter", "Pipelines built again after a failure.",
+                 [](const StreamStatus& st) { return st.reconnects; });
+    streamFamily("arcomp_stream_bitrate_kbps", "gauge", "Encoded bitrate over about the last second.",
+                 [](const StreamStatus& st) { return st.kbps; });
     s << "# HELP arcomp_errors_total Errors the station reported and recovered from.\n"
          "# TYPE arcomp_errors_total counter\n"
       << "arcomp_errors_total " << errors_ << '\n';

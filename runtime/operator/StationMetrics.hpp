@@ -10,11 +10,13 @@
 //   metrics.setCamera("front", {SourceStatus::Streaming, ""}, drops);
 //   metrics.setPeople(station.people().people.size(), station.showControl().outputs());
 //   metrics.setZones(station.people().zones, triggers);     // /status zones, arcomp_zone_people{zone}
+//   metrics.setStreams(station.streamStatus());              // /status streams, arcomp_stream_*{stream}
 //   std::string text = metrics.prometheusText();
 
 #include "runtime/people/PeopleFrame.hpp"
 #include "runtime/showcontrol/ShowControl.hpp"
 #include "video/sources/SourceStatus.hpp"
+#include "video/streams/StreamOutputs.hpp"
 
 #include <array>
 #include <chrono>
@@ -50,6 +52,8 @@ public:
     void setPeople(std::size_t people, std::vector<OutputStatus> outputs);
     // This frame's zones with their occupancy, and the triggers.
     void setZones(const std::vector<ZoneCount>& zones, std::vector<TriggerStatus> triggers);
+    // Each output stream's state, bitrate, drops and reconnects.
+    void setStreams(std::vector<StreamStatus> streams);
     // A cue from show control, done or refused (a sender not allowed, a malformed packet, an unknown object).
     void recordCue(bool accepted);
     void recordError(std::string message);
@@ -82,6 +86,7 @@ private:
     std::vector<OutputStatus> outputs_;
     std::vector<ZoneCount> zones_;
     std::vector<TriggerStatus> triggers_;
+    std::vector<StreamStatus> streams_;
     std::uint64_t cuesAccepted_ = 0, cuesRefused_ = 0;
     std::deque<std::string> lastErrors_;  // newest last, the last ten
     std::uint64_t errors_ = 0;

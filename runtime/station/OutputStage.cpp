@@ -28,6 +28,11 @@ std::string numbered(const char* stem, std::uint64_t index, const char* extensio
 OutputStage::OutputStage(const OutputConfig& config, double fps, glm::ivec2 size, FrameReadback::Mode readback,
                          WhenFull recording)
     : config_(config), readback_(readback), fps_(fps), size_(size) {
+    if (!config_.streams.empty()) {
+        std::vector<StreamSpec> specs;
+        for (const StreamConfig& s : config_.streams) specs.push_back(s.spec);
+        streams_ = std::make_unique<StreamOutputs>(specs, RawVideo{size.x, size.y, fps});
+    }
     if (config_.videoFile.empty()) return;
     if (isH264Container(config_.videoFile))
         recording_ = openH264Recording(config_.videoFile, config_.videoEncoding, {size.x, size.y, fps}, recording);
@@ -37,10 +42,17 @@ OutputStage::OutputStage(const OutputConfig& config, double fps, glm::ivec2 size
 }
 
 void OutputStage::preflight(const OutputConfig& config) {
-    if (!isH264Container(config.videoFile)) return;
-    if (const EncoderChoice c = chooseH264Encoder(config.videoEncoding.encoder); c.element.empty())
-        throw BadInput(config.videoFileAt.empty() ? config.videoFile.string() : config.videoFileAt, "output.video_file",
-                       c.warning);
+    if (isH264Container(config.videoFile))
+        if (const EncoderChoice c = chooseH264Encoder(config.videoEncoding.encoder); c.element.empty())
+            throw BadInput(config.videoFileAt.empty() ? config.videoFile.string() : config.videoFileAt,
+                           "output.video_file", c.warning);
+    for (const StreamConfig& s : config.streams)
+        if (const std::string missing = missingStreamElements(s.spec); !missing.empty())
+            throw BadInput(s.at, "output.streams " + s.spec.name, missing);
+}
+
+std::vector<StreamStatus> OutputStage::streamStatus() const {
+    return streams_ ? streams_->status() : std::vector<StreamStatus>{};
 }
 
 template <class Step>
@@ -56,7 +68,7 @@ void OutputStage::counted(Step&& step) {
 void OutputStage::write(const RenderTarget& frame, const cv::Mat& person) {
     const std::uint64_t index = next_++;
     counted([&] { writeMatte(index, person); });
-    if (config_.pngDir.empty() && !video_ && !recording_ && snapshots_.empty() && clips_.empty()) return;
+    if (config_.pngDir.empty() && !video_ && !recording_ && !streams_ && snapshots_.empty() && clips_.empty()) return;
     counted([&] {
         const std::uint64_t before = std::exchange(inFlight_, index);
         if (readback_.read(frame, image_)) writeFrame(readback_.latencyFrames() == 0 ? index : before, image_);
@@ -80,6 +92,7 @@ void OutputStage::clip(const std::filesystem::path& folder, double seconds) {
 void OutputStage::writeFrame(std::uint64_t index, const Image& image) {
     if (!config_.pngDir.empty()) counted([&] { writePng(config_.pngDir / numbered("frame", index), image); });
     if (recording_) record(image);
+    if (streams_ && image.width == size_.x && image.height == size_.y) streams_->push(image.rgba.data());
     const bool toVideo =
         video_ || std::any_of(clips_.begin(), clips_.end(), [&](const Clip& c) { return c.index <= index; });
     if (toVideo) {
@@ -150,6 +163,7 @@ void OutputStage::finish() {
         recording_->close();
         noteRecordingFailure();
     }
+    if (streams_) streams_->close();
     // A clip cut short by the end of the input keeps what it has.
     for (Clip& c : clips_)
         if (c.file) {

@@ -1,10 +1,11 @@
 #pragma once
-// The frame's files: the composited frame as numbered PNGs and/or one video
+// The frame's outputs: the composited frame as numbered PNGs and/or one video
 // file, and the matte's alpha as numbered PNGs for inspection. A video file
 // in MP4 or Matroska is H.264 through GStreamer (H264Recording): encoded on
 // GStreamer's threads; live, a frame the encoder has no room for is dropped
 // and counted (recordingDrops()) rather than waited for, while a replay
-// (WhenFull::Wait) keeps every frame. On a GPU the
+// (WhenFull::Wait) keeps every frame. Streams (SRT) get the same frame and
+// never wait, in replay either: a receiver is not a file (StreamOutputs). On a GPU the
 // frame is read back asynchronously (FrameReadback): its files are written
 // one call later, and finish() writes the last. A write that
 // fails (a full disk, a folder gone read-only) is counted and kept for the
@@ -25,6 +26,7 @@
 #include "runtime/gl/RenderTarget.hpp"
 #include "video/sources/VideoFileWriter.hpp"
 #include "video/streams/H264Pipeline.hpp"
+#include "video/streams/StreamOutputs.hpp"
 
 #include <glm/glm.hpp>
 #include <opencv2/core/mat.hpp>
@@ -43,8 +45,9 @@ public:
                 FrameReadback::Mode readback = FrameReadback::Mode::Auto, WhenFull recording = WhenFull::Drop);
 
     // What only this machine can say about the outputs: an H.264 recording
-    // without any encoder. Throws BadInput naming the config's place and
-    // the package to install.
+    // or a stream without any encoder, a stream's GStreamer element
+    // missing. Throws BadInput naming the config's place and the package
+    // to install.
     static void preflight(const OutputConfig& config);
 
     // Files are numbered from here: a reloaded station continues where the
@@ -63,6 +66,8 @@ public:
     std::uint64_t failures() const { return failures_; }
     // Frames the H.264 recording had no room for; 0 without one.
     std::uint64_t recordingDrops() const { return recording_ ? recording_->dropped() : 0; }
+    // Each stream's state and counts (output.streams); empty without any.
+    std::vector<StreamStatus> streamStatus() const;
     const std::string& lastError() const { return lastError_; }
 
 private:
@@ -88,6 +93,7 @@ private:
     OutputConfig config_;
     std::unique_ptr<VideoFileWriter> video_;
     std::unique_ptr<H264Pipeline> recording_;
+    std::unique_ptr<StreamOutputs> streams_;
     bool recordingFailureCounted_ = false;
     FrameReadback readback_;
     std::uint64_t inFlight_ = 0;  // the index of the frame readback_ holds

@@ -124,6 +124,8 @@ public:
     std::uint64_t inputDrops() const { return capture_.drops(); }
 
     const FrameStats& stats() const { return stats_; }
+    // Each output stream's state and counts (output.streams).
+    std::vector<StreamStatus> streamStatus() const { return outputs_.streamStatus(); }
     const RenderTarget& compositedFrame() const { return compositor_->output(); }
     const View& view() const { return view_; }
     // What the last frame's select (and budget) chose to draw.

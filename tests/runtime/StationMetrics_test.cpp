@@ -115,4 +115,37 @@ TEST(StationMetrics, zonesTriggersAndCuesShowInBothViews) {
     EXPECT_NE(json.find(R"("cues":{"accepted":1,"refused":2})"), std::string::npos) << json;
 }
 
+TEST(StationMetrics, eachStreamsStateBitrateDropsAndReconnectsShowInBothViews) {
+    StationMetrics metrics;
+    StreamStatus obs;
+    obs.name = "obs";
+    obs.target = "srt caller to 10.0.0.2:9000";
+    obs.framesIn = 500;
+    obs.dropped = 12;
+    obs.packetsDropped = 40;
+    obs.reconnects = 2;
+    obs.kbps = 3950.5;
+    StreamStatus lobby = obs;
+    lobby.name = "lobby";
+    lobby.state = StreamState::Retrying;
+    lobby.lastError = "lobby: srtsink0: Connection does not exist";
+    metrics.setStreams({obs, lobby});
+    const std::string text = metrics.prometheusText();
+    EXPECT_NE(text.find("arcomp_stream_up{stream=\"obs\"} 1\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("arcomp_stream_up{stream=\"lobby\"} 0\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("arcomp_stream_frames_total{stream=\"obs\"} 500\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("arcomp_stream_dropped_frames_total{stream=\"obs\"} 12\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("arcomp_stream_packets_dropped_total{stream=\"obs\"} 40\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("arcomp_stream_reconnects_total{stream=\"obs\"} 2\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("arcomp_stream_bitrate_kbps{stream=\"obs\"} 3950.5\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("# TYPE arcomp_stream_reconnects_total counter\n"), std::string::npos) << text;
+    const std::string json = metrics.statusJson();
+    EXPECT_NE(json.find(R"({"name":"obs","target":"srt caller to 10.0.0.2:9000","state":"streaming","frames":500,)"
+                        R"("dropped":12,"packets_dropped":40,"reconnects":2,"kbps":3950.5,"last_error":"")"),
+              std::string::npos)
+        << json;
+    EXPECT_NE(json.find(R"("state":"retrying")"), std::string::npos) << json;
+    EXPECT_NE(json.find("Connection does not exist"), std::string::npos) << json;
+}
+
 }  // namespace arcomp

@@ -7,7 +7,9 @@
 #include "runtime/app/StationRunner.hpp"
 #include "runtime/gl/GlContext.hpp"
 #include "runtime/operator/StatusServer.hpp"
+#include "tests/support/FreePort.hpp"
 #include "tests/support/TempDir.hpp"
+#include "video/streams/GstRuntime.hpp"
 
 #include <gtest/gtest.h>
 #include <httplib.h>
@@ -134,6 +136,40 @@ TEST(StationRunner, reloadSwapsTheSceneAtAFrameBoundaryAndKeepsTheInput) {
     EXPECT_EQ(runner.reloads(), 1u);
     EXPECT_EQ(centre(), now);
     EXPECT_NE(runner.metrics().statusJson().find("reload refused"), std::string::npos);
+}
+
+// Issue #60: a stream's counts reach /status and /metrics, and a reload
+// gives the listening port back before the new station takes it again.
+TEST(StationRunner, aStreamShowsInStatusAndMetricsAndKeepsItsListeningPortAcrossAReload) {
+    if (!hasGstElement("srtsink") || !hasGstElement("x264enc"))
+        GTEST_SKIP() << "GStreamer's srtsink or x264enc missing";
+    auto ctx = HeadlessContext::create(GlRequest::Auto);
+    test::TempDir dir;
+    const std::string port = std::to_string(test::freeLoopbackPort(SOCK_DGRAM));
+    const fs::path file = dir.write(
+        "station.yaml", std::string(kRunnerStation) +
+                            "output:\n  streams:\n    - name: lobby\n      url: srt://:" + port + "?mode=listener\n");
+    StationRunner runner(withStatus(file), nullptr, [](const StationConfig&) {
+        return StationInput::fromReplay(std::make_unique<FailingCamera>(100), 30.0);
+    });
+    for (int i = 0; i < 5; ++i) ASSERT_TRUE(runner.step());
+    httplib::Client client("127.0.0.1", runner.statusPort());
+    const std::string metrics = client.Get("/metrics")->body;
+    EXPECT_NE(metrics.find("arcomp_stream_up{stream=\"lobby\"} 1"), std::string::npos) << metrics;
+    EXPECT_NE(metrics.find("arcomp_stream_frames_total{stream=\"lobby\"} 5"), std::string::npos) << metrics;
+    const std::string status = client.Get("/status")->body;
+    EXPECT_NE(status.find(R"("streams":[{"name":"lobby","target":"srt listener on 127.0.0.1:)" + port),
+              std::string::npos)
+        << status;
+
+    requestReload();  // the same config: the new station listens on the same port
+    for (int i = 0; i < 3; ++i) ASSERT_TRUE(runner.step());
+    EXPECT_EQ(runner.reloads(), 1u) << runner.metrics().statusJson();
+    EXPECT_EQ(runner.metrics().statusJson().find("reload failed"), std::string::npos) << runner.metrics().statusJson();
+    // (The file has no status section: the reloaded station has no endpoint.)
+    const std::string after = runner.metrics().prometheusText();
+    EXPECT_NE(after.find("arcomp_stream_up{stream=\"lobby\"} 1"), std::string::npos) << after;
+    EXPECT_NE(after.find("arcomp_stream_frames_total{stream=\"lobby\"} 3"), std::string::npos) << after;
 }
 
 // A command-line override (arcomp replay --video) holds across reloads: the

@@ -6,9 +6,13 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/Shell.hpp"
+#include <arpa/inet.h>
 #include <array>
 #include <cstdio>
+#include <netinet/in.h>
+#include <sys/socket.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 using arcomp::test::TempDir;
 
@@ -78,6 +82,18 @@ INSTANTIATE_TEST_SUITE_P(
                         "station.yaml:4:5: output.encoding.size: expected even width and height"},
         ConfigErrorCase{"encodingBitrate", "output:\n  video_file: show.mp4\n  encoding: {bitrate_kbps: 5}\n",
                         "output.encoding.bitrate_kbps: 5 is out of range"},
+        ConfigErrorCase{"streamUrl", "output:\n  streams:\n    - name: obs\n      url: udp://10.0.0.2:9000\n",
+                        "station.yaml:4:12: output.streams[0].url: udp://10.0.0.2:9000: expected srt://host:port or "
+                        "rtsp://host:port/name"},
+        ConfigErrorCase{"streamPort", "output:\n  streams:\n    - name: obs\n      url: srt://10.0.0.2:99999\n",
+                        "output.streams[0].url: srt://10.0.0.2:99999: expected a port from 1 to 65535"},
+        ConfigErrorCase{"streamListenerBeyondLoopback",
+                        "output:\n  streams:\n    - name: lobby\n      url: srt://0.0.0.0:9000?mode=listener\n",
+                        "station.yaml:3:7: output.streams[0].url: a listener on 0.0.0.0 is beyond loopback, so it "
+                        "needs passphrase_file"},
+        ConfigErrorCase{"streamNamesTwice",
+                        "output:\n  streams:\n    - {name: a, url: 'srt://h:1'}\n    - {name: a, url: 'srt://h:2'}\n",
+                        "output.streams[1].name: a is used by another stream"},
         ConfigErrorCase{"statusTokenFileMissing", "status:\n  port: 9464\n  bind: 0.0.0.0\n  token_file: token.txt\n",
                         "status.token_file: file '"}),
     [](const auto& info) { return std::string(info.param.name); });
@@ -145,7 +161,36 @@ TEST(CheckCommand, anH264RecordingWithoutAnEncoderIsRefusedNamingThePackage) {
                          "missing (install gstreamer1.0-plugins-ugly)"),
               std::string::npos)
         << r.out;
+    const auto stream = dir.write(
+        "stream.yaml",
+        "scene:\n  objects:\n    - shape: box\noutput:\n  streams:\n    - {name: obs, url: 'srt://10.0.0.2:9000'}\n");
+    const auto s = arcomp::test::shell(bare + ARCOMP_BINARY + " check " + stream.string());
+    EXPECT_EQ(s.code, 2) << s.out;
+    EXPECT_NE(s.out.find("stream.yaml:6:24: output.streams obs: no H.264 encoder"), std::string::npos) << s.out;
     const auto avi = dir.write("avi.yaml", "scene:\n  objects:\n    - shape: box\noutput:\n  video_file: show.avi\n");
     EXPECT_EQ(arcomp::test::shell(bare + ARCOMP_BINARY + " check " + avi.string()).code, 0)
         << "OpenCV's writer needs no GStreamer plugin";
+}
+
+// A listening stream whose port another program holds: refused at its URL.
+TEST(CheckCommand, aStreamListeningOnAPortTakenIsRefusedAtItsUrl) {
+    TempDir dir;
+    const int taken = socket(AF_INET, SOCK_DGRAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    ASSERT_EQ(bind(taken, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    socklen_t length = sizeof address;
+    getsockname(taken, reinterpret_cast<sockaddr*>(&address), &length);
+    const std::string port = std::to_string(ntohs(address.sin_port));
+    const auto config = dir.write("station.yaml", "scene:\n  objects:\n    - shape: box\noutput:\n  streams:\n"
+                                                  "    - name: lobby\n      url: srt://:" +
+                                                      port + "?mode=listener\n");
+    const auto r = check(config);
+    EXPECT_EQ(r.code, 2) << r.out;
+    EXPECT_NE(r.out.find("station.yaml:7:12: output.streams lobby.url: port " + port + " on 127.0.0.1 is taken"),
+              std::string::npos)
+        << r.out;
+    close(taken);
+    EXPECT_EQ(check(config).code, 0) << "free again";
 }

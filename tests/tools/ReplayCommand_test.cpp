@@ -13,6 +13,7 @@
 #include "tests/support/BoxStation.hpp"
 #include "tests/support/NumberedFrames.hpp"
 #include "tests/support/Shell.hpp"
+#include "tests/support/VideoPsnr.hpp"
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -114,7 +115,7 @@ TEST(ReplayCommand, mp4OutputIsH264OfEveryCompositedFrameInOrder) {
         std::snprintf(name, sizeof name, "frame-%06d.png", frames);
         const cv::Mat composited = cv::imread((dir.path() / "out" / name).string(), cv::IMREAD_COLOR);
         ASSERT_FALSE(composited.empty()) << name;
-        worst = std::min(worst, cv::PSNR(decoded, composited));
+        worst = std::min(worst, arcomp::test::videoPsnr(decoded, composited));
         ++frames;
     }
     EXPECT_EQ(frames, 30);

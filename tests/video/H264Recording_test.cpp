@@ -6,6 +6,7 @@
 
 #include "tests/support/NumberedFrames.hpp"
 #include "tests/support/TempDir.hpp"
+#include "tests/support/VideoPsnr.hpp"
 #include "video/pixels/VideoError.hpp"
 #include "video/streams/GstRuntime.hpp"
 #include "video/streams/H264Recording.hpp"
@@ -43,7 +44,7 @@ Decoded decode(const std::filesystem::path& file) {
     while (in.read(f)) {
         const int n = test::frameNumberOf(f);
         d.numbers.push_back(n);
-        if (n >= 0) d.worstPsnr = std::min(d.worstPsnr, cv::PSNR(f, test::numberedFrame(n, kSize)));
+        if (n >= 0) d.worstPsnr = std::min(d.worstPsnr, arcomp::test::videoPsnr(f, test::numberedFrame(n, kSize)));
     }
     return d;
 }

@@ -21,6 +21,11 @@ int check(const std::string& file) {
     } catch (const std::exception& e) {
         throw InputError(file, "", e.what());
     }
+    // A listening stream's port, free now: a running station holds its own,
+    // so only the check, not a reload, asks.
+    for (const StreamConfig& s : cfg.compositing.output.streams)
+        if (const std::string why = listenProblem(s.spec); !why.empty())
+            throw InputError(s.at, "output.streams " + s.spec.name + ".url", why);
     World world;  // everything a station would build, voxel files included
     std::vector<std::string> problems;
     buildScene(cfg, world, problems);

@@ -104,6 +104,11 @@ int replay(const ReplayOptions& o) {
     if (!runner.config().compositing.output.videoFile.empty())
         std::cout << " and " << runner.config().compositing.output.videoFile.string();
     std::cout << "\n";
+    // A stream drops what its receiver cannot take, in replay too: said, not failed.
+    for (const StreamStatus& s : station.streamStatus())
+        std::cout << "stream " << s.name << " (" << s.target << "): " << s.framesIn << " frames, " << s.dropped
+                  << " dropped, " << s.reconnects << " reconnects, " << s.bytes / 1024 << " KiB encoded"
+                  << (s.lastError.empty() ? "" : "; last error: " + s.lastError) << "\n";
     if (runner.outputFailures() > 0) {
         // Every frame was composited; some files are missing. The ones written are whole.
         std::cerr << "error: " << runner.outputFailures() << " of " << done

@@ -7,7 +7,9 @@
 #include <gst/gst.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 namespace arcomp {
 
@@ -227,7 +229,7 @@ std::uint64_t H264Pipeline::sinkStat(const char* field) const {
     return total;
 }
 
-void H264Pipeline::close(double seconds) {
+void H264Pipeline::close(double seconds, double lingerSeconds) {
     if (pipeline_ == nullptr || state_ == PipelineState::Closed) return;
     if (state_ == PipelineState::Running && seconds > 0.0) {
         gst_app_src_end_of_stream(GST_APP_SRC(source_));
@@ -235,7 +237,10 @@ void H264Pipeline::close(double seconds) {
         const auto wait = static_cast<GstClockTime>(seconds * static_cast<double>(GST_SECOND));
         if (GstMessage* m = gst_bus_timed_pop_filtered(
                 bus, wait, static_cast<GstMessageType>(GST_MESSAGE_EOS | GST_MESSAGE_ERROR))) {
-            if (GST_MESSAGE_TYPE(m) == GST_MESSAGE_ERROR) fail(messageText(m));
+            if (GST_MESSAGE_TYPE(m) == GST_MESSAGE_ERROR)
+                fail(messageText(m));
+            else if (lingerSeconds > 0.0)
+                std::this_thread::sleep_for(std::chrono::duration<double>(lingerSeconds));
             gst_message_unref(m);
         } else {
             fail("the stream did not finish within " + std::to_string(seconds) + " s; stopped");

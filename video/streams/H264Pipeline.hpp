@@ -65,8 +65,11 @@ public:
     // Reads the bus without waiting; a failure moves state() to Failed.
     void poll();
     // Ends the stream and waits up to `seconds` for the tail to finish it
-    // (a file's index, a last packet). Safe to call twice; never throws.
-    void close(double seconds = 5.0);
+    // (a file's index, a last packet), then `lingerSeconds` more before the
+    // tail's sockets close: a network sink has sent its last packets once
+    // it has rendered them, but they may still need to be sent again.
+    // Safe to call twice; never throws.
+    void close(double seconds = 5.0, double lingerSeconds = 0.0);
 
     PipelineState state() const { return state_; }
     const std::string& error() const { return error_; }
