@@ -34,7 +34,7 @@ fs::path streamingStation(const TempDir& dir, const fs::path& input, int port) {
                                          std::to_string(port) + "\n");
 }
 
-std::size_t pngsIn(const fs::path& dir) {
+std::size_t pngsWrittenIn(const fs::path& dir) {
     std::size_t n = 0;
     for (const auto& e : fs::directory_iterator(dir)) n += e.path().extension() == ".png";
     return n;
@@ -74,7 +74,7 @@ TEST(StreamReplay, withNoReceiverEveryFrameIsStillWrittenAndTheDropsAreSaid) {
     const auto r = arcomp::test::arcompCommand("replay " + streamingStation(dir, input, nobody).string() + " --out " +
                                                (dir.path() / "out").string());
     ASSERT_EQ(r.code, 0) << r.out;
-    EXPECT_EQ(pngsIn(dir.path() / "out"), 60u);
+    EXPECT_EQ(pngsWrittenIn(dir.path() / "out"), 60u);
     unsigned frames = 0, dropped = 0;
     const auto line = r.out.find("stream screen (");
     ASSERT_NE(line, std::string::npos) << r.out;
