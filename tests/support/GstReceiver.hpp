@@ -4,9 +4,11 @@
 // then parsed, decoded by libav and handed over as BGR frames. A receiver
 // made with Reading::Stalled never takes a frame from its sink, so that
 // once its few buffers are full it stops reading the network, as a
-// receiver that hangs does.
+// receiver that hangs does. GStreamer 1.22's srtsrc waits for packets
+// without end by default, and stopping it then can hang: give it
+// `poll-timeout=100`.
 //
-//   test::GstReceiver rx("srtsrc uri=srt://127.0.0.1:9000?mode=listener ! tsdemux");
+//   test::GstReceiver rx("srtsrc poll-timeout=100 uri=srt://127.0.0.1:9000?mode=listener ! tsdemux");
 //   rx.waitForFrames(20);
 //   for (const cv::Mat& f : rx.frames()) ...
 

@@ -66,7 +66,8 @@ const std::string kTail = " ! tsdemux";
 TEST(SrtStream, aCallerReachesAListeningReceiver) {
     skipWithoutSrt();
     const int port = test::freeLoopbackPort(SOCK_DGRAM);
-    test::GstReceiver rx("srtsrc uri=srt://127.0.0.1:" + std::to_string(port) + "?mode=listener" + kTail);
+    test::GstReceiver rx("srtsrc poll-timeout=100 uri=srt://127.0.0.1:" + std::to_string(port) + "?mode=listener" +
+                         kTail);
     StreamOutputs out({srt("srt://127.0.0.1:" + std::to_string(port))}, {kPicture.width, kPicture.height, 25.0});
     sendFrames(out, 0, 60);
     ASSERT_TRUE(rx.waitForFrames(20)) << rx.count() << " frames came";
@@ -84,7 +85,7 @@ TEST(SrtStream, aListenerServesACallingReceiverAndNeedsItsPassphrase) {
     spec.passphrase = "lobby-screen-key";
     EXPECT_EQ(spec.host, "127.0.0.1") << "a listener binds to loopback unless told";
     StreamOutputs out({spec}, {kPicture.width, kPicture.height, 25.0});
-    const std::string uri = "srtsrc uri=srt://127.0.0.1:" + std::to_string(port);
+    const std::string uri = "srtsrc poll-timeout=100 uri=srt://127.0.0.1:" + std::to_string(port);
     test::GstReceiver stranger(uri + " passphrase=not-the-key-at-all" + kTail);
     sendFrames(out, 0, 40);
     EXPECT_EQ(stranger.count(), 0u) << "a receiver without the passphrase got frames";
@@ -99,7 +100,8 @@ TEST(SrtStream, aListenerServesACallingReceiverAndNeedsItsPassphrase) {
 TEST(SrtStream, aReceiverThatQuitsAndComesBackGetsTheStreamAgain) {
     skipWithoutSrt();
     const int port = test::freeLoopbackPort(SOCK_DGRAM);
-    const std::string listen = "srtsrc uri=srt://127.0.0.1:" + std::to_string(port) + "?mode=listener" + kTail;
+    const std::string listen =
+        "srtsrc poll-timeout=100 uri=srt://127.0.0.1:" + std::to_string(port) + "?mode=listener" + kTail;
     auto first = std::make_unique<test::GstReceiver>(listen);
     StreamOutputs out({srt("srt://127.0.0.1:" + std::to_string(port))}, {kPicture.width, kPicture.height, 25.0});
     sendFrames(out, 0, 40);
