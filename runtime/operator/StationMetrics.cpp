@@ -143,6 +143,7 @@ std::string StationMetrics::statusJson() const {
                            {"dropped", st.dropped},
                            {"packets_dropped", st.packetsDropped},
                            {"reconnects", st.reconnects},
+                           {"clients", st.clients},
                            {"kbps", st.kbps},
                            {"last_error", st.lastError},
                            {"warning", st.warning}});
@@ -238,6 +239,8 @@ std::string StationMetrics::prometheusText() const {
                  [](const StreamStatus& st) { return st.packetsDropped; });
     streamFamily("arcomp_stream_reconnects_total", "counter", "Pipelines built again after a failure.",
                  [](const StreamStatus& st) { return st.reconnects; });
+    streamFamily("arcomp_stream_clients", "gauge", "RTSP clients playing a stream now (0 for SRT).",
+                 [](const StreamStatus& st) { return st.clients; });
     streamFamily("arcomp_stream_bitrate_kbps", "gauge", "Encoded bitrate over about the last second.",
                  [](const StreamStatus& st) { return st.kbps; });
     s << "# HELP arcomp_errors_total Errors the station reported and recovered from.\n"

@@ -129,7 +129,11 @@ TEST(StationMetrics, eachStreamsStateBitrateDropsAndReconnectsShowInBothViews) {
     lobby.name = "lobby";
     lobby.state = StreamState::Retrying;
     lobby.lastError = "lobby: srtsink0: Connection does not exist";
-    metrics.setStreams({obs, lobby});
+    StreamStatus screen = obs;
+    screen.name = "screen";
+    screen.target = "rtsp server on 127.0.0.1:8554/screen";
+    screen.clients = 3;
+    metrics.setStreams({obs, lobby, screen});
     const std::string text = metrics.prometheusText();
     EXPECT_NE(text.find("arcomp_stream_up{stream=\"obs\"} 1\n"), std::string::npos) << text;
     EXPECT_NE(text.find("arcomp_stream_up{stream=\"lobby\"} 0\n"), std::string::npos) << text;
@@ -139,12 +143,16 @@ TEST(StationMetrics, eachStreamsStateBitrateDropsAndReconnectsShowInBothViews) {
     EXPECT_NE(text.find("arcomp_stream_reconnects_total{stream=\"obs\"} 2\n"), std::string::npos) << text;
     EXPECT_NE(text.find("arcomp_stream_bitrate_kbps{stream=\"obs\"} 3950.5\n"), std::string::npos) << text;
     EXPECT_NE(text.find("# TYPE arcomp_stream_reconnects_total counter\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("arcomp_stream_clients{stream=\"screen\"} 3\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("arcomp_stream_clients{stream=\"obs\"} 0\n"), std::string::npos) << text;
     const std::string json = metrics.statusJson();
-    EXPECT_NE(json.find(R"({"name":"obs","target":"srt caller to 10.0.0.2:9000","state":"streaming","frames":500,)"
-                        R"("dropped":12,"packets_dropped":40,"reconnects":2,"kbps":3950.5,"last_error":"")"),
-              std::string::npos)
+    EXPECT_NE(
+        json.find(R"({"name":"obs","target":"srt caller to 10.0.0.2:9000","state":"streaming","frames":500,)"
+                  R"("dropped":12,"packets_dropped":40,"reconnects":2,"clients":0,"kbps":3950.5,"last_error":"")"),
+        std::string::npos)
         << json;
     EXPECT_NE(json.find(R"("state":"retrying")"), std::string::npos) << json;
+    EXPECT_NE(json.find(R"("reconnects":2,"clients":3,)"), std::string::npos) << json;
     EXPECT_NE(json.find("Connection does not exist"), std::string::npos) << json;
 }
 

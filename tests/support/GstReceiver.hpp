@@ -4,11 +4,9 @@
 // then parsed, decoded by libav and handed over as BGR frames. A receiver
 // made with Reading::Stalled never takes a frame from its sink, so that
 // once its few buffers are full it stops reading the network, as a
-// receiver that hangs does. GStreamer 1.22's srtsrc waits for packets
-// without end by default, and stopping it then can hang: give it
-// `poll-timeout=100`.
+// receiver that hangs does. srtSource() writes an SRT receiver's source.
 //
-//   test::GstReceiver rx("srtsrc poll-timeout=100 uri=srt://127.0.0.1:9000?mode=listener ! tsdemux");
+//   test::GstReceiver rx(test::srtSource("srt://127.0.0.1:9000?mode=listener"));
 //   rx.waitForFrames(20);
 //   for (const cv::Mat& f : rx.frames()) ...
 
@@ -26,6 +24,15 @@
 namespace arcomp::test {
 
 enum class Reading { Pulls, Stalled };
+
+// srtsrc reading `uri` (then `options`, "passphrase=..."), up to the H.264
+// stream. GStreamer 1.22's srtsrc waits for packets without end unless
+// given a poll timeout, and stopping it then hangs for good; setting its
+// uri puts every other setting back to its default, so the timeout and the
+// options come after the uri.
+inline std::string srtSource(const std::string& uri, const std::string& options = "") {
+    return "srtsrc uri=" + uri + " poll-timeout=100" + (options.empty() ? "" : " " + options) + " ! tsdemux";
+}
 
 class GstReceiver {
 public:

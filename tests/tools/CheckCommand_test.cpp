@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/FreePort.hpp"
 #include "tests/support/Shell.hpp"
 #include <arpa/inet.h>
 #include <array>
@@ -91,6 +92,14 @@ INSTANTIATE_TEST_SUITE_P(
                         "output:\n  streams:\n    - name: lobby\n      url: srt://0.0.0.0:9000?mode=listener\n",
                         "station.yaml:3:7: output.streams[0].url: a listener on 0.0.0.0 is beyond loopback, so it "
                         "needs passphrase_file"},
+        ConfigErrorCase{"rtspBeyondLoopbackWithoutCredentials",
+                        "output:\n  streams:\n    - name: hall\n      url: rtsp://0.0.0.0:8554/hall\n",
+                        "station.yaml:3:7: output.streams[0].url: an RTSP server on 0.0.0.0 is beyond loopback, so "
+                        "it needs credentials_file"},
+        ConfigErrorCase{"rtspCredentialsForSrt",
+                        "output:\n  streams:\n    - name: obs\n      url: srt://10.0.0.2:9000\n"
+                        "      credentials_file: station.yaml\n",
+                        "output.streams[0].credentials_file: only for rtsp://"},
         ConfigErrorCase{"streamNamesTwice",
                         "output:\n  streams:\n    - {name: a, url: 'srt://h:1'}\n    - {name: a, url: 'srt://h:2'}\n",
                         "output.streams[1].name: a is used by another stream"},
@@ -115,6 +124,29 @@ TEST(CheckCommand, aStatusEndpointBeyondLoopbackNeedsAUsableTokenFile) {
     EXPECT_EQ(r.code, 0) << r.out;
     // The token never appears in what check prints.
     EXPECT_EQ(r.out.find("9f86d081884c7d659a2feaa0c55ad015"), std::string::npos) << r.out;
+}
+
+TEST(CheckCommand, anRtspServerBeyondLoopbackNeedsUsableCredentials) {
+    TempDir dir;
+    const auto config = dir.write("station.yaml", "scene:\n  objects:\n    - shape: box\noutput:\n  streams:\n"
+                                                  "    - name: hall\n      url: rtsp://0.0.0.0:" +
+                                                      std::to_string(arcomp::test::freeLoopbackPort(SOCK_STREAM)) +
+                                                      "/hall\n      credentials_file: viewer.txt\n");
+    const std::string file = (dir.path() / "viewer.txt").string();
+    dir.write("viewer.txt", "screen-password-only\n");
+    auto r = check(config);
+    EXPECT_EQ(r.code, 2) << r.out;
+    EXPECT_NE(r.out.find("output.streams[0].credentials_file: " + file + ": line 1: expected user:password"),
+              std::string::npos)
+        << r.out;
+    dir.write("viewer.txt", "screen:short\n");
+    r = check(config);
+    EXPECT_NE(r.out.find(file + ": line 1: the password is 5 characters; expected at least 10"), std::string::npos)
+        << r.out;
+    dir.write("viewer.txt", "screen:a-long-enough-secret\n");
+    r = check(config);
+    EXPECT_EQ(r.code, 0) << r.out;
+    EXPECT_EQ(r.out.find("a-long-enough-secret"), std::string::npos) << "the password is never printed: " << r.out;
 }
 
 TEST(CheckCommand, everyErrorIsListedAtOnce) {
@@ -172,25 +204,32 @@ TEST(CheckCommand, anH264RecordingWithoutAnEncoderIsRefusedNamingThePackage) {
         << "OpenCV's writer needs no GStreamer plugin";
 }
 
-// A listening stream whose port another program holds: refused at its URL.
+// A listening stream (an SRT listener on UDP, an RTSP server on TCP) whose
+// port another program holds: refused at its URL.
 TEST(CheckCommand, aStreamListeningOnAPortTakenIsRefusedAtItsUrl) {
-    TempDir dir;
-    const int taken = socket(AF_INET, SOCK_DGRAM, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    ASSERT_EQ(bind(taken, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
-    socklen_t length = sizeof address;
-    getsockname(taken, reinterpret_cast<sockaddr*>(&address), &length);
-    const std::string port = std::to_string(ntohs(address.sin_port));
-    const auto config = dir.write("station.yaml", "scene:\n  objects:\n    - shape: box\noutput:\n  streams:\n"
-                                                  "    - name: lobby\n      url: srt://:" +
-                                                      port + "?mode=listener\n");
-    const auto r = check(config);
-    EXPECT_EQ(r.code, 2) << r.out;
-    EXPECT_NE(r.out.find("station.yaml:7:12: output.streams lobby.url: port " + port + " on 127.0.0.1 is taken"),
-              std::string::npos)
-        << r.out;
-    close(taken);
-    EXPECT_EQ(check(config).code, 0) << "free again";
+    for (const bool rtsp : {false, true}) {
+        TempDir dir;
+        const int taken = socket(AF_INET, rtsp ? SOCK_STREAM : SOCK_DGRAM, 0);
+        sockaddr_in address{};
+        address.sin_family = AF_INET;
+        address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        ASSERT_EQ(bind(taken, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+        if (rtsp) {
+            ASSERT_EQ(listen(taken, 1), 0);
+        }
+        socklen_t length = sizeof address;
+        getsockname(taken, reinterpret_cast<sockaddr*>(&address), &length);
+        const std::string port = std::to_string(ntohs(address.sin_port));
+        const std::string url = rtsp ? "rtsp://:" + port + "/lobby" : "srt://:" + port + "?mode=listener";
+        const auto config = dir.write("station.yaml", "scene:\n  objects:\n    - shape: box\noutput:\n  streams:\n"
+                                                      "    - name: lobby\n      url: " +
+                                                          url + "\n");
+        const auto r = check(config);
+        EXPECT_EQ(r.code, 2) << r.out;
+        EXPECT_NE(r.out.find("station.yaml:7:12: output.streams lobby.url: port " + port + " on 127.0.0.1 is taken"),
+                  std::string::npos)
+            << r.out;
+        close(taken);
+        EXPECT_EQ(check(config).code, 0) << url << " free again";
+    }
 }

@@ -45,8 +45,7 @@ TEST(StreamReplay, aReceiverGetsTheCompositedFramesInOrder) {
     TempDir dir;
     const fs::path input = arcomp::test::writeNumberedVideo(dir.path() / "numbered.avi", 100, {320, 240});
     const int port = arcomp::test::freeLoopbackPort(SOCK_DGRAM);
-    arcomp::test::GstReceiver rx("srtsrc poll-timeout=100 uri=srt://127.0.0.1:" + std::to_string(port) +
-                                 "?mode=listener ! tsdemux");
+    arcomp::test::GstReceiver rx(arcomp::test::srtSource("srt://127.0.0.1:" + std::to_string(port) + "?mode=listener"));
     const auto r = arcomp::test::arcompCommand("replay " + streamingStation(dir, input, port).string() + " --out " +
                                                (dir.path() / "out").string());
     ASSERT_EQ(r.code, 0) << r.out;

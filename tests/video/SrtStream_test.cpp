@@ -7,7 +7,7 @@
 #include "tests/support/FreePort.hpp"
 #include "tests/support/GstReceiver.hpp"
 #include "tests/support/NumberedFrames.hpp"
-#include "tests/support/VideoPsnr.hpp"
+#include "tests/support/StreamFrames.hpp"
 #include "video/pixels/VideoError.hpp"
 #include "video/streams/GstRuntime.hpp"
 #include "video/streams/StreamOutputs.hpp"
@@ -40,38 +40,14 @@ StreamSpec srt(const std::string& url) {
     return s;
 }
 
-// Frames `from` .. `from + count - 1` at 25 a second, as a station sends them.
-void sendFrames(StreamOutputs& out, int from, int count) {
-    cv::Mat rgba;
-    for (int i = from; i < from + count; ++i) {
-        cv::cvtColor(test::numberedFrame(i, kPicture), rgba, cv::COLOR_BGR2RGBA);
-        out.push(rgba.data);
-        std::this_thread::sleep_for(std::chrono::milliseconds(40));
-    }
-}
-
-// Every frame readable, in increasing order and close to the one sent.
-void expectInOrderAndClose(const std::vector<cv::Mat>& frames) {
-    int last = -1;
-    for (const cv::Mat& f : frames) {
-        const int n = test::frameNumberOf(f);
-        ASSERT_GT(n, last) << "frame numbers go up";
-        EXPECT_GE(arcomp::test::videoPsnr(f, test::numberedFrame(n, kPicture)), 35.0) << "frame " << n;
-        last = n;
-    }
-}
-
-const std::string kTail = " ! tsdemux";
-
 TEST(SrtStream, aCallerReachesAListeningReceiver) {
     skipWithoutSrt();
     const int port = test::freeLoopbackPort(SOCK_DGRAM);
-    test::GstReceiver rx("srtsrc poll-timeout=100 uri=srt://127.0.0.1:" + std::to_string(port) + "?mode=listener" +
-                         kTail);
+    test::GstReceiver rx(test::srtSource("srt://127.0.0.1:" + std::to_string(port) + "?mode=listener"));
     StreamOutputs out({srt("srt://127.0.0.1:" + std::to_string(port))}, {kPicture.width, kPicture.height, 25.0});
-    sendFrames(out, 0, 60);
+    test::sendNumberedFrames(out, 0, 60, kPicture);
     ASSERT_TRUE(rx.waitForFrames(20)) << rx.count() << " frames came";
-    expectInOrderAndClose(rx.frames());
+    test::expectNumberedInOrder(rx.frames(), kPicture);
     const StreamStatus s = out.status().front();
     EXPECT_EQ(s.framesIn, 60u);
     EXPECT_EQ(s.state, StreamState::Streaming) << s.lastError;
@@ -85,38 +61,37 @@ TEST(SrtStream, aListenerServesACallingReceiverAndNeedsItsPassphrase) {
     spec.passphrase = "lobby-screen-key";
     EXPECT_EQ(spec.host, "127.0.0.1") << "a listener binds to loopback unless told";
     StreamOutputs out({spec}, {kPicture.width, kPicture.height, 25.0});
-    const std::string uri = "srtsrc poll-timeout=100 uri=srt://127.0.0.1:" + std::to_string(port);
-    test::GstReceiver stranger(uri + " passphrase=not-the-key-at-all" + kTail);
-    sendFrames(out, 0, 40);
+    const std::string uri = "srt://127.0.0.1:" + std::to_string(port);
+    test::GstReceiver stranger(test::srtSource(uri, "passphrase=not-the-key-at-all"));
+    test::sendNumberedFrames(out, 0, 40, kPicture);
     EXPECT_EQ(stranger.count(), 0u) << "a receiver without the passphrase got frames";
     stranger.stop();
-    test::GstReceiver rx(uri + " passphrase=lobby-screen-key" + kTail);
-    sendFrames(out, 40, 60);
+    test::GstReceiver rx(test::srtSource(uri, "passphrase=lobby-screen-key"));
+    test::sendNumberedFrames(out, 40, 60, kPicture);
     ASSERT_TRUE(rx.waitForFrames(10)) << rx.count() << " frames came";
-    expectInOrderAndClose(rx.frames());
+    test::expectNumberedInOrder(rx.frames(), kPicture);
     EXPECT_GE(test::frameNumberOf(rx.frames().front()), 40);
 }
 
 TEST(SrtStream, aReceiverThatQuitsAndComesBackGetsTheStreamAgain) {
     skipWithoutSrt();
     const int port = test::freeLoopbackPort(SOCK_DGRAM);
-    const std::string listen =
-        "srtsrc poll-timeout=100 uri=srt://127.0.0.1:" + std::to_string(port) + "?mode=listener" + kTail;
+    const std::string listen = test::srtSource("srt://127.0.0.1:" + std::to_string(port) + "?mode=listener");
     auto first = std::make_unique<test::GstReceiver>(listen);
     StreamOutputs out({srt("srt://127.0.0.1:" + std::to_string(port))}, {kPicture.width, kPicture.height, 25.0});
-    sendFrames(out, 0, 40);
+    test::sendNumberedFrames(out, 0, 40, kPicture);
     ASSERT_TRUE(first->waitForFrames(10));
     first.reset();  // the receiver quits
     // The stream notices (a write to a closed connection fails) and retries.
     int next = 40;
     for (; next < 40 + 25 * 20 && out.status().front().state != StreamState::Retrying; next += 5)
-        sendFrames(out, next, 5);
+        test::sendNumberedFrames(out, next, 5, kPicture);
     ASSERT_EQ(out.status().front().state, StreamState::Retrying) << "the lost receiver was not noticed";
     EXPECT_FALSE(out.status().front().lastError.empty());
     test::GstReceiver second(listen);
-    for (int i = 0; i < 100 && second.count() < 10; ++i, next += 5) sendFrames(out, next, 5);
+    for (int i = 0; i < 100 && second.count() < 10; ++i, next += 5) test::sendNumberedFrames(out, next, 5, kPicture);
     ASSERT_GE(second.count(), 10u) << "the stream did not come back";
-    expectInOrderAndClose(second.frames());
+    test::expectNumberedInOrder(second.frames(), kPicture);
     EXPECT_GT(test::frameNumberOf(second.frames().front()), 40);
     EXPECT_GE(out.status().front().reconnects, 1u);
     EXPECT_EQ(out.status().front().state, StreamState::Streaming);
@@ -141,16 +116,16 @@ TEST(SrtStream, aReceiverThatHangsMakesTheStreamDropCountedNotWait) {
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(500));  // its listener binds
     StreamOutputs out({srt("srt://127.0.0.1:" + std::to_string(port))}, {kPicture.width, kPicture.height, 25.0});
-    sendFrames(out, 0, 25);
+    test::sendNumberedFrames(out, 0, 25, kPicture);
     const StreamStatus before = out.status().front();
     kill(receiver, SIGSTOP);
     int sent = 25;
     bool noticed = false;
     for (; sent < 25 + 25 * 15 && !noticed; sent += 5) {
-        sendFrames(out, sent, 5);
+        test::sendNumberedFrames(out, sent, 5, kPicture);
         noticed = out.status().front().state == StreamState::Retrying;
     }
-    sendFrames(out, sent, 25);  // while it retries
+    test::sendNumberedFrames(out, sent, 25, kPicture);  // while it retries
     sent += 25;
     kill(receiver, SIGKILL);
     waitpid(receiver, nullptr, 0);

@@ -22,8 +22,9 @@ bool hasGstElement(const std::string& factory) {
 }
 
 std::string packageOfGstElement(const std::string& factory) {
-    static constexpr std::array<std::pair<const char*, const char*>, 12> kPackages{{
+    static constexpr std::array<std::pair<const char*, const char*>, 13> kPackages{{
         {"appsrc", "gstreamer1.0-plugins-base"},
+        {"appsink", "gstreamer1.0-plugins-base"},
         {"videoconvert", "gstreamer1.0-plugins-base"},
         {"videoscale", "gstreamer1.0-plugins-base"},
         {"x264enc", "gstreamer1.0-plugins-ugly"},

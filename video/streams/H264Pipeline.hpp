@@ -85,6 +85,9 @@ public:
     // (srtsink's packets-sent-dropped, ...), summed over its receivers
     // where it keeps one structure each; 0 where there is none.
     std::uint64_t sinkStat(const char* field) const;
+    // The tail's last element, for an owner that takes the encoded stream
+    // itself (an appsink feeding an RTSP server).
+    GstElement* tailElement() const { return sink_; }
 
     struct Counters {
         std::atomic<std::uint64_t> frames{0};

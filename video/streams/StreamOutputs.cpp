@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <map>
 
 namespace arcomp {
 
@@ -16,8 +17,11 @@ constexpr std::chrono::milliseconds kLongestBackoff{10000};
 constexpr std::chrono::milliseconds kSupervisorTick{50};
 
 std::vector<ElementSpec> srtTail(const StreamSpec& s) {
+    // The uri first: setting it puts srtsink's other settings back to their defaults.
     std::vector<std::pair<std::string, std::string>> sink{
         {"uri", "srt://" + s.host + ":" + std::to_string(s.port) + (s.listener ? "?mode=listener" : "")},
+        // Without a poll timeout a sink waiting on its socket cannot be stopped.
+        {"poll-timeout", "100"},
         {"latency", std::to_string(s.latencyMs)},
         // The supervisor reconnects, with backoff and counted; the sink's
         // own reconnecting would hold its thread in connect().
@@ -33,21 +37,36 @@ std::vector<ElementSpec> srtTail(const StreamSpec& s) {
     return {{"mpegtsmux", {{"alignment", "7"}}}, {"srtsink", std::move(sink)}};
 }
 
+// Access units go to the RTSP server's mount, taken one by one; a few in
+// hand at most, so that a mount that is slow to take them drops, never the
+// encoder waits.
+std::vector<ElementSpec> rtspTail() {
+    return {{"appsink", {{"sync", "false"}, {"max-buffers", "4"}, {"drop", "true"}}}};
+}
+
+std::vector<ElementSpec> tailOf(const StreamSpec& s) {
+    return s.protocol == StreamProtocol::Rtsp ? rtspTail() : srtTail(s);
+}
+
+std::string serverKey(const StreamSpec& s) { return s.host + ":" + std::to_string(s.port); }
+
 }  // namespace
 
 std::string missingStreamElements(const StreamSpec& spec) {
     if (const EncoderChoice c = chooseH264Encoder(spec.encoding.encoder); c.element.empty()) return c.warning;
-    if (spec.protocol != StreamProtocol::Srt) return "this station cannot serve RTSP yet";
-    for (const ElementSpec& e : srtTail(spec))
-        if (!hasGstElement(e.factory))
-            return "GStreamer element " + e.factory + " missing (install " + packageOfGstElement(e.factory) + ")";
+    std::vector<std::string> needed{"h264parse"};
+    for (const ElementSpec& e : tailOf(spec)) needed.push_back(e.factory);
+    if (spec.protocol == StreamProtocol::Rtsp) needed.insert(needed.end(), {"appsrc", "rtph264pay"});
+    for (const std::string& e : needed)
+        if (!hasGstElement(e)) return "GStreamer element " + e + " missing (install " + packageOfGstElement(e) + ")";
     return "";
 }
 
 struct StreamOutputs::Stream {
     StreamSpec spec;
     std::vector<ElementSpec> tail;
-    std::mutex lock;  // the frame only tries it
+    RtspMount* mount = nullptr;  // RTSP: where the access units go
+    std::mutex lock;             // the frame only tries it
     std::unique_ptr<H264Pipeline> pipeline;
     // Counted by the frame (framesIn, dropped) and by the supervisor; read by status().
     std::atomic<std::uint64_t> framesIn{0}, dropped{0}, reconnects{0};
@@ -66,12 +85,17 @@ struct StreamOutputs::Stream {
 };
 
 StreamOutputs::StreamOutputs(const std::vector<StreamSpec>& specs, RawVideo input) : input_(input) {
+    for (const StreamSpec& spec : specs)
+        if (const std::string missing = missingStreamElements(spec); !missing.empty())
+            throw VideoError(spec.name, spec.describe(), missing);
+    startRtspServers(specs);
     for (const StreamSpec& spec : specs) {
         auto s = std::make_unique<Stream>();
         s->spec = spec;
-        if (const std::string missing = missingStreamElements(spec); !missing.empty())
-            throw VideoError(spec.name, spec.describe(), missing);
-        s->tail = srtTail(spec);
+        s->tail = tailOf(spec);
+        if (spec.protocol == StreamProtocol::Rtsp)
+            for (const auto& server : rtspServers_)
+                if (server->host() == spec.host && server->port() == spec.port) s->mount = &server->mount(spec.path);
         try {
             s->pipeline = build(*s);
             s->warning = s->pipeline->warning();
@@ -89,9 +113,28 @@ StreamOutputs::StreamOutputs(const std::vector<StreamSpec>& specs, RawVideo inpu
 
 StreamOutputs::~StreamOutputs() { close(); }
 
+void StreamOutputs::startRtspServers(const std::vector<StreamSpec>& specs) {
+    std::map<std::string, std::vector<RtspMountSpec>> mounts;
+    for (const StreamSpec& spec : specs)
+        if (spec.protocol == StreamProtocol::Rtsp)
+            mounts[serverKey(spec)].push_back({spec.path, spec.user, spec.password});
+    for (const StreamSpec& spec : specs) {
+        auto it = mounts.find(serverKey(spec));
+        if (spec.protocol != StreamProtocol::Rtsp || it == mounts.end()) continue;
+        try {
+            rtspServers_.push_back(std::make_unique<RtspServer>(spec.host, spec.port, it->second));
+        } catch (const VideoError& e) {
+            throw VideoError(spec.name, spec.describe(), e.what());
+        }
+        mounts.erase(it);
+    }
+}
+
 std::unique_ptr<H264Pipeline> StreamOutputs::build(const Stream& s) const {
-    return std::make_unique<H264Pipeline>(s.spec.name, s.spec.encoding, input_, s.tail, WhenFull::Drop,
-                                          s.spec.queueFrames);
+    auto pipeline = std::make_unique<H264Pipeline>(s.spec.name, s.spec.encoding, input_, s.tail, WhenFull::Drop,
+                                                   s.spec.queueFrames);
+    if (s.mount != nullptr) s.mount->listenTo(pipeline->tailElement());
+    return pipeline;
 }
 
 void StreamOutputs::push(const std::uint8_t* rgba) {
@@ -177,6 +220,10 @@ std::vector<StreamStatus> StreamOutputs::status() const {
         st.reconnects = s->reconnects;
         st.bytes = s->bytesTotal;
         st.packetsDropped = s->packetsTotal;
+        if (s->mount != nullptr) {
+            st.clients = s->mount->clients();
+            st.packetsDropped += s->mount->dropped();
+        }
         std::lock_guard text(s->textLock);
         st.kbps = s->kbps;
         st.lastError = s->lastError;
@@ -196,9 +243,13 @@ void StreamOutputs::close() {
     if (supervisor_.joinable()) supervisor_.join();
     for (const auto& s : streams_) {
         std::lock_guard lock(s->lock);
-        // Three latencies: time for the receiver to ask for the last packets again.
-        if (s->pipeline) s->pipeline->close(1.0, std::min(1.0, 3.0 * s->spec.latencyMs / 1000.0));
+        // SRT: three latencies, time for the receiver to ask for the last packets again.
+        const double linger =
+            s->spec.protocol == StreamProtocol::Srt ? std::min(1.0, 3.0 * s->spec.latencyMs / 1000.0) : 0.0;
+        if (s->pipeline) s->pipeline->close(1.0, linger);
+        s->mount = nullptr;
     }
+    rtspServers_.clear();
 }
 
 }  // namespace arcomp
