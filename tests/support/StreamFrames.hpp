@@ -6,8 +6,8 @@
 //   test::sendNumberedFrames(streams, 0, 60, {320, 240});  // 25 a second, as a station sends them
 //   test::expectNumberedInOrder(receiver.frames(), {320, 240});
 
-#include "tests/support/NumberedFrames.hpp"
 #include "tests/support/VideoPsnr.hpp"
+#include "tools/bench/scenes/NumberedFrames.hpp"
 #include "video/streams/StreamOutputs.hpp"
 
 #include <gtest/gtest.h>

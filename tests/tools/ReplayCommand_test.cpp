@@ -11,9 +11,9 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "tests/support/BoxStation.hpp"
-#include "tests/support/NumberedFrames.hpp"
 #include "tests/support/Shell.hpp"
 #include "tests/support/VideoPsnr.hpp"
+#include "tools/bench/scenes/NumberedFrames.hpp"
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -97,7 +97,7 @@ TEST(ReplayCommand, videoOutputIsAFinishedPlayableFile) {
 // frame in it, in order, as the composited PNGs show them.
 TEST(ReplayCommand, mp4OutputIsH264OfEveryCompositedFrameInOrder) {
     TempDir dir;
-    const fs::path input = arcomp::test::writeNumberedVideo(dir.path() / "numbered.avi", 30, {320, 240});
+    const fs::path input = arcomp::writeNumberedVideo(dir.path() / "numbered.avi", 30, {320, 240});
     const auto cfg = dir.write("s.yaml", std::string(kScene) + "video:\n  path: " + input.string() + "\n");
     const fs::path movie = dir.path() / "movie.mp4";
     const auto r = replay(cfg.string() + " --out " + (dir.path() / "out").string() + " --video-out " + movie.string());
@@ -110,7 +110,7 @@ TEST(ReplayCommand, mp4OutputIsH264OfEveryCompositedFrameInOrder) {
     int frames = 0;
     double worst = 1e9;
     while (in.read(decoded)) {
-        ASSERT_EQ(arcomp::test::frameNumberOf(decoded), frames) << "frame " << frames << " out of order";
+        ASSERT_EQ(arcomp::frameNumberOf(decoded), frames) << "frame " << frames << " out of order";
         char name[32];
         std::snprintf(name, sizeof name, "frame-%06d.png", frames);
         const cv::Mat composited = cv::imread((dir.path() / "out" / name).string(), cv::IMREAD_COLOR);

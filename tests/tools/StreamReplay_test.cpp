@@ -7,10 +7,10 @@
 #include "tests/support/BoxStation.hpp"
 #include "tests/support/FreePort.hpp"
 #include "tests/support/GstReceiver.hpp"
-#include "tests/support/NumberedFrames.hpp"
 #include "tests/support/Shell.hpp"
 #include "tests/support/TempDir.hpp"
 #include "tests/support/VideoPsnr.hpp"
+#include "tools/bench/scenes/NumberedFrames.hpp"
 #include "video/streams/GstRuntime.hpp"
 
 #include <gtest/gtest.h>
@@ -43,7 +43,7 @@ std::size_t pngsWrittenIn(const fs::path& dir) {
 TEST(StreamReplay, aReceiverGetsTheCompositedFramesInOrder) {
     skipWithoutSrtElements();
     TempDir dir;
-    const fs::path input = arcomp::test::writeNumberedVideo(dir.path() / "numbered.avi", 100, {320, 240});
+    const fs::path input = arcomp::writeNumberedVideo(dir.path() / "numbered.avi", 100, {320, 240});
     const int port = arcomp::test::freeLoopbackPort(SOCK_DGRAM);
     arcomp::test::GstReceiver rx(arcomp::test::srtSource("srt://127.0.0.1:" + std::to_string(port) + "?mode=listener"));
     const auto r = arcomp::test::arcompCommand("replay " + streamingStation(dir, input, port).string() + " --out " +
@@ -55,7 +55,7 @@ TEST(StreamReplay, aReceiverGetsTheCompositedFramesInOrder) {
     ASSERT_TRUE(rx.waitForFrames(10)) << rx.count() << " frames came; " << r.out;
     int last = -1;
     for (const cv::Mat& f : rx.frames()) {
-        const int n = arcomp::test::frameNumberOf(f);
+        const int n = arcomp::frameNumberOf(f);
         ASSERT_GT(n, last) << "in order";
         char name[32];
         std::snprintf(name, sizeof name, "frame-%06d.png", n);
@@ -69,7 +69,7 @@ TEST(StreamReplay, aReceiverGetsTheCompositedFramesInOrder) {
 TEST(StreamReplay, withNoReceiverEveryFrameIsStillWrittenAndTheDropsAreSaid) {
     skipWithoutSrtElements();
     TempDir dir;
-    const fs::path input = arcomp::test::writeNumberedVideo(dir.path() / "numbered.avi", 60, {320, 240});
+    const fs::path input = arcomp::writeNumberedVideo(dir.path() / "numbered.avi", 60, {320, 240});
     const int nobody = arcomp::test::freeLoopbackPort(SOCK_DGRAM);
     const auto r = arcomp::test::arcompCommand("replay " + streamingStation(dir, input, nobody).string() + " --out " +
                                                (dir.path() / "out").string());

@@ -4,9 +4,9 @@
 // with no room drops and counts instead of waiting; a missing element or a
 // file that cannot be written is an error naming it.
 
-#include "tests/support/NumberedFrames.hpp"
 #include "tests/support/TempDir.hpp"
 #include "tests/support/VideoPsnr.hpp"
+#include "tools/bench/scenes/NumberedFrames.hpp"
 #include "video/pixels/VideoError.hpp"
 #include "video/streams/GstRuntime.hpp"
 #include "video/streams/H264Recording.hpp"
@@ -27,7 +27,7 @@ const cv::Size kSize{320, 240};
 void pushNumbered(H264Pipeline& p, int from, int count) {
     cv::Mat rgba;
     for (int i = from; i < from + count; ++i) {
-        cv::cvtColor(test::numberedFrame(i, kSize), rgba, cv::COLOR_BGR2RGBA);
+        cv::cvtColor(numberedFrame(i, kSize), rgba, cv::COLOR_BGR2RGBA);
         p.push(rgba.data);
     }
 }
@@ -42,9 +42,9 @@ Decoded decode(const std::filesystem::path& file) {
     cv::VideoCapture in(file.string(), cv::CAP_FFMPEG);
     cv::Mat f;
     while (in.read(f)) {
-        const int n = test::frameNumberOf(f);
+        const int n = frameNumberOf(f);
         d.numbers.push_back(n);
-        if (n >= 0) d.worstPsnr = std::min(d.worstPsnr, arcomp::test::videoPsnr(f, test::numberedFrame(n, kSize)));
+        if (n >= 0) d.worstPsnr = std::min(d.worstPsnr, arcomp::test::videoPsnr(f, numberedFrame(n, kSize)));
     }
     return d;
 }

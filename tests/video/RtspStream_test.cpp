@@ -8,8 +8,8 @@
 
 #include "tests/support/FreePort.hpp"
 #include "tests/support/GstReceiver.hpp"
-#include "tests/support/NumberedFrames.hpp"
 #include "tests/support/StreamFrames.hpp"
+#include "tools/bench/scenes/NumberedFrames.hpp"
 #include "video/pixels/VideoError.hpp"
 #include "video/streams/GstRuntime.hpp"
 #include "video/streams/StreamOutputs.hpp"
@@ -66,7 +66,7 @@ TEST(RtspStream, aClientPullsTheCompositeInOrder) {
             test::sendNumberedFrames(out, next, 5, kRtspPicture);
         ASSERT_GE(rx.count(), 25u);
         test::expectNumberedInOrder(rx.frames(), kRtspPicture);
-        EXPECT_GE(test::frameNumberOf(rx.frames().front()), 10);
+        EXPECT_GE(frameNumberOf(rx.frames().front()), 10);
         EXPECT_EQ(out.status().front().clients, 1u);
         EXPECT_EQ(out.status().front().state, StreamState::Streaming) << out.status().front().lastError;
     }
@@ -126,7 +126,7 @@ TEST(RtspStream, aClientThatQuitsAndAnotherThatComesGetTheStream) {
         test::GstReceiver first(rtspSource(port, "/lobby"));
         for (; next < 400 && first.count() < 10; next += 5) test::sendNumberedFrames(out, next, 5, kRtspPicture);
         ASSERT_GE(first.count(), 10u);
-        lastSeen = test::frameNumberOf(first.frames().back());
+        lastSeen = frameNumberOf(first.frames().back());
     }
     ASSERT_TRUE(eventually([&] { return out.status().front().clients == 0; }));
     test::sendNumberedFrames(out, next, 10, kRtspPicture);  // no one watching
@@ -135,7 +135,7 @@ TEST(RtspStream, aClientThatQuitsAndAnotherThatComesGetTheStream) {
     for (int i = 0; i < 80 && second.count() < 10; ++i, next += 5) test::sendNumberedFrames(out, next, 5, kRtspPicture);
     ASSERT_GE(second.count(), 10u) << "the second client got no stream";
     test::expectNumberedInOrder(second.frames(), kRtspPicture);
-    EXPECT_GT(test::frameNumberOf(second.frames().front()), lastSeen);
+    EXPECT_GT(frameNumberOf(second.frames().front()), lastSeen);
     EXPECT_EQ(out.status().front().state, StreamState::Streaming);
 }
 

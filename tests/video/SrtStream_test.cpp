@@ -6,8 +6,8 @@
 
 #include "tests/support/FreePort.hpp"
 #include "tests/support/GstReceiver.hpp"
-#include "tests/support/NumberedFrames.hpp"
 #include "tests/support/StreamFrames.hpp"
+#include "tools/bench/scenes/NumberedFrames.hpp"
 #include "video/pixels/VideoError.hpp"
 #include "video/streams/GstRuntime.hpp"
 #include "video/streams/StreamOutputs.hpp"
@@ -70,7 +70,7 @@ TEST(SrtStream, aListenerServesACallingReceiverAndNeedsItsPassphrase) {
     test::sendNumberedFrames(out, 40, 60, kPicture);
     ASSERT_TRUE(rx.waitForFrames(10)) << rx.count() << " frames came";
     test::expectNumberedInOrder(rx.frames(), kPicture);
-    EXPECT_GE(test::frameNumberOf(rx.frames().front()), 40);
+    EXPECT_GE(frameNumberOf(rx.frames().front()), 40);
 }
 
 TEST(SrtStream, aReceiverThatQuitsAndComesBackGetsTheStreamAgain) {
@@ -92,7 +92,7 @@ TEST(SrtStream, aReceiverThatQuitsAndComesBackGetsTheStreamAgain) {
     for (int i = 0; i < 100 && second.count() < 10; ++i, next += 5) test::sendNumberedFrames(out, next, 5, kPicture);
     ASSERT_GE(second.count(), 10u) << "the stream did not come back";
     test::expectNumberedInOrder(second.frames(), kPicture);
-    EXPECT_GT(test::frameNumberOf(second.frames().front()), 40);
+    EXPECT_GT(frameNumberOf(second.frames().front()), 40);
     EXPECT_GE(out.status().front().reconnects, 1u);
     EXPECT_EQ(out.status().front().state, StreamState::Streaming);
 }

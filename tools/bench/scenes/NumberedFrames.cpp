@@ -1,29 +1,19 @@
-#pragma once
-// Frames that carry their own number, for tests that must know which frame
-// came out of an encoder, a network and a decoder, and in what order: 12
-// bits as 16-pixel squares in the top-left corner, each bit twice (white
-// over black, then black over white) so that a square the encoder smeared
-// reads as no number rather than a wrong one. Behind them a picture that
-// changes each frame, as a composite does.
-//
-//   const cv::Mat f = test::numberedFrame(41, {320, 240});
-//   EXPECT_EQ(test::frameNumberOf(f), 41);
+#include "tools/bench/scenes/NumberedFrames.hpp"
 
-#include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
 #include <cmath>
-#include <filesystem>
 #include <stdexcept>
 #include <string>
 
-namespace arcomp::test {
+namespace arcomp {
 
-inline constexpr int kNumberBits = 12;
-inline constexpr int kNumberSquare = 16;
+namespace {
+constexpr int kNumberSquare = 16;
+}  // namespace
 
-inline cv::Mat numberedFrame(int index, cv::Size size) {
+cv::Mat numberedFrame(int index, cv::Size size) {
     cv::Mat frame(size, CV_8UC3);
     for (int y = 0; y < size.height; ++y)
         for (int x = 0; x < size.width; ++x)
@@ -46,9 +36,7 @@ inline cv::Mat numberedFrame(int index, cv::Size size) {
     return frame;
 }
 
-// The number in a BGR frame; -1 when a square is neither clearly white nor
-// clearly black against its twin.
-inline int frameNumberOf(const cv::Mat& bgr) {
+int frameNumberOf(const cv::Mat& bgr) {
     cv::Mat grey;
     cv::cvtColor(bgr, grey, cv::COLOR_BGR2GRAY);
     int number = 0;
@@ -61,13 +49,11 @@ inline int frameNumberOf(const cv::Mat& bgr) {
     return number;
 }
 
-// Frames 0 .. count-1 as an MJPEG file, a replay's input.
-inline std::filesystem::path writeNumberedVideo(const std::filesystem::path& file, int count, cv::Size size,
-                                                double fps = 25.0) {
+std::filesystem::path writeNumberedVideo(const std::filesystem::path& file, int count, cv::Size size, double fps) {
     cv::VideoWriter out(file.string(), cv::CAP_FFMPEG, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), fps, size);
     if (!out.isOpened()) throw std::runtime_error(file.string() + ": cannot write");
     for (int i = 0; i < count; ++i) out.write(numberedFrame(i, size));
     return file;
 }
 
-}  // namespace arcomp::test
+}  // namespace arcomp
