@@ -10,13 +10,13 @@ namespace {
 constexpr std::size_t kFixedGain = kShadingCount;  // θ's last entry
 // The gains start at 1, the table as measured, with a prior as wide as
 // they are: a few frames move them, a frame's noise does not.
-constexpr double kGainVariance = 1.0;
+constexpr double kTableGainVariance = 1.0;
 
 }  // namespace
 
 CostTableFit::CostTableFit(const CostModel& singleObject)
-    : singleObject_(singleObject), fit_(kShadingCount + 1, 1.0, kGainVariance, 1e12), x_(kShadingCount + 1) {
-    const std::vector<double> ones(kShadingCount + 1, 1.0), variance(kShadingCount + 1, kGainVariance);
+    : singleObject_(singleObject), fit_(kShadingCount + 1, 1.0, kTableGainVariance, 1e12), x_(kShadingCount + 1) {
+    const std::vector<double> ones(kShadingCount + 1, 1.0), variance(kShadingCount + 1, kTableGainVariance);
     fit_.reset(ones, variance);
 }
 

@@ -1,4 +1,5 @@
 #include "runtime/app/CalibrationOverlay.hpp"
+#include "runtime/app/OverlayStyle.hpp"
 
 #include <opencv2/imgproc.hpp>
 
@@ -13,14 +14,10 @@ namespace {
 const cv::Scalar kGrid{99, 99, 99, 110};
 const cv::Scalar kXAxis{180, 47, 39, 200};
 const cv::Scalar kZAxis{55, 110, 200, 200};
-const cv::Scalar kOutline{0, 0, 0, 200};
 const cv::Scalar kMeasured{90, 230, 90, 255};
 const cv::Scalar kKept{240, 200, 60, 255};
 const cv::Scalar kPlane{235, 70, 60, 255};
 
-// Nearer than this to the lens's plane a floor point projects too far out
-// to draw (and at or behind it, nowhere).
-constexpr double kNearMetres = 0.1;
 // cv::line's fractional bits: ends to 1/16 pixel, as project() gives them.
 constexpr int kShift = 4;
 
@@ -35,10 +32,10 @@ cv::Point fixedPoint(const glm::dvec2& pixel) {
 void floorLine(cv::Mat& image, const CalibratedCamera& camera, const glm::dvec3& a, const glm::dvec3& b,
                const cv::Scalar& colour) {
     const double za = camera.depthOf(a), zb = camera.depthOf(b);
-    if (za < kNearMetres && zb < kNearMetres) return;
+    if (za < kOverlayNearMetres && zb < kOverlayNearMetres) return;
     glm::dvec3 from = a, to = b;
-    if (za < kNearMetres) from = a + (b - a) * ((kNearMetres - za) / (zb - za));
-    if (zb < kNearMetres) to = b + (a - b) * ((kNearMetres - zb) / (za - zb));
+    if (za < kOverlayNearMetres) from = a + (b - a) * ((kOverlayNearMetres - za) / (zb - za));
+    if (zb < kOverlayNearMetres) to = b + (a - b) * ((kOverlayNearMetres - zb) / (za - zb));
     const glm::dvec2 p = camera.project(from), q = camera.project(to);
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(q.x) || !std::isfinite(q.y)) return;
     cv::line(image, fixedPoint(p), fixedPoint(q), colour, 1, cv::LINE_AA, kShift);
@@ -111,7 +108,7 @@ void CalibrationOverlay::draw(const CalibratedCamera& camera, glm::ivec2 size, s
                                   : p.depth == StandingPerson::Depth::Kept   ? kKept
                                                                              : kPlane;
         const cv::Point foot = fixedPoint(glm::dvec2(p.foot));
-        cv::circle(image_, foot, 7 << kShift, kOutline, 4, cv::LINE_AA, kShift);
+        cv::circle(image_, foot, 7 << kShift, kOverlayOutline, 4, cv::LINE_AA, kShift);
         cv::circle(image_, foot, 7 << kShift, colour, 2, cv::LINE_AA, kShift);
         cv::circle(image_, foot, 2 << kShift, colour, cv::FILLED, cv::LINE_AA, kShift);
         // The label to the right of the marker, or to its left near the
@@ -121,7 +118,7 @@ void CalibrationOverlay::draw(const CalibratedCamera& camera, glm::ivec2 size, s
         const cv::Size text = cv::getTextSize(label, cv::FONT_HERSHEY_SIMPLEX, 0.5, 3, &baseline);
         const int x = static_cast<int>(std::lround(p.foot.x)), y = static_cast<int>(std::lround(p.foot.y));
         const cv::Point at(x + 12 + text.width > image_.cols ? x - 12 - text.width : x + 12, y + 5);
-        cv::putText(image_, label, at, cv::FONT_HERSHEY_SIMPLEX, 0.5, kOutline, 3, cv::LINE_AA);
+        cv::putText(image_, label, at, cv::FONT_HERSHEY_SIMPLEX, 0.5, kOverlayOutline, 3, cv::LINE_AA);
         cv::putText(image_, label, at, cv::FONT_HERSHEY_SIMPLEX, 0.5, colour, 1, cv::LINE_AA);
     }
 }

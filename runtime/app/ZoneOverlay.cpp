@@ -1,4 +1,5 @@
 #include "runtime/app/ZoneOverlay.hpp"
+#include "runtime/app/OverlayStyle.hpp"
 
 #include <opencv2/imgproc.hpp>
 
@@ -11,9 +12,7 @@ namespace {
 // Premultiplied RGBA: empty zones amber, occupied ones green.
 const cv::Scalar kEmpty{230, 170, 40, 230};
 const cv::Scalar kOccupied{60, 220, 90, 255};
-const cv::Scalar kOutline{0, 0, 0, 200};
-constexpr double kNearMetres = 0.1;  // floor points nearer the lens's plane are not drawn
-constexpr int kPointsPerEdge = 16;   // a floor edge bends through a distorting lens
+constexpr int kPointsPerEdge = 16;  // a floor edge bends through a distorting lens
 
 // The zone's outline as points in its own units, closed.
 std::vector<glm::vec2> outline(const Zone& zone) {
@@ -57,7 +56,7 @@ void ZoneOverlay::draw(const cv::Mat* below, std::span<const Zone> zones, std::s
                 pixel = glm::dvec2(p) * glm::dvec2(size);
             } else {
                 const glm::dvec3 floor(p.x, 0.0, p.y);
-                if (atSize->depthOf(floor) < kNearMetres) {
+                if (atSize->depthOf(floor) < kOverlayNearMetres) {
                     if (!runs.back().empty()) runs.emplace_back();
                     continue;
                 }
@@ -65,7 +64,7 @@ void ZoneOverlay::draw(const cv::Mat* below, std::span<const Zone> zones, std::s
             }
             runs.back().emplace_back(static_cast<int>(std::lround(pixel.x)), static_cast<int>(std::lround(pixel.y)));
         }
-        cv::polylines(image_, runs, false, kOutline, 4, cv::LINE_AA);
+        cv::polylines(image_, runs, false, kOverlayOutline, 4, cv::LINE_AA);
         cv::polylines(image_, runs, false, colour, 2, cv::LINE_AA);
         // The label at the outline's topmost visible point.
         const cv::Point* top = nullptr;
@@ -76,7 +75,7 @@ void ZoneOverlay::draw(const cv::Mat* below, std::span<const Zone> zones, std::s
         const std::string label = zone.name + ": " + std::to_string(people);
         const cv::Point at(std::min(top->x, std::max(0, size.x - 8 * static_cast<int>(label.size()))),
                            std::max(top->y - 6, 14));
-        cv::putText(image_, label, at, cv::FONT_HERSHEY_SIMPLEX, 0.5, kOutline, 3, cv::LINE_AA);
+        cv::putText(image_, label, at, cv::FONT_HERSHEY_SIMPLEX, 0.5, kOverlayOutline, 3, cv::LINE_AA);
         cv::putText(image_, label, at, cv::FONT_HERSHEY_SIMPLEX, 0.5, colour, 1, cv::LINE_AA);
     }
 }

@@ -235,7 +235,8 @@ std::string StationMetrics::prometheusText() const {
                  "Frames a stream did not take: its encoder queue full, or no pipeline running.",
                  [](const StreamStatus& st) { return st.dropped; });
     streamFamily("arcomp_stream_packets_dropped_total", "counter",
-                 "Packets the protocol gave up as too late (SRT), as when a receiver stops reading.",
+                 "Packets SRT gave up as too late, and access units an RTSP client's queue had no room for: a receiver "
+                 "that stops reading.",
                  [](const StreamStatus& st) { return st.packetsDropped; });
     streamFamily("arcomp_stream_reconnects_total", "counter", "Pipelines built again after a failure.",
                  [](const StreamStatus& st) { return st.reconnects; });

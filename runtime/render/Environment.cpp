@@ -15,8 +15,6 @@ namespace arcomp {
 
 namespace {
 
-constexpr float kPi = std::numbers::pi_v<float>;
-
 float srgbToLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
 
 // A soft-edged round light: full inside `radius` (radians) of `centre`,
@@ -46,12 +44,13 @@ glm::vec3 neutralRadiance(const glm::vec3& d) {
 }  // namespace
 
 glm::vec2 equirectangularUv(const glm::vec3& d) {
-    return {std::atan2(d.z, d.x) / (2.0f * kPi) + 0.5f, 0.5f - std::asin(std::clamp(d.y, -1.0f, 1.0f)) / kPi};
+    return {std::atan2(d.z, d.x) / (2.0f * std::numbers::pi_v<float>)+0.5f,
+            0.5f - std::asin(std::clamp(d.y, -1.0f, 1.0f)) / std::numbers::pi_v<float>};
 }
 
 glm::vec3 equirectangularDirection(glm::vec2 uv) {
-    const float azimuth = (uv.x - 0.5f) * 2.0f * kPi;
-    const float elevation = (0.5f - uv.y) * kPi;
+    const float azimuth = (uv.x - 0.5f) * 2.0f * std::numbers::pi_v<float>;
+    const float elevation = (0.5f - uv.y) * std::numbers::pi_v<float>;
     return {std::cos(elevation) * std::cos(azimuth), std::sin(elevation), std::cos(elevation) * std::sin(azimuth)};
 }
 

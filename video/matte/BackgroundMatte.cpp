@@ -12,7 +12,7 @@ namespace arcomp {
 
 namespace {
 
-void check(bool ok, const std::string& what) {
+void checkBackground(bool ok, const std::string& what) {
     if (!ok) throw VideoError("background matte", "settings", what);
 }
 
@@ -21,11 +21,12 @@ cv::Mat ellipse(int px) { return px > 0 ? cv::getStructuringElement(cv::MORPH_EL
 }  // namespace
 
 BackgroundMatte::BackgroundMatte(const BackgroundSpec& spec) : spec_(spec) {
-    check(spec.scale >= 0.1 && spec.scale <= 1.0, "scale must lie in 0.1..1");
-    check(spec.temporal >= 0.0 && spec.temporal <= 0.95, "temporal must lie in 0..0.95");
-    check(spec.openPx >= 0 && spec.closePx >= 0 && spec.featherPx >= 0, "open, close and feather must be >= 0");
-    check(spec.history >= 1, "history must be >= 1");
-    check(spec.threshold > 0.0, "threshold must be > 0");
+    checkBackground(spec.scale >= 0.1 && spec.scale <= 1.0, "scale must lie in 0.1..1");
+    checkBackground(spec.temporal >= 0.0 && spec.temporal <= 0.95, "temporal must lie in 0..0.95");
+    checkBackground(spec.openPx >= 0 && spec.closePx >= 0 && spec.featherPx >= 0,
+                    "open, close and feather must be >= 0");
+    checkBackground(spec.history >= 1, "history must be >= 1");
+    checkBackground(spec.threshold > 0.0, "threshold must be > 0");
     switch (spec.method) {
     case BackgroundMethod::Consensus:
         throw VideoError("background matte", "settings",

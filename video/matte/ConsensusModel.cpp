@@ -14,7 +14,7 @@ namespace arcomp {
 
 namespace {
 
-void check(bool ok, const std::string& what) {
+void checkConsensus(bool ok, const std::string& what) {
     if (!ok) throw VideoError("consensus matte", "settings", what);
 }
 
@@ -46,18 +46,18 @@ bool looksLikeShadow(const std::uint8_t* pixel, const std::uint8_t* background, 
 }  // namespace
 
 ConsensusModel::ConsensusModel(const ConsensusSpec& spec) : spec_(spec) {
-    check(spec.samples >= 2 && spec.samples <= 64, "samples must lie in 2..64");
-    check(spec.matches >= 1 && spec.matches <= spec.samples, "matches must lie in 1..samples");
-    check(spec.colourRadius > 0.0 && spec.colourRadius <= 765.0, "colour_radius must lie in (0, 765]");
-    check(spec.shadowDarkest > 0.0 && spec.shadowDarkest < spec.shadowLightest && spec.shadowLightest <= 1.0,
-          "shadow brightness must satisfy 0 < darkest < lightest <= 1");
-    check(spec.shadowChroma >= 0.0 && spec.shadowChroma < 1.0, "shadow_chroma must lie in 0..1");
-    check(spec.updateOdds >= 1, "update_odds must be >= 1");
-    check(spec.absorbSeconds > 0.0, "absorb_s must be > 0");
-    check(spec.warmupSeconds >= 0.0, "warmup_s must be >= 0");
-    check(spec.fps > 0.0 && spec.fps <= 1000.0, "fps must lie in (0, 1000]");
-    check(spec.lightChangeFraction > 0.0 && spec.lightChangeFraction <= 1.0,
-          "light_change_fraction must lie in (0, 1]");
+    checkConsensus(spec.samples >= 2 && spec.samples <= 64, "samples must lie in 2..64");
+    checkConsensus(spec.matches >= 1 && spec.matches <= spec.samples, "matches must lie in 1..samples");
+    checkConsensus(spec.colourRadius > 0.0 && spec.colourRadius <= 765.0, "colour_radius must lie in (0, 765]");
+    checkConsensus(spec.shadowDarkest > 0.0 && spec.shadowDarkest < spec.shadowLightest && spec.shadowLightest <= 1.0,
+                   "shadow brightness must satisfy 0 < darkest < lightest <= 1");
+    checkConsensus(spec.shadowChroma >= 0.0 && spec.shadowChroma < 1.0, "shadow_chroma must lie in 0..1");
+    checkConsensus(spec.updateOdds >= 1, "update_odds must be >= 1");
+    checkConsensus(spec.absorbSeconds > 0.0, "absorb_s must be > 0");
+    checkConsensus(spec.warmupSeconds >= 0.0, "warmup_s must be >= 0");
+    checkConsensus(spec.fps > 0.0 && spec.fps <= 1000.0, "fps must lie in (0, 1000]");
+    checkConsensus(spec.lightChangeFraction > 0.0 && spec.lightChangeFraction <= 1.0,
+                   "light_change_fraction must lie in (0, 1]");
 }
 
 void ConsensusModel::setPlate(const cv::Mat& plate) {
