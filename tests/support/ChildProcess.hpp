@@ -10,12 +10,14 @@
 //   ChildResult p = runForked([&] { loadSceneFile(file); return 0; });   // no exec: cheap
 
 #include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
@@ -29,6 +31,7 @@ struct ChildLimits {
     // RLIMIT_FSIZE in bytes: writes beyond it fail with EFBIG, as on a full
     // disk (SIGXFSZ is ignored in the child so it sees the error).
     std::optional<rlim_t> fileSizeLimit;
+    std::chrono::seconds seconds{180};  // then it is taken for stuck (see runForked)
 };
 
 struct ChildResult {
@@ -45,9 +48,12 @@ struct ChildResult {
     }
 };
 
-// Runs `body` in a forked child (its return value is the exit code) with
-// stdout and stderr captured.
-inline ChildResult runForked(const std::function<int()>& body, ChildLimits limits = {}) {
+namespace detail {
+
+// One try: the child's result, or nothing when it did not finish within
+// `limit` (it is killed then).
+inline std::optional<ChildResult> forkOnce(const std::function<int()>& body, const ChildLimits& limits,
+                                           std::chrono::seconds limit) {
     std::fflush(nullptr);
     int fds[2];
     if (::pipe(fds) != 0) std::abort();
@@ -70,24 +76,56 @@ inline ChildResult runForked(const std::function<int()>& body, ChildLimits limit
     ::close(fds[1]);
     ChildResult r;
     std::array<char, 4096> buffer;
-    ssize_t n;
-    while ((n = ::read(fds[0], buffer.data(), buffer.size())) > 0)
-        r.output.append(buffer.data(), static_cast<std::size_t>(n));
+    const auto deadline = std::chrono::steady_clock::now() + limit;
+    bool finished = false;
+    while (!finished) {
+        const auto left =
+            std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+        if (left.count() <= 0) break;
+        pollfd readable{fds[0], POLLIN, 0};
+        if (::poll(&readable, 1, static_cast<int>(left.count())) <= 0) continue;
+        const ssize_t n = ::read(fds[0], buffer.data(), buffer.size());
+        if (n > 0)
+            r.output.append(buffer.data(), static_cast<std::size_t>(n));
+        else
+            finished = true;  // end of output: the child has exited or closed it
+    }
     ::close(fds[0]);
+    if (!finished) ::kill(pid, SIGKILL);
     int status = 0;
     ::waitpid(pid, &status, 0);
+    if (!finished) return std::nullopt;
     r.exited = WIFEXITED(status);
     r.code = r.exited ? WEXITSTATUS(status) : -1;
     r.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
     return r;
 }
 
+}  // namespace detail
+
+// Runs `body` in a forked child (its return value is the exit code) with
+// stdout and stderr captured. The child of a process with threads (OpenCV's
+// workers, a tracing library's) can inherit a lock another thread held at
+// the fork: GCC 12's AddressSanitizer does not hold its allocator's locks
+// across fork(), so such a child waits forever on its first allocation.
+// A child that has not finished after `limits.seconds` is killed and run
+// once more; a second time it counts as killed, its output ending with why.
+inline ChildResult runForked(const std::function<int()>& body, ChildLimits limits = {}) {
+    for (int attempt = 0; attempt < 2; ++attempt)
+        if (std::optional<ChildResult> r = detail::forkOnce(body, limits, limits.seconds)) return *r;
+    ChildResult killed;
+    killed.signal = SIGKILL;
+    killed.output = "(the child did not finish in " + std::to_string(limits.seconds.count()) + " s, twice)";
+    return killed;
+}
+
 inline ChildResult runChild(const std::vector<std::string>& argv, ChildLimits limits = {}) {
+    // Built before the fork: the child only calls execv.
+    std::vector<char*> args;
+    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
     return runForked(
-        [&argv] {
-            std::vector<char*> args;
-            for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-            args.push_back(nullptr);
+        [&args] {
             ::execv(args[0], args.data());
             return 127;
         },
